@@ -1,0 +1,20 @@
+#pragma once
+
+#include <QStringList>
+
+#include <cstdio>
+
+namespace rs::cli {
+
+// Exit statuses of the command-line contract.
+enum ExitStatus { Ok = 0, Failed = 1, UsageOrIo = 2 };
+
+struct Streams {
+    std::FILE* out = stdout;
+    std::FILE* err = stderr;
+};
+
+int runCheck(const QString& path, Streams streams);
+int runFormat(const QString& path, Streams streams);
+
+} // namespace rs::cli

@@ -1,0 +1,8 @@
+# Warnings are errors in our own code; third-party headers come in as system includes.
+function(rungsmith_warnings target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+        # GCC 12 reports -Wrestrict falsely inside std::string at -O2/-O3 (GCC bug 105329).
+        target_compile_options(${target} PRIVATE -Wno-restrict)
+    endif()
+endfunction()

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <compare>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace rs::lang {
+
+enum class AddressKind : std::uint8_t {
+    None,
+    Input,              // Iu.n
+    Output,             // Qu.n
+    InputOutput,        // IQu.n, illuminated push button
+    AnalogInput,        // IAu.n
+    Memory,             // Mu.n
+    GlobalMemory,       // GMu.n
+    SystemMemory,       // SMu.n
+    Register,           // Ru.n
+    RegisterBit,        // Ru.n.b
+    DoubleRegister,     // DRu.n
+    DoubleRegisterLow,  // DRu.n.Lo
+    DoubleRegisterHigh, // DRu.n.Hi
+    SystemRegister,     // SRu.n
+    AsiInput,           // ASiu.x (safe), ASiu.x.y, ASiu.xB.y
+    AsiOutput,          // ASqu.x.y, ASqu.xB.y
+    Sequence,           // Su.s, as in R(Su.s)
+};
+
+// One variable of one unit, as the language addresses it.
+struct Address {
+    AddressKind kind = AddressKind::None;
+    int unit = 0;
+    int index = 0;
+    int bit = -1;       // register bit, or AS-i slave bit 1..4; -1 when absent
+    bool asiB = false;  // AS-i B slave ("ASi0.3B.1")
+
+    bool valid() const { return kind != AddressKind::None; }
+    bool isBit() const;  // usable as a contact or a coil
+    bool isWord() const; // usable in comparisons and arithmetic
+
+    friend auto operator<=>(const Address&, const Address&) = default;
+};
+
+// A step header "Su.s_n".
+struct StepAddress {
+    int unit = 0;
+    int sequence = 0;
+    int step = 0;
+    friend bool operator==(const StepAddress&, const StepAddress&) = default;
+};
+
+// The word as written was shaped like an address but is not one.
+struct AddressError {
+    std::string message;
+};
+
+// Result of reading a word such as "q0.10", "DR0.4.Lo", "ASi1.3B.2" or "s0.1_22".
+struct AddressWord {
+    enum class Shape { NotAnAddress, Variable, Step, Malformed } shape = Shape::NotAnAddress;
+    Address address;
+    StepAddress step;
+    std::string error;
+};
+
+// Case-insensitive; leading zeros allowed.
+AddressWord readAddressWord(std::string_view word);
+
+// Canonical spelling: upper-case prefix ("Q0.10"), manual spellings for AS-i
+// and double-register halves ("ASi1.3B.2", "DR0.4.Lo").
+std::string toString(const Address& address);
+std::string toString(const StepAddress& step);
+
+// Prefix as the manuals write it, e.g. "GM" or "ASi".
+std::string_view addressPrefix(AddressKind kind);
+
+} // namespace rs::lang

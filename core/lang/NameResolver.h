@@ -1,0 +1,19 @@
+#pragma once
+
+#include "Ast.h"
+#include "Diagnostic.h"
+
+namespace rs::lang {
+
+// Checks every symbolic-name declaration (rules, duplicates, an address named
+// twice) where it is written, and resolves every name used in the code to its
+// address, rewriting it in its declared spelling. Global names (declared
+// before the first "! pgm_pluto") are visible in every unit; names declared
+// in a unit's code are visible there only.
+Diagnostics resolveNames(Document& document);
+
+// Instruction set of each station as the document declares it (type_pluto),
+// 2 where it says nothing.
+int instructionSetOf(const Document& document, int station);
+
+} // namespace rs::lang

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "Ast.h"
+#include "Diagnostic.h"
+
+#include <string_view>
+
+namespace rs::lang {
+
+struct ParseResult {
+    Document document;
+    Diagnostics diagnostics;
+};
+
+// Reads a whole program file. Every line with an error is reported (with the
+// line and column of the offending token) and left out of the document; the
+// lines around it are still read.
+ParseResult parse(std::string_view source);
+
+// Lower-case option words an I/O declaration may carry.
+bool isKnownIoOption(std::string_view option);
+
+// Canonical spelling of a unit type ("b42_asi" -> "B42_ASi"), empty if unknown.
+std::string canonicalUnitType(std::string_view type);
+
+} // namespace rs::lang

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "Ast.h"
+
+#include <string>
+
+namespace rs::lang {
+
+// Column (1-based) where trailing comments start, as in the manuals' examples.
+inline constexpr int kCommentColumn = 32;
+
+// The canonical text of a document: upper-case keywords and addresses, one
+// statement per line, comments kept and aligned. Printing a parsed canonical
+// text gives the same text back.
+std::string print(const Document& document);
+
+std::string printStatement(const Statement& statement);
+std::string printExpression(const Expr& expr);
+std::string printOperand(const Operand& operand);
+std::string printDeclaration(const Declaration& declaration);
+
+// Hundredths of a second in the language's notation: 510 -> "5s10".
+std::string formatTime(int hundredths);
+
+} // namespace rs::lang

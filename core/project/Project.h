@@ -1,0 +1,39 @@
+#pragma once
+
+#include "lang/Ast.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rs::project {
+
+// A whole project: the program text as a syntax tree (units, declarations,
+// code, comments) plus what the language has no words for. The file format
+// (docs/file-format.md) keeps the latter in structured comments.
+struct Project {
+    lang::Document program;
+    std::string description;
+    bool includeSource = false;
+    std::map<int, std::string> unitDescriptions;                // by station
+    std::map<lang::Address, std::string> variableDescriptions;  // by address
+
+    // The project name from "$name", empty when the file has none.
+    std::string name() const;
+
+    // Stations that have an id_pluto declaration or code, in ascending order.
+    std::vector<int> stations() const;
+
+    friend bool operator==(const Project&, const Project&) = default;
+};
+
+// One network of a step: statements shown together, with a comment. In a file
+// written by hand each statement is its own network; ";@network" lines group.
+struct Network {
+    std::string comment;
+    std::vector<const lang::Line*> lines; // statements, comments and blank lines in order
+};
+
+std::vector<Network> networksOf(const lang::Step& step);
+
+} // namespace rs::project

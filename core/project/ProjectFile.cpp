@@ -1,0 +1,242 @@
+#include "ProjectFile.h"
+
+#include "Annotation.h"
+#include "lang/NameResolver.h"
+#include "lang/Parser.h"
+#include "lang/Printer.h"
+
+#include <QFile>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <set>
+#include <tuple>
+
+namespace rs::project {
+
+namespace {
+
+using lang::CommentLine;
+using lang::Line;
+
+int parseStation(const std::string& text) {
+    if (text.empty() || text.size() > 2 || text.find_first_not_of("0123456789") != std::string::npos)
+        return -1;
+    return std::stoi(text);
+}
+
+bool parseFlag(const std::string& text, bool& out) {
+    if (text == "yes" || text == "true" || text == "1") {
+        out = true;
+        return true;
+    }
+    if (text == "no" || text == "false" || text == "0") {
+        out = false;
+        return true;
+    }
+    return false;
+}
+
+class AnnotationReader {
+public:
+    AnnotationReader(Project& project, lang::Diagnostics& diagnostics)
+        : m_project(project), m_diagnostics(diagnostics) {}
+
+    // Takes project, unit and variable records out of a list of lines.
+    void take(std::vector<Line>& lines) {
+        std::vector<Line> kept;
+        kept.reserve(lines.size());
+        for (auto& line : lines) {
+            auto* comment = std::get_if<CommentLine>(&line.body);
+            if (!comment || !consume(*comment, line.location))
+                kept.push_back(std::move(line));
+        }
+        lines = std::move(kept);
+    }
+
+    // Network records stay where they are; they are only checked.
+    void check(const std::vector<Line>& lines) {
+        for (const auto& line : lines)
+            if (auto* comment = std::get_if<CommentLine>(&line.body))
+                if (auto annotation = read(*comment, line.location);
+                    annotation && annotation->kind != "network")
+                    warn(line.location, "@" + annotation->kind +
+                                            " records belong before the code; kept as a comment");
+    }
+
+private:
+    std::optional<Annotation> read(const CommentLine& comment, lang::SourceLocation at) {
+        try {
+            return parseAnnotation(comment.text);
+        } catch (const AnnotationError& error) {
+            int column = at.column + (comment.indented ? lang::kCommentColumn - at.column : 0);
+            m_diagnostics.push_back(
+                {lang::Severity::Error, at.line, column + 1 + error.offset, error.message});
+            return std::nullopt;
+        }
+    }
+
+    void warn(lang::SourceLocation at, std::string message) {
+        m_diagnostics.push_back({lang::Severity::Warning, at.line, at.column, std::move(message)});
+    }
+    void error(lang::SourceLocation at, std::string message) {
+        m_diagnostics.push_back({lang::Severity::Error, at.line, at.column, std::move(message)});
+    }
+
+    bool consume(const CommentLine& comment, lang::SourceLocation at) {
+        auto annotation = read(comment, at);
+        if (!annotation)
+            return false;
+        const std::string& kind = annotation->kind;
+        if (kind == "project") {
+            m_project.description = annotation->value("description");
+            std::string flag = annotation->value("include_source");
+            if (!flag.empty() && !parseFlag(flag, m_project.includeSource))
+                error(at, "include_source must be yes or no, not '" + flag + "'");
+            return true;
+        }
+        if (kind == "unit") {
+            int station = annotation->arguments.empty() ? -1 : parseStation(annotation->arguments[0]);
+            if (station < 0 || station > 31) {
+                error(at, "@unit needs a station number 0-31, as in ;@unit 00 description=\"...\"");
+                return false;
+            }
+            m_project.unitDescriptions[station] = annotation->value("description");
+            return true;
+        }
+        if (kind == "var") {
+            lang::AddressWord word = annotation->arguments.empty()
+                                         ? lang::AddressWord{}
+                                         : lang::readAddressWord(annotation->arguments[0]);
+            if (word.shape != lang::AddressWord::Shape::Variable) {
+                error(at, "@var needs an address, as in ;@var I0.0 description=\"...\"");
+                return false;
+            }
+            m_project.variableDescriptions[word.address] = annotation->value("description");
+            return true;
+        }
+        if (kind != "network")
+            warn(at, "unknown record '@" + kind + "'; kept as a comment");
+        return false;
+    }
+
+    Project& m_project;
+    lang::Diagnostics& m_diagnostics;
+};
+
+Line commentLine(const Annotation& annotation) {
+    return {CommentLine{formatAnnotation(annotation), false}, std::nullopt, {}};
+}
+
+bool isIdOf(const Line& line, int station) {
+    if (auto* declaration = std::get_if<lang::Declaration>(&line.body))
+        if (auto* id = std::get_if<lang::IdDeclaration>(&declaration->body))
+            return id->station == station;
+    return false;
+}
+
+std::string stationText(int station) {
+    return (station < 10 ? "0" : "") + std::to_string(station);
+}
+
+// The records of one unit: its description, then its variables' descriptions.
+std::vector<Line> unitRecords(const Project& project, int station) {
+    std::vector<Line> lines;
+    if (auto it = project.unitDescriptions.find(station);
+        it != project.unitDescriptions.end() && !it->second.empty())
+        lines.push_back(commentLine({"unit", {stationText(station)}, {{"description", it->second}}}));
+    for (const auto& [address, description] : project.variableDescriptions)
+        if (address.unit == station && !description.empty())
+            lines.push_back(
+                commentLine({"var", {lang::toString(address)}, {{"description", description}}}));
+    return lines;
+}
+
+} // namespace
+
+ProjectReadResult readProject(std::string_view text) {
+    lang::ParseResult parsed = lang::parse(text);
+    ProjectReadResult result;
+    result.project.program = std::move(parsed.document);
+    result.diagnostics = std::move(parsed.diagnostics);
+    AnnotationReader records(result.project, result.diagnostics);
+    records.take(result.project.program.preamble);
+    for (auto& unit : result.project.program.units) {
+        records.take(unit.declarations);
+        for (const auto& step : unit.steps)
+            records.check(step.lines);
+    }
+    auto resolved = lang::resolveNames(result.project.program);
+    result.diagnostics.insert(result.diagnostics.end(), resolved.begin(), resolved.end());
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const lang::Diagnostic& a, const lang::Diagnostic& b) {
+                         return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+                     });
+    return result;
+}
+
+std::string writeProject(const Project& project) {
+    lang::Document document = project.program;
+    auto& preamble = document.preamble;
+
+    // Project record right after "$name" (or first).
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < preamble.size(); ++i)
+        if (std::holds_alternative<lang::Directive>(preamble[i].body))
+            at = i + 1;
+    if (!project.description.empty() || project.includeSource) {
+        Annotation record{"project", {}, {}};
+        if (!project.description.empty())
+            record.attributes.emplace_back("description", project.description);
+        if (project.includeSource)
+            record.attributes.emplace_back("include_source", "yes");
+        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at), commentLine(record));
+    }
+
+    // Unit records after the unit's id declaration, else first in its code.
+    std::set<int> stations;
+    for (const auto& [station, text] : project.unitDescriptions)
+        stations.insert(station);
+    for (const auto& [address, text] : project.variableDescriptions)
+        stations.insert(address.unit);
+    for (int station : stations) {
+        std::vector<Line> records = unitRecords(project, station);
+        if (records.empty())
+            continue;
+        auto id = std::find_if(preamble.begin(), preamble.end(),
+                               [&](const Line& line) { return isIdOf(line, station); });
+        if (id != preamble.end()) {
+            preamble.insert(id + 1, records.begin(), records.end());
+            continue;
+        }
+        auto unit = std::find_if(document.units.begin(), document.units.end(),
+                                 [&](const auto& u) { return u.station() == station; });
+        if (unit != document.units.end())
+            unit->declarations.insert(unit->declarations.begin(), records.begin(), records.end());
+        else
+            preamble.insert(preamble.end(), records.begin(), records.end());
+    }
+    return lang::print(document);
+}
+
+FileText readTextFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {{}, QStringLiteral("cannot read %1: %2").arg(path, file.errorString())};
+    QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError)
+        return {{}, QStringLiteral("cannot read %1: %2").arg(path, file.errorString())};
+    return {bytes.toStdString(), {}};
+}
+
+QString writeTextFile(const QString& path, std::string_view text) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    if (file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
+        !file.commit())
+        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    return {};
+}
+
+} // namespace rs::project

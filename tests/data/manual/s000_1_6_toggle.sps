@@ -1,0 +1,6 @@
+; Source: 000_f98263f7f3abf510.txt Part 2 section 1.6 (Toggle function)
+; Table: Toggle state T(Q0.1) (covered by the example).
+! id_pluto:04=000000000000
+! pgm_pluto:04
+S4.0_0
+T(Q4.2) = P(I4.1)
