@@ -29,8 +29,12 @@ constexpr std::array<PrefixEntry, 13> kPrefixes{{
     {"S", AddressKind::Sequence},
 }};
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+char upper(char c) {
+    return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+}
 
 // Reads a run of digits at pos; returns false when there is none or it is too long.
 bool readNumber(std::string_view word, size_t& pos, int& value, bool& tooLong) {

@@ -33,8 +33,8 @@ struct Address {
     AddressKind kind = AddressKind::None;
     int unit = 0;
     int index = 0;
-    int bit = -1;       // register bit, or AS-i slave bit 1..4; -1 when absent
-    bool asiB = false;  // AS-i B slave ("ASi0.3B.1")
+    int bit = -1;      // register bit, or AS-i slave bit 1..4; -1 when absent
+    bool asiB = false; // AS-i B slave ("ASi0.3B.1")
 
     bool valid() const { return kind != AddressKind::None; }
     bool isBit() const;  // usable as a contact or a coil

@@ -63,9 +63,9 @@ struct Expr {
     ExprKind kind = ExprKind::Contact;
     bool negated = false;
     std::vector<Expr> children;
-    Operand operand;              // Contact, Edge; left side of Compare
-    bool operandNegated = false;  // Edge of a negated operand
-    bool risingEdge = true;       // Edge: P (true) or N (false)
+    Operand operand;             // Contact, Edge; left side of Compare
+    bool operandNegated = false; // Edge of a negated operand
+    bool risingEdge = true;      // Edge: P (true) or N (false)
     TimerSpelling timer = TimerSpelling::TON;
     TimerPreset preset;
     CompareOp compare = CompareOp::Equal;
@@ -76,14 +76,14 @@ struct Expr {
 };
 
 enum class AssignOp : std::uint8_t {
-    Increment,   // (X++)
-    Decrement,   // (X--)
-    AddAssign,   // (X += v)
-    SubAssign,   // (X -= v)
-    MulAssign,   // (X *= v), instruction set 3
-    DivAssign,   // (X /= v), instruction set 3
-    Copy,        // (X = v)
-    Binary,      // (X = a op b)
+    Increment, // (X++)
+    Decrement, // (X--)
+    AddAssign, // (X += v)
+    SubAssign, // (X -= v)
+    MulAssign, // (X *= v), instruction set 3
+    DivAssign, // (X /= v), instruction set 3
+    Copy,      // (X = v)
+    Binary,    // (X = a op b)
 };
 
 enum class BinaryOp : std::uint8_t { Add, Sub, Mul, Div };
@@ -91,7 +91,7 @@ enum class BinaryOp : std::uint8_t { Add, Sub, Mul, Div };
 struct Assignment {
     Operand target;
     AssignOp op = AssignOp::Copy;
-    Value left;  // Copy, the compound forms, and Binary's first operand
+    Value left; // Copy, the compound forms, and Binary's first operand
     BinaryOp binary = BinaryOp::Add;
     Value right; // Binary's second operand
     friend bool operator==(const Assignment&, const Assignment&) = default;
@@ -109,10 +109,10 @@ enum class StatementKind : std::uint8_t {
 
 struct Statement {
     StatementKind kind = StatementKind::Coil;
-    Operand target;          // Coil, Set, Reset, Toggle, SequenceReset
+    Operand target; // Coil, Set, Reset, Toggle, SequenceReset
     bool relativeJump = false;
-    int jumpStep = 0;        // absolute step, or signed offset when relative
-    Assignment assignment;   // Assign
+    int jumpStep = 0;      // absolute step, or signed offset when relative
+    Assignment assignment; // Assign
     std::optional<Expr> condition;
     SourceLocation location;
     friend bool operator==(const Statement&, const Statement&) = default;
@@ -129,8 +129,8 @@ struct IdDeclaration { // ! id_pluto:00=000034AD4AE1
 
 struct TypeDeclaration { // ! type_pluto:00=B46,is3
     int station = 0;
-    std::string type;        // canonical spelling, e.g. "B42_ASi"
-    int instructionSet = 0;  // 2, 3, or 0 when not written
+    std::string type;       // canonical spelling, e.g. "B42_ASi"
+    int instructionSet = 0; // 2, 3, or 0 when not written
     friend bool operator==(const TypeDeclaration&, const TypeDeclaration&) = default;
 };
 
@@ -152,8 +152,8 @@ struct NameDeclaration { // ! I0.0=MuteSensor1
     friend bool operator==(const NameDeclaration&, const NameDeclaration&) = default;
 };
 
-using DeclarationBody =
-    std::variant<IdDeclaration, TypeDeclaration, ProgramDeclaration, IoDeclaration, NameDeclaration>;
+using DeclarationBody = std::variant<IdDeclaration, TypeDeclaration, ProgramDeclaration,
+                                     IoDeclaration, NameDeclaration>;
 
 struct Declaration {
     DeclarationBody body;
@@ -161,7 +161,7 @@ struct Declaration {
     friend bool operator==(const Declaration&, const Declaration&) = default;
 };
 
-struct Directive { // $name Example, manual
+struct Directive {       // $name Example, manual
     std::string keyword; // lower case
     std::string text;
     friend bool operator==(const Directive&, const Directive&) = default;

@@ -5,9 +5,8 @@
 namespace rs::lang {
 
 int errorCount(const Diagnostics& diagnostics) {
-    return static_cast<int>(std::count_if(diagnostics.begin(), diagnostics.end(), [](auto& d) {
-        return d.severity == Severity::Error;
-    }));
+    return static_cast<int>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                          [](auto& d) { return d.severity == Severity::Error; }));
 }
 
 std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diagnostic) {

@@ -6,15 +6,24 @@ namespace rs::lang {
 
 namespace {
 
-bool isContinuationByte(unsigned char c) { return (c & 0xC0) == 0x80; }
+bool isContinuationByte(unsigned char c) {
+    return (c & 0xC0) == 0x80;
+}
 
 // Decodes one UTF-8 sequence at `at`; returns its length, 0 when malformed.
 std::size_t decodeUtf8(std::string_view s, std::size_t at, char32_t& out) {
     auto c = static_cast<unsigned char>(s[at]);
-    std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    std::size_t length = c < 0x80           ? 1
+                         : (c >> 5) == 0x6  ? 2
+                         : (c >> 4) == 0xE  ? 3
+                         : (c >> 3) == 0x1E ? 4
+                                            : 0;
     if (length == 0 || at + length > s.size())
         return 0;
-    char32_t value = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
+    char32_t value = length == 1   ? c
+                     : length == 2 ? (c & 0x1F)
+                     : length == 3 ? (c & 0x0F)
+                                   : (c & 0x07);
     for (std::size_t i = 1; i < length; ++i) {
         auto cc = static_cast<unsigned char>(s[at + i]);
         if (!isContinuationByte(cc))
@@ -26,8 +35,8 @@ std::size_t decodeUtf8(std::string_view s, std::size_t at, char32_t& out) {
 }
 
 bool isAsciiWordChar(unsigned char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           c == '_' || c == '.';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '.';
 }
 
 bool isDigits(std::string_view s) {
@@ -143,7 +152,8 @@ Token Lexer::next() {
         break;
     }
     // En dash (U+2013) and minus sign (U+2212) as printed in the manuals' tables.
-    if (m_source.compare(m_pos, 3, "\xE2\x80\x93") == 0 || m_source.compare(m_pos, 3, "\xE2\x88\x92") == 0) {
+    if (m_source.compare(m_pos, 3, "\xE2\x80\x93") == 0 ||
+        m_source.compare(m_pos, 3, "\xE2\x88\x92") == 0) {
         advance();
         advance();
         advance();

@@ -218,6 +218,8 @@ int instructionSetOf(const Document& document, int station) {
     return set;
 }
 
-Diagnostics resolveNames(Document& document) { return Resolver(document).run(); }
+Diagnostics resolveNames(Document& document) {
+    return Resolver(document).run();
+}
 
 } // namespace rs::lang

@@ -14,7 +14,7 @@ constexpr std::array<std::string_view, 13> kUnitTypes{
     "A16", "A20", "B16", "B20", "S20", "B22", "D20", "O2", "B46", "S46", "D45", "ASi", "B42_ASi"};
 
 constexpr std::array<std::string_view, 12> kIoOptions{
-    "a_pulse", "b_pulse", "c_pulse", "static",  "non_inv",    "no_filt",
+    "a_pulse", "b_pulse",       "c_pulse", "static",  "non_inv",    "no_filt",
     "x_talk",  "no_test_pulse", "voltage", "current", "counter_up", "counter_updown"};
 
 // Thrown inside one line; the line is reported and skipped.
@@ -86,7 +86,9 @@ private:
             fail(std::string("expected ") + what + ", found " + describe(current()));
         return take();
     }
-    [[noreturn]] void fail(std::string message) const { throw LineError{current(), std::move(message)}; }
+    [[noreturn]] void fail(std::string message) const {
+        throw LineError{current(), std::move(message)};
+    }
     [[noreturn]] static void failAt(const Token& token, std::string message) {
         throw LineError{token, std::move(message)};
     }
@@ -253,13 +255,15 @@ private:
             id.station = parseStation();
             expect(TokenKind::Equal, "'=' and the 12-digit IDFIX number");
             if (!at(TokenKind::Word) && !at(TokenKind::Number))
-                fail("expected the 12-digit hexadecimal IDFIX number, found " + describe(current()));
+                fail("expected the 12-digit hexadecimal IDFIX number, found " +
+                     describe(current()));
             Token idfix = take();
             if (idfix.text.size() != 12 ||
                 idfix.text.find_first_not_of("0123456789abcdefABCDEF") != std::string_view::npos)
-                failAt(idfix, "the IDFIX number must be 12 hexadecimal digits (000000000000 when no "
-                              "identifier is connected), found '" +
-                                  std::string(idfix.text) + "'");
+                failAt(idfix,
+                       "the IDFIX number must be 12 hexadecimal digits (000000000000 when no "
+                       "identifier is connected), found '" +
+                           std::string(idfix.text) + "'");
             id.idfix = toUpper(idfix.text);
             declaration.body = std::move(id);
             requireDeclarationSection(bang);
@@ -273,9 +277,10 @@ private:
             take();
             type.type = canonicalUnitType(typeWord.text);
             if (type.type.empty())
-                failAt(typeWord, "unknown unit type '" + std::string(typeWord.text) +
-                                     "'; expected one of A16 A20 B16 B20 S20 B22 D20 O2 B46 S46 D45 "
-                                     "ASi B42_ASi");
+                failAt(typeWord,
+                       "unknown unit type '" + std::string(typeWord.text) +
+                           "'; expected one of A16 A20 B16 B20 S20 B22 D20 O2 B46 S46 D45 "
+                           "ASi B42_ASi");
             if (at(TokenKind::Comma)) {
                 take();
                 Token set = current();
@@ -303,9 +308,10 @@ private:
             if (address.shape == AddressWord::Shape::Malformed)
                 failAt(word, address.error);
             if (address.shape != AddressWord::Shape::Variable)
-                failAt(word, "expected an address (such as I0.5) or id_pluto, type_pluto, pgm_pluto "
-                             "after '!', found '" +
-                                 std::string(word.text) + "'");
+                failAt(word,
+                       "expected an address (such as I0.5) or id_pluto, type_pluto, pgm_pluto "
+                       "after '!', found '" +
+                           std::string(word.text) + "'");
             Operand operand{{}, address.address, loc(word)};
             if (at(TokenKind::Equal)) {
                 take();
@@ -313,8 +319,7 @@ private:
                 if (!at(TokenKind::Word) && !at(TokenKind::Number) && !at(TokenKind::Time))
                     fail("expected a symbolic name after '=', found " + describe(current()));
                 take();
-                declaration.body =
-                    NameDeclaration{operand, std::string(name.text), loc(name)};
+                declaration.body = NameDeclaration{operand, std::string(name.text), loc(name)};
                 requireDeclarationSection(bang);
             } else if (at(TokenKind::Comma)) {
                 IoDeclaration io{operand, {}};
@@ -408,7 +413,8 @@ private:
             } else if (keyword == "P" || keyword == "N" || keyword == "TON" || keyword == "TPS" ||
                        keyword == "TOF" || keyword == "IT") {
                 failAt(first, "a statement cannot start with " + keyword +
-                                  "(...); write the output first, as in Q0.1 = " + keyword + "(...)");
+                                  "(...); write the output first, as in Q0.1 = " + keyword +
+                                  "(...)");
             } else {
                 failAt(first, "unknown instruction '" + std::string(first.text) +
                                   "('; a statement starts with an output, S(, R(, T(, J( or a "
@@ -465,7 +471,8 @@ private:
                 assignment.op = AssignOp::Decrement;
                 return assignment;
             }
-            expect(TokenKind::Equal, (std::string("'=' after '") + std::string(op.text) + "'").c_str());
+            expect(TokenKind::Equal,
+                   (std::string("'=' after '") + std::string(op.text) + "'").c_str());
             assignment.op = op.kind == TokenKind::Plus    ? AssignOp::AddAssign
                             : op.kind == TokenKind::Minus ? AssignOp::SubAssign
                             : op.kind == TokenKind::Star  ? AssignOp::MulAssign
@@ -486,7 +493,8 @@ private:
                                     : op.kind == TokenKind::Star  ? BinaryOp::Mul
                                                                   : BinaryOp::Div;
                 assignment.right = parseValue(
-                    (std::string("a register or a number after '") + std::string(op.text) + "'").c_str());
+                    (std::string("a register or a number after '") + std::string(op.text) + "'")
+                        .c_str());
             }
             return assignment;
         default:
@@ -645,9 +653,8 @@ private:
                            std::to_string(operand.address.unit) + "." +
                            std::to_string(operand.address.index) + " in a scenario");
         if (!operand.address.isBit())
-            failAt(at, toString(operand.address) +
-                           " holds a number; compare it, as in (" + toString(operand.address) +
-                           ">0)");
+            failAt(at, toString(operand.address) + " holds a number; compare it, as in (" +
+                           toString(operand.address) + ">0)");
     }
 
     Expr parseComparison() {
@@ -665,7 +672,8 @@ private:
             compare.compare = CompareOp::Equal;
         } else if (at(TokenKind::Equal)) {
             take();
-            compare.compare = op.kind == TokenKind::Greater ? CompareOp::GreaterEqual : CompareOp::LessEqual;
+            compare.compare =
+                op.kind == TokenKind::Greater ? CompareOp::GreaterEqual : CompareOp::LessEqual;
         } else {
             compare.compare = op.kind == TokenKind::Greater ? CompareOp::Greater : CompareOp::Less;
         }
@@ -735,7 +743,8 @@ private:
                 failAt(token, keyword == "T"
                                   ? "T(" + std::string(token.text) +
                                         ") toggles an output; it can only start a statement: "
-                                        "T(" + std::string(token.text) + ") = condition"
+                                        "T(" +
+                                        std::string(token.text) + ") = condition"
                                   : "a timer needs a time such as 5s10 or a register, not " +
                                         toString(operand.address));
             if (!operand.isName() && !operand.address.isWord())
@@ -800,6 +809,8 @@ std::string canonicalUnitType(std::string_view type) {
     return {};
 }
 
-ParseResult parse(std::string_view source) { return Parser(source).run(); }
+ParseResult parse(std::string_view source) {
+    return Parser(source).run();
+}
 
 } // namespace rs::lang

@@ -57,8 +57,8 @@ constexpr std::array<SystemEntry, 35> kSystemNames{{
     {"SR_I3_VOLT", AddressKind::SystemRegister, 46},
 }};
 
-constexpr std::array<std::string_view, 10> kInstructionWords{"P",   "N",   "S",   "R", "T",
-                                                             "J",   "TON", "TPS", "TOF", "IT"};
+constexpr std::array<std::string_view, 10> kInstructionWords{"P", "N",   "S",   "R",   "T",
+                                                             "J", "TON", "TPS", "TOF", "IT"};
 
 } // namespace
 

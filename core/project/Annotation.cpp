@@ -4,7 +4,9 @@ namespace rs::project {
 
 namespace {
 
-bool isBareChar(char c) { return c != ' ' && c != '\t' && c != '"' && c != '='; }
+bool isBareChar(char c) {
+    return c != ' ' && c != '\t' && c != '"' && c != '=';
+}
 
 } // namespace
 

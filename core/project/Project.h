@@ -15,8 +15,8 @@ struct Project {
     lang::Document program;
     std::string description;
     bool includeSource = false;
-    std::map<int, std::string> unitDescriptions;                // by station
-    std::map<lang::Address, std::string> variableDescriptions;  // by address
+    std::map<int, std::string> unitDescriptions;               // by station
+    std::map<lang::Address, std::string> variableDescriptions; // by address
 
     // The project name from "$name", empty when the file has none.
     std::string name() const;

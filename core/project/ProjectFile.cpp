@@ -20,7 +20,8 @@ using lang::CommentLine;
 using lang::Line;
 
 int parseStation(const std::string& text) {
-    if (text.empty() || text.size() > 2 || text.find_first_not_of("0123456789") != std::string::npos)
+    if (text.empty() || text.size() > 2 ||
+        text.find_first_not_of("0123456789") != std::string::npos)
         return -1;
     return std::stoi(text);
 }
@@ -96,7 +97,8 @@ private:
             return true;
         }
         if (kind == "unit") {
-            int station = annotation->arguments.empty() ? -1 : parseStation(annotation->arguments[0]);
+            int station =
+                annotation->arguments.empty() ? -1 : parseStation(annotation->arguments[0]);
             if (station < 0 || station > 31) {
                 error(at, "@unit needs a station number 0-31, as in ;@unit 00 description=\"...\"");
                 return false;
@@ -144,7 +146,8 @@ std::vector<Line> unitRecords(const Project& project, int station) {
     std::vector<Line> lines;
     if (auto it = project.unitDescriptions.find(station);
         it != project.unitDescriptions.end() && !it->second.empty())
-        lines.push_back(commentLine({"unit", {stationText(station)}, {{"description", it->second}}}));
+        lines.push_back(
+            commentLine({"unit", {stationText(station)}, {{"description", it->second}}}));
     for (const auto& [address, description] : project.variableDescriptions)
         if (address.unit == station && !description.empty())
             lines.push_back(
@@ -233,7 +236,8 @@ QString writeTextFile(const QString& path, std::string_view text) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    if (file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
+    if (file.write(text.data(), static_cast<qint64>(text.size())) !=
+            static_cast<qint64>(text.size()) ||
         !file.commit())
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
     return {};
