@@ -201,6 +201,10 @@ private:
             failAt(dollar, "a '$' directive belongs at the top of the file, before '! pgm_pluto'");
         Token keyword = expect(TokenKind::Word, "a directive name such as 'name' after '$'");
         Directive directive{toLower(keyword.text), std::string(takeFreeText())};
+        if (directive.keyword != "name")
+            report(keyword,
+                   "unknown directive '$" + std::string(keyword.text) + "'; kept as written",
+                   Severity::Warning);
         auto comment = finishLine("the directive");
         add({std::move(directive), std::move(comment), loc(dollar)});
     }

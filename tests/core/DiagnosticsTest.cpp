@@ -90,6 +90,17 @@ TEST(Diagnostics, DeclarationErrors) {
         std::vector<std::string>{"3:1: declarations come before the first step of a unit's code"});
 }
 
+TEST(Diagnostics, UnknownDirectivesAreWarningsAndKept) {
+    ParseResult result = parse("$name x\n$author Someone\n");
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(result.diagnostics[0].message, "unknown directive '$author'; kept as written");
+    EXPECT_EQ(print(result.document), "$name x\n$author Someone\n");
+    EXPECT_EQ(diagnose("! pgm_pluto:00\n$name late\n"),
+              std::vector<std::string>{
+                  "2:1: a '$' directive belongs at the top of the file, before '! pgm_pluto'"});
+}
+
 TEST(Diagnostics, StructureErrors) {
     EXPECT_EQ(
         diagnose("Q0.1 = I0.0\n"),
