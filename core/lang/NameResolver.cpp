@@ -2,11 +2,26 @@
 
 #include "SymbolicName.h"
 
+#include <array>
 #include <map>
 
 namespace rs::lang {
 
 namespace {
+
+// The last type_pluto declaration of a station decides.
+void collectInstructionSets(const Document& document, std::array<int, 32>& sets) {
+    auto scan = [&](const std::vector<Line>& lines) {
+        for (const auto& line : lines)
+            if (auto* declaration = std::get_if<Declaration>(&line.body))
+                if (auto* type = std::get_if<TypeDeclaration>(&declaration->body))
+                    if (type->station >= 0 && type->station < 32 && type->instructionSet)
+                        sets[type->station] = type->instructionSet;
+    };
+    scan(document.preamble);
+    for (const auto& unit : document.units)
+        scan(unit.declarations);
+}
 
 struct Symbol {
     std::string spelling;
@@ -21,6 +36,8 @@ public:
     explicit Resolver(Document& document) : m_document(document) {}
 
     Diagnostics run() {
+        m_instructionSets.fill(2);
+        collectInstructionSets(m_document, m_instructionSets);
         declare(m_document.preamble, m_global, -1);
         for (auto& unit : m_document.units) {
             Scope local;
@@ -56,7 +73,8 @@ private:
                 error(nameDeclaration->variable.location, "a sequence cannot be given a name");
                 continue;
             }
-            int set = instructionSetOf(m_document, station >= 0 ? station : address.unit);
+            const int owner = station >= 0 ? station : address.unit;
+            int set = owner >= 0 && owner < 32 ? m_instructionSets[owner] : 2;
             if (auto problem = checkSymbolicName(name, set)) {
                 error(at, *problem);
                 continue;
@@ -197,6 +215,7 @@ private:
     }
 
     Document& m_document;
+    std::array<int, 32> m_instructionSets{};
     Scope m_global;
     Diagnostics m_diagnostics;
 };
@@ -204,18 +223,10 @@ private:
 } // namespace
 
 int instructionSetOf(const Document& document, int station) {
-    int set = 2;
-    auto scan = [&](const std::vector<Line>& lines) {
-        for (const auto& line : lines)
-            if (auto* declaration = std::get_if<Declaration>(&line.body))
-                if (auto* type = std::get_if<TypeDeclaration>(&declaration->body))
-                    if (type->station == station && type->instructionSet)
-                        set = type->instructionSet;
-    };
-    scan(document.preamble);
-    for (const auto& unit : document.units)
-        scan(unit.declarations);
-    return set;
+    std::array<int, 32> sets{};
+    sets.fill(2);
+    collectInstructionSets(document, sets);
+    return station >= 0 && station < 32 ? sets[station] : 2;
 }
 
 Diagnostics resolveNames(Document& document) {

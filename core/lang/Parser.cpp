@@ -588,7 +588,7 @@ private:
     }
 
     // a * (b * c) is one series circuit a * b * c: same power flow, one canonical tree.
-    static void appendFlattened(Expr& parent, Expr child) {
+    static void appendFlattened(Expr& parent, Expr&& child) {
         if (child.kind == parent.kind) {
             for (auto& grandChild : child.children)
                 parent.children.push_back(std::move(grandChild));
