@@ -1,0 +1,94 @@
+#include <QFile>
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include "QtPrinting.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+struct GuiRun {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+// Runs the IDE binary without a display, with settings in a scratch folder.
+GuiRun gui(const QStringList& arguments) {
+    static QTemporaryDir home;
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), home.path());
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RUNGSMITH_GUI), arguments);
+    EXPECT_TRUE(process.waitForFinished(60000));
+    return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
+            QString::fromUtf8(process.readAllStandardError())};
+}
+
+const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+
+class GuiCommandLine : public ::testing::Test {
+protected:
+    QString out(const QString& name) const { return directory.filePath(name); }
+    QTemporaryDir directory;
+};
+
+TEST_F(GuiCommandLine, ScreenshotOfTheExampleIsAWindowSizedPicture) {
+    const GuiRun run = gui({QStringLiteral("--screenshot"), out("shot.png")});
+    EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+    const QImage picture(out("shot.png"));
+    ASSERT_FALSE(picture.isNull());
+    EXPECT_EQ(picture.size(), QSize(1280, 800));
+}
+
+TEST_F(GuiCommandLine, ScreenshotOfAFileOnItsTextPage) {
+    const GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("text.png"),
+                            QStringLiteral("--page"), QStringLiteral("text:0")});
+    EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+    EXPECT_FALSE(QImage(out("text.png")).isNull());
+}
+
+TEST_F(GuiCommandLine, AnUnreadableFileIsExitTwoAndNamed) {
+    const QString missing = out("missing.sps");
+    const GuiRun run = gui({missing, QStringLiteral("--screenshot"), out("shot.png")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(missing)) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(out("shot.png")));
+}
+
+TEST_F(GuiCommandLine, AnUnwritablePictureIsExitTwo) {
+    const QString unwritable = out("no-such-folder/shot.png");
+    const GuiRun run = gui({QStringLiteral("--screenshot"), unwritable});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(unwritable)) << run.err.toStdString();
+}
+
+TEST_F(GuiCommandLine, UnknownPagesAndUnitsAreExitTwo) {
+    GuiRun run = gui({QStringLiteral("--screenshot"), out("a.png"), QStringLiteral("--page"),
+                      QStringLiteral("ladder-ish:0")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("ladder-ish:0"))) << run.err.toStdString();
+
+    run = gui({kMuting, QStringLiteral("--screenshot"), out("b.png"), QStringLiteral("--page"),
+               QStringLiteral("text:7")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("no unit 7"))) << run.err.toStdString();
+}
+
+TEST_F(GuiCommandLine, UnknownOptionsAreExitTwo) {
+    const GuiRun run = gui({QStringLiteral("--no-such-option")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("no-such-option"))) << run.err.toStdString();
+}
+
+TEST_F(GuiCommandLine, VersionIsPrinted) {
+    const GuiRun run = gui({QStringLiteral("--version")});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_TRUE(run.out.contains(QStringLiteral(RUNGSMITH_VERSION))) << run.out.toStdString();
+}
+
+} // namespace
