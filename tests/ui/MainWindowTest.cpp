@@ -6,10 +6,12 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
@@ -36,7 +38,8 @@ const QByteArray kCanonicalProject = "$name Press\n"
 class MainWindowTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        rs::ui::RecentFiles().clear();
+        // Each test starts from no recent files and no saved layout.
+        QSettings().clear();
         ASSERT_TRUE(directory.isValid());
     }
 
@@ -198,6 +201,20 @@ TEST_F(MainWindowTest, SaveThenReopenGivesTheSameText) {
     EXPECT_EQ(reopened.editor()->textBytes(), saved);
 }
 
+TEST_F(MainWindowTest, AFailedSaveIsReportedAndTheTextStaysModified) {
+    QDir(directory.path()).mkdir(QStringLiteral("gone"));
+    const QString path = writeFile(QStringLiteral("gone/press.sps"), kCanonicalProject);
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    editor()->insert(QStringLiteral("; my change\n"));
+    ASSERT_TRUE(QDir(directory.filePath(QStringLiteral("gone"))).removeRecursively());
+
+    MessageBoxAnswerer answerer(QMessageBox::Ok);
+    action("saveAction")->trigger();
+    ASSERT_TRUE(answerer.answered());
+    EXPECT_TRUE(answerer.text().contains(path));
+    EXPECT_TRUE(window.isWindowModified());
+}
+
 TEST_F(MainWindowTest, OpeningAMissingFileReportsItAndKeepsTheText) {
     const QByteArray before = editor()->textBytes();
     const QString title = window.windowTitle();
@@ -260,6 +277,16 @@ TEST_F(MainWindowTest, OpenedFilesBecomeRecentFiles) {
     ASSERT_GE(recent->actions().size(), 2);
     recent->actions().at(1)->trigger();
     EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("first.sps")));
+}
+
+TEST_F(MainWindowTest, WindowGeometryOutlivesTheWindow) {
+    showWindow();
+    window.resize(900, 600);
+    ASSERT_TRUE(window.close());
+
+    MainWindow next;
+    next.restoreLayout();
+    EXPECT_EQ(next.size(), QSize(900, 600));
 }
 
 TEST_F(MainWindowTest, ShowUnitFindsTheUnitsCode) {

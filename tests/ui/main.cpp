@@ -1,7 +1,8 @@
 #include "Translations.h"
 
 #include <QApplication>
-#include <QStandardPaths>
+#include <QSettings>
+#include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
@@ -9,10 +10,12 @@ int main(int argc, char** argv) {
     // gtest_discover_tests runs this binary at build time, where the test's
     // ENVIRONMENT property does not apply; no display is needed either way.
     qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Recent files and window layout go to a scratch settings folder, not the user's.
-    QStandardPaths::setTestModeEnabled(true);
     ::testing::InitGoogleTest(&argc, argv);
     QApplication application(argc, argv);
+    // Recent files and window layout go to a scratch folder of this process: not
+    // the user's, and not shared with tests that ctest runs at the same time.
+    const QTemporaryDir settings;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings.path());
     QApplication::setOrganizationName(QStringLiteral("Rungsmith"));
     QApplication::setApplicationName(QStringLiteral("Rungsmith"));
     rs::ui::installTranslations(application, QLocale(QLocale::English, QLocale::UnitedStates));
