@@ -7,7 +7,6 @@
 #include <Qsci/qsciglobal.h>
 
 #include <QAction>
-#include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
