@@ -71,11 +71,11 @@ bool Address::isBit() const {
     case AddressKind::Input:
     case AddressKind::Output:
     case AddressKind::InputOutput:
+    case AddressKind::AnalogInput:
     case AddressKind::Memory:
     case AddressKind::GlobalMemory:
     case AddressKind::SystemMemory:
     case AddressKind::RegisterBit:
-        return true;
     case AddressKind::AsiInput:
     case AddressKind::AsiOutput:
         return true;

@@ -37,6 +37,7 @@ struct Address {
     bool asiB = false; // AS-i B slave ("ASi0.3B.1")
 
     bool valid() const { return kind != AddressKind::None; }
+    // IA inputs are both: an ordinary failsafe input, or an analogue or counter value.
     bool isBit() const;  // usable as a contact or a coil
     bool isWord() const; // usable in comparisons and arithmetic
 

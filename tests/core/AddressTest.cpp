@@ -48,6 +48,9 @@ TEST(Address, KindsTellBitsFromWords) {
     EXPECT_TRUE(readAddressWord("R0.1").address.isWord());
     EXPECT_TRUE(readAddressWord("DR0.2.Hi").address.isWord());
     EXPECT_FALSE(readAddressWord("GM0.1").address.isWord());
+    // An IA terminal is an ordinary input or an analogue/counter value.
+    EXPECT_TRUE(readAddressWord("IA0.1").address.isBit());
+    EXPECT_TRUE(readAddressWord("IA0.1").address.isWord());
 }
 
 TEST(Address, NamesAreNotAddresses) {
