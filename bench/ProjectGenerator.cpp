@@ -346,8 +346,9 @@ private:
             line("! " + address("I", unit.station, terminal) + options,
                  std::string(input.description) + cell);
         }
+        // Only the A20 family can switch off the test pulses of Q2/Q3.
         for (int terminal = 2; terminal < 4; ++terminal)
-            if (m_random.percent(30))
+            if (!unit.doubleFamily && m_random.percent(30))
                 line("! " + address("Q", unit.station, terminal) + ",no_test_pulse",
                      "Test pulses disturb the valve");
         for (int i = 0; i < 8; ++i) {

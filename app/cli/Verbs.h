@@ -1,6 +1,8 @@
 #pragma once
 
-#include <QStringList>
+#include "compiler/ProgramCheck.h"
+
+#include <QString>
 
 #include <cstdio>
 
@@ -14,7 +16,9 @@ struct Streams {
     std::FILE* err = stderr;
 };
 
-int runCheck(const QString& path, Streams streams);
+int runCheck(const QString& path, const compiler::CheckOptions& options, Streams streams);
+int runCompile(const QString& path, const QString& output, const compiler::CheckOptions& options,
+               Streams streams);
 int runFormat(const QString& path, Streams streams);
 
 } // namespace rs::cli

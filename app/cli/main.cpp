@@ -8,8 +8,9 @@
 namespace {
 
 constexpr const char* kVerbs = R"(Verbs:
-  check FILE.sps     parse and check the whole project
-  format FILE.sps    print the canonical text of the project
+  check FILE.sps                 parse and check the whole project
+  compile FILE.sps [-o OUT.hps]  check, then write the compiled image (Intel HEX)
+  format FILE.sps                print the canonical text of the project
 )";
 
 int usage(const QString& message) {
@@ -26,10 +27,19 @@ int main(int argc, char* argv[]) {
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QStringLiteral("Rungsmith command line: check and format Pluto programs.\n\n") +
+        QStringLiteral("Rungsmith command line: check, compile and format Pluto programs.\n\n") +
         QString::fromUtf8(kVerbs));
-    parser.addPositionalArgument(QStringLiteral("verb"), QStringLiteral("check or format"));
+    parser.addPositionalArgument(QStringLiteral("verb"),
+                                 QStringLiteral("check, compile or format"));
     parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("the project file (.sps)"));
+    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
+                                    QStringLiteral("Where compile writes the image."),
+                                    QStringLiteral("OUT.hps"));
+    const QCommandLineOption noIoWarnings(
+        QStringLiteral("no-io-warnings"),
+        QStringLiteral("Do not warn about inputs and outputs used without an I/O declaration."));
+    parser.addOption(output);
+    parser.addOption(noIoWarnings);
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     if (!parser.parse(app.arguments()))
@@ -46,11 +56,19 @@ int main(int argc, char* argv[]) {
     if (arguments.isEmpty())
         return usage(QStringLiteral("missing verb"));
     const QString verb = arguments.front();
-    if (verb == QLatin1String("check") || verb == QLatin1String("format")) {
+    rs::compiler::CheckOptions options;
+    options.warnUnconfiguredIo = !parser.isSet(noIoWarnings);
+    if (verb == QLatin1String("check") || verb == QLatin1String("format") ||
+        verb == QLatin1String("compile")) {
         if (arguments.size() != 2)
             return usage(QStringLiteral("%1 takes exactly one FILE.sps").arg(verb));
-        return verb == QLatin1String("check") ? rs::cli::runCheck(arguments[1], {})
-                                              : rs::cli::runFormat(arguments[1], {});
+        if (parser.isSet(output) && verb != QLatin1String("compile"))
+            return usage(QStringLiteral("-o is an option of compile"));
+        if (verb == QLatin1String("check"))
+            return rs::cli::runCheck(arguments[1], options, {});
+        if (verb == QLatin1String("compile"))
+            return rs::cli::runCompile(arguments[1], parser.value(output), options, {});
+        return rs::cli::runFormat(arguments[1], {});
     }
     return usage(QStringLiteral("unknown verb '%1'").arg(verb));
 }

@@ -743,7 +743,7 @@ private:
         }
         if (at(TokenKind::Word)) {
             Operand operand = parseOperand("a time or a register");
-            if (!operand.isName() && operand.address.isBit())
+            if (!operand.isName() && operand.address.isBit() && !operand.address.isWord())
                 failAt(token, keyword == "T"
                                   ? "T(" + std::string(token.text) +
                                         ") toggles an output; it can only start a statement: "

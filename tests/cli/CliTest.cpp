@@ -5,6 +5,11 @@
 
 #include <gtest/gtest.h>
 
+// Readable failure messages.
+inline void PrintTo(const QString& text, std::ostream* os) {
+    *os << text.toStdString();
+}
+
 namespace {
 
 struct CliRun {
@@ -36,7 +41,12 @@ TEST(Cli, CheckOfAGoodProjectSaysResultOk) {
     CliRun run = cli({"check", kMuting});
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_EQ(run.out, "0 Error(s) detected Result=OK\n");
-    EXPECT_EQ(run.err, "");
+    // The manual's own example leaves the muting lamp Q0.17 without an I/O declaration.
+    EXPECT_EQ(run.err, kMuting + ":37:1: warning: unconfigured I/O: Q0.17 has no I/O declaration "
+                                 "in the code of unit 0\n");
+    CliRun quiet = cli({"check", "--no-io-warnings", kMuting});
+    EXPECT_EQ(quiet.exitCode, 0);
+    EXPECT_EQ(quiet.err, "");
 }
 
 TEST(Cli, CheckReportsEveryErrorWithFileLineAndColumn) {

@@ -1,0 +1,208 @@
+#include "CodeGenerator.h"
+
+#include <map>
+
+namespace rs::compiler {
+
+namespace {
+
+using lang::Expr;
+using lang::ExprKind;
+using lang::Statement;
+using lang::StatementKind;
+
+class Generator {
+public:
+    explicit Generator(const UnitSetup& unit) : m_unit(unit) {}
+
+    UnitImage run() {
+        m_image.station = static_cast<std::uint8_t>(m_unit.station);
+        m_image.unitType = static_cast<std::uint8_t>(m_unit.type->type);
+        m_image.instructionSet = static_cast<std::uint8_t>(m_unit.instructionSet);
+
+        // Statements are numbered in file order, the order the ladder pages show them.
+        std::map<const Statement*, std::uint32_t> numbers;
+        std::map<std::pair<int, int>, const lang::Step*> ordered;
+        for (const auto& step : m_unit.program->steps) {
+            ordered[{step.address.sequence, step.address.step}] = &step;
+            for (const auto& line : step.lines)
+                if (const auto* s = std::get_if<Statement>(&line.body))
+                    numbers[s] = static_cast<std::uint32_t>(numbers.size());
+        }
+        for (const auto& [key, step] : ordered) {
+            StepCode code{static_cast<std::uint8_t>(key.first),
+                          static_cast<std::uint8_t>(key.second),
+                          static_cast<std::uint32_t>(m_image.code.size()), 0};
+            for (const auto& line : step->lines)
+                if (const auto* s = std::get_if<Statement>(&line.body))
+                    statement(*s, numbers[s], key.second);
+            code.count = static_cast<std::uint32_t>(m_image.code.size()) - code.first;
+            m_image.steps.push_back(code);
+        }
+        return std::move(m_image);
+    }
+
+private:
+    Instruction& emit(Op op, std::uint16_t element) {
+        Instruction in;
+        in.op = op;
+        in.line = static_cast<std::uint32_t>(m_statement->location.line);
+        in.column = static_cast<std::uint16_t>(m_statement->location.column);
+        in.statement = m_number;
+        in.element = element;
+        m_image.code.push_back(in);
+        return m_image.code.back();
+    }
+
+    void statement(const Statement& s, std::uint32_t number, int step) {
+        m_statement = &s;
+        m_number = number;
+        m_element = 0;
+        emit(Op::Rung, 0);
+        if (s.condition)
+            expression(*s.condition);
+        switch (s.kind) {
+        case StatementKind::Coil:
+            emit(Op::Coil, 0).operand = s.target.address;
+            break;
+        case StatementKind::Set:
+            emit(Op::Set, 0).operand = s.target.address;
+            break;
+        case StatementKind::Reset:
+            emit(Op::Reset, 0).operand = s.target.address;
+            break;
+        case StatementKind::Toggle:
+            emit(Op::Toggle, 0).operand = s.target.address;
+            break;
+        case StatementKind::Jump:
+            emit(Op::Jump, 0).slot =
+                static_cast<std::uint16_t>(s.relativeJump ? step + s.jumpStep : s.jumpStep);
+            break;
+        case StatementKind::SequenceReset:
+            emit(Op::SequenceReset, 0).slot = static_cast<std::uint16_t>(s.target.address.index);
+            break;
+        case StatementKind::Assign:
+            assignment(s.assignment);
+            break;
+        }
+    }
+
+    void load(Op op, const lang::Value& value, std::uint16_t element) {
+        Instruction& in = emit(op, element);
+        if (value.operand) {
+            in.operand = value.operand->address;
+        } else {
+            in.flags |= ConstantOperand;
+            in.constant = static_cast<std::int32_t>(value.constant);
+        }
+    }
+
+    void assignment(const lang::Assignment& a) {
+        ArithOp op = ArithOp::Copy;
+        switch (a.op) {
+        case lang::AssignOp::Increment:
+            op = ArithOp::Increment;
+            break;
+        case lang::AssignOp::Decrement:
+            op = ArithOp::Decrement;
+            break;
+        case lang::AssignOp::AddAssign:
+            op = ArithOp::Add;
+            break;
+        case lang::AssignOp::SubAssign:
+            op = ArithOp::Sub;
+            break;
+        case lang::AssignOp::MulAssign:
+            op = ArithOp::Mul;
+            break;
+        case lang::AssignOp::DivAssign:
+            op = ArithOp::Div;
+            break;
+        case lang::AssignOp::Copy:
+            op = ArithOp::Copy;
+            break;
+        case lang::AssignOp::Binary:
+            static constexpr ArithOp binary[] = {ArithOp::AddAB, ArithOp::SubAB, ArithOp::MulAB,
+                                                 ArithOp::DivAB};
+            op = binary[static_cast<int>(a.binary)];
+            break;
+        }
+        if (op != ArithOp::Increment && op != ArithOp::Decrement)
+            load(Op::LoadA, a.left, 0);
+        if (a.op == lang::AssignOp::Binary)
+            load(Op::LoadB, a.right, 0);
+        Instruction& in = emit(Op::Arith, 0);
+        in.aux = static_cast<std::uint8_t>(op);
+        in.operand = a.target.address;
+    }
+
+    void expression(const Expr& e) {
+        const auto element = static_cast<std::uint16_t>(++m_element);
+        const std::uint8_t negated = e.negated ? Negated : 0;
+        switch (e.kind) {
+        case ExprKind::And:
+            for (const auto& child : e.children)
+                expression(child);
+            return;
+        case ExprKind::Or:
+            emit(Op::BranchOpen, element);
+            for (std::size_t i = 0; i < e.children.size(); ++i) {
+                if (i)
+                    emit(Op::BranchNext, element);
+                expression(e.children[i]);
+            }
+            emit(Op::BranchClose, element);
+            return;
+        case ExprKind::Contact: {
+            Instruction& in = emit(Op::Contact, element);
+            in.flags = negated;
+            in.operand = e.operand.address;
+            return;
+        }
+        case ExprKind::Edge: {
+            Instruction& in = emit(Op::Edge, element);
+            in.flags = static_cast<std::uint8_t>(negated | (e.operandNegated ? OperandNegated : 0) |
+                                                 (e.risingEdge ? Rising : 0));
+            in.slot = m_image.edges++;
+            in.operand = e.operand.address;
+            return;
+        }
+        case ExprKind::Timer: {
+            Instruction& in = emit(Op::Timer, element);
+            in.flags = negated;
+            in.aux = static_cast<std::uint8_t>(lang::timerKind(e.timer));
+            in.slot = m_image.timers++;
+            if (e.preset.registerOperand) {
+                in.operand = e.preset.registerOperand->address;
+            } else {
+                in.flags |= ConstantOperand;
+                in.constant = e.preset.hundredths;
+            }
+            return;
+        }
+        case ExprKind::Compare: {
+            Instruction& left = emit(Op::LoadA, element);
+            left.operand = e.operand.address;
+            load(Op::LoadB, e.right, element);
+            Instruction& in = emit(Op::Compare, element);
+            in.flags = negated;
+            in.aux = static_cast<std::uint8_t>(e.compare);
+            return;
+        }
+        }
+    }
+
+    const UnitSetup& m_unit;
+    UnitImage m_image;
+    const Statement* m_statement = nullptr;
+    std::uint32_t m_number = 0;
+    int m_element = 0;
+};
+
+} // namespace
+
+UnitImage generateCode(const UnitSetup& unit) {
+    return Generator(unit).run();
+}
+
+} // namespace rs::compiler

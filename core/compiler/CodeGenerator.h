@@ -1,0 +1,12 @@
+#pragma once
+
+#include "Image.h"
+#include "UnitSetup.h"
+
+namespace rs::compiler {
+
+// Translates one unit's checked code into instructions: the PLC code first,
+// then each sequence by number, each step by number.
+UnitImage generateCode(const UnitSetup& unit);
+
+} // namespace rs::compiler

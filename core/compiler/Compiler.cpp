@@ -1,0 +1,56 @@
+#include "Compiler.h"
+
+#include "CodeGenerator.h"
+#include "ImageCodec.h"
+#include "project/ProjectFile.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace rs::compiler {
+
+namespace {
+
+void sortByPlace(lang::Diagnostics& diagnostics) {
+    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+    });
+}
+
+} // namespace
+
+CompileResult compile(const project::Project& project, const CheckOptions& options) {
+    CompileResult result;
+    UnitSetups units = collectUnits(project.program, result.diagnostics);
+    lang::Diagnostics checks = checkProgram(project.program, units, options);
+    result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
+    sortByPlace(result.diagnostics);
+    if (result.errors())
+        return result;
+    const std::string canonical = project::writeProject(project);
+    const std::uint32_t sourceCrc = crc32(canonical);
+    for (const auto& [station, unit] : units) {
+        if (!unit.program)
+            continue;
+        UnitImage image = generateCode(unit);
+        image.projectName = project.name();
+        image.sourceCrc = sourceCrc;
+        if (project.includeSource)
+            image.source = canonical;
+        result.images.push_back(std::move(image));
+    }
+    return result;
+}
+
+CompileResult compileText(std::string_view text, const CheckOptions& options) {
+    project::ProjectReadResult read = project::readProject(text);
+    if (!read.ok())
+        return {std::move(read.diagnostics), {}};
+    CompileResult result = compile(read.project, options);
+    result.diagnostics.insert(result.diagnostics.begin(), read.diagnostics.begin(),
+                              read.diagnostics.end());
+    sortByPlace(result.diagnostics);
+    return result;
+}
+
+} // namespace rs::compiler

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "Image.h"
+#include "ProgramCheck.h"
+#include "project/Project.h"
+
+#include <string_view>
+
+namespace rs::compiler {
+
+struct CompileResult {
+    lang::Diagnostics diagnostics; // sorted by line and column
+    std::vector<UnitImage> images; // by station; empty when there are errors
+
+    int errors() const { return lang::errorCount(diagnostics); }
+};
+
+// Checks the project against everything the manuals state and, when nothing
+// is an error, generates every unit's image. The same project always gives the
+// same images.
+CompileResult compile(const project::Project& project, const CheckOptions& options = {});
+
+// Reads, resolves and compiles project text; syntax errors and check results together.
+CompileResult compileText(std::string_view text, const CheckOptions& options = {});
+
+} // namespace rs::compiler

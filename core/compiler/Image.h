@@ -1,0 +1,100 @@
+#pragma once
+
+#include "lang/Address.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+// The compiled program of one unit: what the simulator runs. Its byte layout
+// is documented in docs/image-format.md.
+namespace rs::compiler {
+
+// One-operand instructions on a "power" bit that flows left to right through
+// a statement, as through a rung: series elements AND into it, parallel
+// branches save and combine it. A timer takes the power at its left as its
+// input and gives its output to the right, which is the language's rule.
+enum class Op : std::uint8_t {
+    Rung = 1,      // power = 1: a statement starts
+    Contact,       // power &= bit(operand) ^ negated
+    Edge,          // power &= edge seen by this occurrence (slot) ^ negated
+    Timer,         // timer slot: input = power; power = output (negated: input and not output)
+    LoadA,         // a = word(operand) or constant
+    LoadB,         // b = word(operand) or constant
+    Compare,       // power &= (a <op> b) ^ negated
+    BranchOpen,    // push {in = power, any = 0}
+    BranchNext,    // any |= power; power = in
+    BranchClose,   // power = any | power; pop
+    Coil,          // bit(operand) = power
+    Set,           // if power: bit(operand) = 1
+    Reset,         // if power: bit(operand) = 0
+    Toggle,        // if power: bit(operand) = !bit(operand)
+    Jump,          // if power: the sequence goes to step `slot` at the end of its part of the scan
+    SequenceReset, // if power: sequence `slot` is held in step 0
+    Arith,         // if power: word(operand) = f(word(operand), a, b); f = aux
+};
+
+enum class ArithOp : std::uint8_t {
+    Increment,
+    Decrement,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Copy,
+    AddAB,
+    SubAB,
+    MulAB,
+    DivAB
+};
+
+enum InstructionFlag : std::uint8_t {
+    Negated = 1,         // Contact, Edge, Timer, Compare
+    OperandNegated = 2,  // Edge of a negated operand: P(/x)
+    Rising = 4,          // Edge: P (set) or N
+    ConstantOperand = 8, // LoadA, LoadB, Timer: use `constant`, not `operand`
+};
+
+struct Instruction {
+    Op op = Op::Rung;
+    std::uint8_t flags = 0;
+    std::uint8_t aux = 0;   // Timer: lang::TimerKind; Compare: lang::CompareOp; Arith: ArithOp
+    std::uint16_t slot = 0; // Edge/Timer: occurrence number; Jump: step; SequenceReset: sequence
+    lang::Address operand;
+    std::int32_t constant = 0;
+    // Where it came from: the statement's line and column, the statement's
+    // number in the unit (from 0, in file order) and the element within it
+    // (0 the output, then the expression's nodes in pre-order from 1).
+    std::uint32_t line = 0;
+    std::uint16_t column = 0;
+    std::uint32_t statement = 0;
+    std::uint16_t element = 0;
+
+    friend bool operator==(const Instruction&, const Instruction&) = default;
+};
+
+// The code of one step: instructions [first, first + count).
+struct StepCode {
+    std::uint8_t sequence = 0; // 0 is the PLC code
+    std::uint8_t step = 0;
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    friend bool operator==(const StepCode&, const StepCode&) = default;
+};
+
+struct UnitImage {
+    std::string projectName;
+    std::uint32_t sourceCrc = 0; // CRC-32 of the project's canonical text
+    std::uint8_t station = 0;
+    std::uint8_t unitType = 0; // target::UnitType
+    std::uint8_t instructionSet = 2;
+    std::uint16_t timers = 0;
+    std::uint16_t edges = 0;
+    std::vector<StepCode> steps; // the PLC code first, then sequences by number and steps by number
+    std::vector<Instruction> code;
+    std::string source; // the canonical project text when "include source" is set, else empty
+
+    friend bool operator==(const UnitImage&, const UnitImage&) = default;
+};
+
+} // namespace rs::compiler

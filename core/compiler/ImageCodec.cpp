@@ -1,0 +1,254 @@
+#include "ImageCodec.h"
+
+#include "IntelHex.h"
+
+#include <zlib.h>
+
+namespace rs::compiler {
+
+namespace {
+
+constexpr char kMagic[4] = {'R', 'S', 'I', 'M'};
+constexpr std::uint16_t kVersion = 1;
+constexpr std::size_t kInstructionSize = 28;
+constexpr std::uint8_t kHasSource = 1;
+
+class Writer {
+public:
+    void u8(std::uint8_t v) { m_bytes.push_back(v); }
+    void u16(std::uint16_t v) {
+        u8(static_cast<std::uint8_t>(v));
+        u8(static_cast<std::uint8_t>(v >> 8));
+    }
+    void u32(std::uint32_t v) {
+        u16(static_cast<std::uint16_t>(v));
+        u16(static_cast<std::uint16_t>(v >> 16));
+    }
+    void bytes(std::string_view s) { m_bytes.insert(m_bytes.end(), s.begin(), s.end()); }
+    std::vector<std::uint8_t>& data() { return m_bytes; }
+
+private:
+    std::vector<std::uint8_t> m_bytes;
+};
+
+struct Truncated {};
+
+class Reader {
+public:
+    explicit Reader(const std::vector<std::uint8_t>& bytes, std::size_t end)
+        : m_bytes(bytes), m_end(end) {}
+    std::uint8_t u8() {
+        if (m_pos >= m_end)
+            throw Truncated{};
+        return m_bytes[m_pos++];
+    }
+    std::uint16_t u16() {
+        std::uint16_t low = u8();
+        return static_cast<std::uint16_t>(low | (u8() << 8));
+    }
+    std::uint32_t u32() {
+        std::uint32_t low = u16();
+        return low | (static_cast<std::uint32_t>(u16()) << 16);
+    }
+    std::string bytes(std::size_t n) {
+        if (n > m_end - m_pos)
+            throw Truncated{};
+        std::string s(m_bytes.begin() + static_cast<std::ptrdiff_t>(m_pos),
+                      m_bytes.begin() + static_cast<std::ptrdiff_t>(m_pos + n));
+        m_pos += n;
+        return s;
+    }
+    bool atEnd() const { return m_pos == m_end; }
+
+private:
+    const std::vector<std::uint8_t>& m_bytes;
+    std::size_t m_end;
+    std::size_t m_pos = 0;
+};
+
+std::string compress(const std::string& text) {
+    uLongf size = compressBound(static_cast<uLong>(text.size()));
+    std::string out(size, '\0');
+    compress2(reinterpret_cast<Bytef*>(out.data()), &size,
+              reinterpret_cast<const Bytef*>(text.data()), static_cast<uLong>(text.size()),
+              Z_BEST_COMPRESSION);
+    out.resize(size);
+    return out;
+}
+
+bool uncompress(const std::string& packed, std::uint32_t length, std::string& out) {
+    out.assign(length, '\0');
+    uLongf size = length;
+    return ::uncompress(reinterpret_cast<Bytef*>(out.data()), &size,
+                        reinterpret_cast<const Bytef*>(packed.data()),
+                        static_cast<uLong>(packed.size())) == Z_OK &&
+           size == length;
+}
+
+} // namespace
+
+std::uint32_t crc32(std::string_view bytes) {
+    return static_cast<std::uint32_t>(
+        ::crc32(0L, reinterpret_cast<const Bytef*>(bytes.data()), static_cast<uInt>(bytes.size())));
+}
+
+std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
+    Writer w;
+    w.bytes(std::string_view(kMagic, 4));
+    w.u16(kVersion);
+    w.u8(image.station);
+    w.u8(image.unitType);
+    w.u8(image.instructionSet);
+    w.u8(image.source.empty() ? 0 : kHasSource);
+    w.u32(image.sourceCrc);
+    w.u16(static_cast<std::uint16_t>(image.projectName.size()));
+    w.bytes(image.projectName);
+    w.u16(image.timers);
+    w.u16(image.edges);
+    w.u16(static_cast<std::uint16_t>(image.steps.size()));
+    for (const auto& step : image.steps) {
+        w.u8(step.sequence);
+        w.u8(step.step);
+        w.u32(step.first);
+        w.u32(step.count);
+    }
+    w.u32(static_cast<std::uint32_t>(image.code.size()));
+    for (const auto& in : image.code) {
+        w.u8(static_cast<std::uint8_t>(in.op));
+        w.u8(in.flags);
+        w.u8(in.aux);
+        w.u8(static_cast<std::uint8_t>(in.operand.kind));
+        w.u8(static_cast<std::uint8_t>(in.operand.unit));
+        w.u8(static_cast<std::uint8_t>(static_cast<std::int8_t>(in.operand.bit)));
+        w.u8(in.operand.asiB ? 1 : 0);
+        w.u8(0);
+        w.u16(static_cast<std::uint16_t>(in.operand.index));
+        w.u16(in.slot);
+        w.u32(static_cast<std::uint32_t>(in.constant));
+        w.u32(in.line);
+        w.u16(in.column);
+        w.u16(in.element);
+        w.u32(in.statement);
+    }
+    if (!image.source.empty()) {
+        const std::string packed = compress(image.source);
+        w.u32(static_cast<std::uint32_t>(image.source.size()));
+        w.u32(static_cast<std::uint32_t>(packed.size()));
+        w.bytes(packed);
+    }
+    auto& bytes = w.data();
+    const std::uint32_t crc =
+        crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    w.u32(crc);
+    return std::move(bytes);
+}
+
+ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
+    if (bytes.size() < 8 || !std::equal(kMagic, kMagic + 4, bytes.begin()))
+        return ImageError{0, 0, "not a Rungsmith image (it does not start with RSIM)"};
+    const std::size_t end = bytes.size() - 4;
+    const std::uint32_t stored = static_cast<std::uint32_t>(bytes[end]) |
+                                 static_cast<std::uint32_t>(bytes[end + 1]) << 8 |
+                                 static_cast<std::uint32_t>(bytes[end + 2]) << 16 |
+                                 static_cast<std::uint32_t>(bytes[end + 3]) << 24;
+    if (stored != crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), end)))
+        return ImageError{0, 0, "the image is damaged (its checksum does not match)"};
+    Reader r(bytes, end);
+    UnitImage image;
+    try {
+        r.bytes(4);
+        if (std::uint16_t version = r.u16(); version != kVersion)
+            return ImageError{0, 0,
+                              "image format version " + std::to_string(version) +
+                                  " is not supported (this Rungsmith reads version " +
+                                  std::to_string(kVersion) + ")"};
+        image.station = r.u8();
+        image.unitType = r.u8();
+        image.instructionSet = r.u8();
+        const std::uint8_t flags = r.u8();
+        image.sourceCrc = r.u32();
+        image.projectName = r.bytes(r.u16());
+        image.timers = r.u16();
+        image.edges = r.u16();
+        image.steps.resize(r.u16());
+        for (auto& step : image.steps) {
+            step.sequence = r.u8();
+            step.step = r.u8();
+            step.first = r.u32();
+            step.count = r.u32();
+        }
+        const std::uint32_t count = r.u32();
+        if (count > (end / kInstructionSize))
+            throw Truncated{};
+        image.code.resize(count);
+        for (auto& in : image.code) {
+            in.op = static_cast<Op>(r.u8());
+            in.flags = r.u8();
+            in.aux = r.u8();
+            in.operand.kind = static_cast<lang::AddressKind>(r.u8());
+            in.operand.unit = r.u8();
+            in.operand.bit = static_cast<std::int8_t>(r.u8());
+            in.operand.asiB = r.u8() != 0;
+            r.u8();
+            in.operand.index = r.u16();
+            in.slot = r.u16();
+            in.constant = static_cast<std::int32_t>(r.u32());
+            in.line = r.u32();
+            in.column = r.u16();
+            in.element = r.u16();
+            in.statement = r.u32();
+            if (in.op < Op::Rung || in.op > Op::Arith)
+                return ImageError{0, 0, "unknown instruction " + std::to_string(int(in.op))};
+        }
+        for (const auto& step : image.steps)
+            if (step.first > image.code.size() || step.count > image.code.size() - step.first)
+                return ImageError{0, 0, "a step's code lies outside the image"};
+        if (flags & kHasSource) {
+            const std::uint32_t length = r.u32();
+            const std::string packed = r.bytes(r.u32());
+            if (!uncompress(packed, length, image.source))
+                return ImageError{0, 0, "the included source code cannot be unpacked"};
+        }
+        if (!r.atEnd())
+            return ImageError{0, 0, "unexpected bytes after the image"};
+    } catch (const Truncated&) {
+        return ImageError{0, 0, "the image is truncated"};
+    }
+    return image;
+}
+
+std::string writeHps(const std::vector<UnitImage>& images) {
+    std::vector<HexSegment> segments;
+    for (const auto& image : images)
+        segments.push_back({image.station * kHpsStationStride, encodeImage(image)});
+    return writeIntelHex(segments);
+}
+
+HpsResult readHps(std::string_view text) {
+    HexReadResult hex = readIntelHex(text);
+    if (hex.error)
+        return ImageError{hex.error->line, hex.error->column, hex.error->message};
+    std::vector<UnitImage> images;
+    for (const auto& segment : hex.segments) {
+        if (segment.address % kHpsStationStride != 0)
+            return ImageError{0, 0, "data at an address where no unit's image starts"};
+        ImageResult image = decodeImage(segment.bytes);
+        if (auto* error = std::get_if<ImageError>(&image)) {
+            error->message = "unit " + std::to_string(segment.address / kHpsStationStride) + ": " +
+                             error->message;
+            return *error;
+        }
+        auto& unit = std::get<UnitImage>(image);
+        if (unit.station * kHpsStationStride != segment.address)
+            return ImageError{
+                0, 0,
+                "the image of unit " + std::to_string(unit.station) + " is stored where unit " +
+                    std::to_string(segment.address / kHpsStationStride) + "'s belongs"};
+        images.push_back(std::move(unit));
+    }
+    if (images.empty())
+        return ImageError{0, 0, "the file holds no unit image"};
+    return images;
+}
+
+} // namespace rs::compiler

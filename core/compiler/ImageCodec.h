@@ -1,0 +1,39 @@
+#pragma once
+
+#include "Image.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace rs::compiler {
+
+// The bytes of an image (docs/image-format.md). Deterministic: the same image
+// always gives the same bytes.
+std::vector<std::uint8_t> encodeImage(const UnitImage& image);
+
+struct ImageError {
+    int line = 0; // in the .hps text; 0 when the bytes themselves are wrong
+    int column = 0;
+    std::string message;
+};
+
+using ImageResult = std::variant<UnitImage, ImageError>;
+
+ImageResult decodeImage(const std::vector<std::uint8_t>& bytes);
+
+// A .hps file: the images of a project's units as Intel HEX, each unit's at
+// its station number times kHpsStationStride.
+inline constexpr std::uint32_t kHpsStationStride = 0x100000;
+
+std::string writeHps(const std::vector<UnitImage>& images);
+
+using HpsResult = std::variant<std::vector<UnitImage>, ImageError>;
+HpsResult readHps(std::string_view text);
+
+// CRC-32 (IEEE 802.3, zlib's crc32).
+std::uint32_t crc32(std::string_view bytes);
+
+} // namespace rs::compiler
