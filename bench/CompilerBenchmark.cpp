@@ -1,0 +1,64 @@
+#include "ProjectGenerator.h"
+
+#include "compiler/Compiler.h"
+#include "compiler/ImageCodec.h"
+#include "compiler/ProgramCheck.h"
+#include "project/ProjectFile.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <string>
+
+namespace {
+
+// The default generated project (32 units x 2,000 statements), read once.
+const std::string& projectText() {
+    static const std::string text = rs::bench::generateProject({});
+    return text;
+}
+
+const rs::project::Project& project() {
+    static const rs::project::Project parsed = rs::project::readProject(projectText()).project;
+    return parsed;
+}
+
+void setBytes(benchmark::State& state) {
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(projectText().size()));
+}
+
+// The semantic checks alone, on a project already read.
+void BM_Check(benchmark::State& state) {
+    for (auto _ : state) {
+        rs::lang::Diagnostics diagnostics;
+        auto units = rs::compiler::collectUnits(project().program, diagnostics);
+        benchmark::DoNotOptimize(rs::compiler::checkProgram(project().program, units, {}));
+    }
+    setBytes(state);
+}
+BENCHMARK(BM_Check)->Unit(benchmark::kMillisecond);
+
+// Checks and code generation, on a project already read.
+void BM_CheckAndGenerate(benchmark::State& state) {
+    for (auto _ : state) {
+        auto result = rs::compiler::compile(project());
+        if (result.errors())
+            state.SkipWithError("the generated project does not compile");
+        benchmark::DoNotOptimize(result);
+    }
+    setBytes(state);
+}
+BENCHMARK(BM_CheckAndGenerate)->Unit(benchmark::kMillisecond);
+
+// What `rungsmith-cli compile` does between reading and writing files:
+// read the text, check, generate, encode as Intel HEX.
+void BM_CompileTextToHps(benchmark::State& state) {
+    for (auto _ : state) {
+        auto result = rs::compiler::compileText(projectText());
+        benchmark::DoNotOptimize(rs::compiler::writeHps(result.images));
+    }
+    setBytes(state);
+}
+BENCHMARK(BM_CompileTextToHps)->Unit(benchmark::kMillisecond);
+
+} // namespace
