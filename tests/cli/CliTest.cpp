@@ -93,6 +93,40 @@ TEST(Cli, UnreadableFilesAndUsageErrorsExitWithTwo) {
     EXPECT_EQ(cli({"check", "--bogus", kMuting}).exitCode, 2);
 }
 
+TEST(Cli, CompileWritesTheImageBesideTheProjectOrWhereAsked) {
+    QTemporaryDir dir;
+    QFile::copy(kMuting, dir.filePath("muting.sps"));
+    CliRun beside = cli({"compile", dir.filePath("muting.sps")});
+    EXPECT_EQ(beside.exitCode, 0);
+    EXPECT_EQ(beside.out, "0 Error(s) detected Result=OK\n");
+    QFile image(dir.filePath("muting.hps"));
+    ASSERT_TRUE(image.open(QIODevice::ReadOnly));
+    const QByteArray hex = image.readAll();
+    EXPECT_TRUE(hex.startsWith(":10000000525349"));
+    EXPECT_TRUE(hex.endsWith(":00000001FF\n"));
+
+    CliRun asked = cli({"compile", kMuting, "-o", dir.filePath("out.hps")});
+    EXPECT_EQ(asked.exitCode, 0);
+    QFile out(dir.filePath("out.hps"));
+    ASSERT_TRUE(out.open(QIODevice::ReadOnly));
+    EXPECT_EQ(out.readAll(), hex);
+}
+
+TEST(Cli, CompileWritesNothingWhenThereAreErrors) {
+    QTemporaryDir dir;
+    QString path = writeTemp(dir, "bad.sps",
+                             "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\nJ(+1) = I0.0\n");
+    CliRun run = cli({"compile", path});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.out, "1 Error(s) detected Result=FAILED\n");
+    EXPECT_TRUE(run.err.startsWith(path + ":4:1: error: J(+1) in the PLC code"))
+        << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(dir.filePath("bad.hps")));
+    CliRun unwritable = cli({"compile", kMuting, "-o", "/nonexistent/dir/x.hps"});
+    EXPECT_EQ(unwritable.exitCode, 2);
+    EXPECT_TRUE(unwritable.err.contains("cannot write /nonexistent/dir/x.hps"));
+}
+
 TEST(Cli, HelpAndVersion) {
     CliRun help = cli({"--help"});
     EXPECT_EQ(help.exitCode, 0);

@@ -1,3 +1,4 @@
+#include "compiler/Compiler.h"
 #include "lang/Lexer.h"
 #include "project/ProjectFile.h"
 
@@ -57,6 +58,15 @@ TEST_P(ManualExample, ParsesFormatsIdempotentlyAndKeepsEveryComment) {
     EXPECT_TRUE(second.diagnostics.empty());
     EXPECT_EQ(project::writeProject(second.project), formatted);
     EXPECT_EQ(commentsOf(formatted), commentsOf(source));
+}
+
+TEST_P(ManualExample, CompilesWithoutErrors) {
+    auto result = compiler::compileText(readFile(GetParam()));
+    for (const auto& d : result.diagnostics)
+        if (d.severity == lang::Severity::Error)
+            ADD_FAILURE() << GetParam().filename() << ":" << d.line << ":" << d.column << ": "
+                          << d.message;
+    EXPECT_FALSE(result.images.empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(Manuals, ManualExample, ::testing::ValuesIn(manualExamples()),
