@@ -1,22 +1,52 @@
+#include "Invocation.h"
 #include "Verbs.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
 
 #include <cstdio>
 
 namespace {
 
-constexpr const char* kVerbs = R"(Verbs:
-  check FILE.sps                 parse and check the whole project
-  compile FILE.sps [-o OUT.hps]  check, then write the compiled image (Intel HEX)
-  format FILE.sps                print the canonical text of the project
-)";
+using rs::cli::Invocation;
 
 int usage(const QString& message) {
     std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
     return rs::cli::UsageOrIo;
 }
+
+rs::compiler::CheckOptions checkOptions(const Invocation& invocation) {
+    rs::compiler::CheckOptions options;
+    options.warnUnconfiguredIo = !invocation.options.isSet(QStringLiteral("no-io-warnings"));
+    return options;
+}
+
+int check(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("check takes exactly one FILE.sps"));
+    return rs::cli::runCheck(invocation.arguments[0], checkOptions(invocation), {});
+}
+
+int compile(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("compile takes exactly one FILE.sps"));
+    return rs::cli::runCompile(invocation.arguments[0],
+                               invocation.options.value(QStringLiteral("output")),
+                               checkOptions(invocation), {});
+}
+
+int format(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("format takes exactly one FILE.sps"));
+    return rs::cli::runFormat(invocation.arguments[0], {});
+}
+
+// Every verb of the command line; --help lists them in this order.
+const rs::cli::Verb kVerbs[] = {
+    {"check", "check FILE.sps                 parse and check the whole project", check},
+    {"compile", "compile FILE.sps [-o OUT.hps]  check, then write the compiled image (Intel HEX)",
+     compile},
+    {"format", "format FILE.sps                print the canonical text of the project", format},
+};
 
 } // namespace
 
@@ -25,21 +55,21 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setApplicationName(QStringLiteral("rungsmith-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
 
+    QString description =
+        QStringLiteral("Rungsmith command line for Pluto safety PLC projects.\n\nVerbs:\n");
+    for (const auto& verb : kVerbs)
+        description += QStringLiteral("  %1\n").arg(QString::fromUtf8(verb.synopsis));
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Rungsmith command line: check, compile and format Pluto programs.\n\n") +
-        QString::fromUtf8(kVerbs));
-    parser.addPositionalArgument(QStringLiteral("verb"),
-                                 QStringLiteral("check, compile or format"));
-    parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("the project file (.sps)"));
-    const QCommandLineOption output({QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Where compile writes the image."),
-                                    QStringLiteral("OUT.hps"));
-    const QCommandLineOption noIoWarnings(
-        QStringLiteral("no-io-warnings"),
-        QStringLiteral("Do not warn about inputs and outputs used without an I/O declaration."));
-    parser.addOption(output);
-    parser.addOption(noIoWarnings);
+    parser.setApplicationDescription(description);
+    parser.addPositionalArgument(QStringLiteral("verb"), QStringLiteral("what to do (see Verbs)"));
+    parser.addPositionalArgument(QStringLiteral("arguments"), QStringLiteral("the verb's files"),
+                                 QStringLiteral("[arguments...]"));
+    parser.addOption({{QStringLiteral("o"), QStringLiteral("output")},
+                      QStringLiteral("Where the verb writes its result."),
+                      QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("no-io-warnings"),
+                      QStringLiteral("Do not warn about inputs and outputs used without an I/O "
+                                     "declaration.")});
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     if (!parser.parse(app.arguments()))
@@ -52,23 +82,12 @@ int main(int argc, char* argv[]) {
         std::printf("rungsmith-cli %s\n", RUNGSMITH_VERSION);
         return rs::cli::Ok;
     }
-    const QStringList arguments = parser.positionalArguments();
+    QStringList arguments = parser.positionalArguments();
     if (arguments.isEmpty())
         return usage(QStringLiteral("missing verb"));
-    const QString verb = arguments.front();
-    rs::compiler::CheckOptions options;
-    options.warnUnconfiguredIo = !parser.isSet(noIoWarnings);
-    if (verb == QLatin1String("check") || verb == QLatin1String("format") ||
-        verb == QLatin1String("compile")) {
-        if (arguments.size() != 2)
-            return usage(QStringLiteral("%1 takes exactly one FILE.sps").arg(verb));
-        if (parser.isSet(output) && verb != QLatin1String("compile"))
-            return usage(QStringLiteral("-o is an option of compile"));
-        if (verb == QLatin1String("check"))
-            return rs::cli::runCheck(arguments[1], options, {});
-        if (verb == QLatin1String("compile"))
-            return rs::cli::runCompile(arguments[1], parser.value(output), options, {});
-        return rs::cli::runFormat(arguments[1], {});
-    }
-    return usage(QStringLiteral("unknown verb '%1'").arg(verb));
+    const QString name = arguments.takeFirst();
+    for (const auto& verb : kVerbs)
+        if (name == QLatin1String(verb.name))
+            return verb.run({arguments, parser});
+    return usage(QStringLiteral("unknown verb '%1'").arg(name));
 }
