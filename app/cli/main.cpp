@@ -1,4 +1,5 @@
 #include "Invocation.h"
+#include "TestVerb.h"
 #include "Verbs.h"
 
 #include <QCoreApplication>
@@ -40,12 +41,23 @@ int format(const Invocation& invocation) {
     return rs::cli::runFormat(invocation.arguments[0], {});
 }
 
+int test(const Invocation& invocation) {
+    if (invocation.arguments.size() < 2)
+        return usage(QStringLiteral("test takes FILE.sps and at least one SCENARIO.scn"));
+    return rs::cli::runTest(invocation.arguments[0], invocation.arguments.mid(1),
+                            invocation.options.value(QStringLiteral("vcd")),
+                            checkOptions(invocation));
+}
+
 // Every verb of the command line; --help lists them in this order.
 const rs::cli::Verb kVerbs[] = {
     {"check", "check FILE.sps                 parse and check the whole project", check},
     {"compile", "compile FILE.sps [-o OUT.hps]  check, then write the compiled image (Intel HEX)",
      compile},
     {"format", "format FILE.sps                print the canonical text of the project", format},
+    {"test",
+     "test FILE.sps SCENARIO... [--vcd OUT.vcd]  run scenario files on the simulated project",
+     test},
 };
 
 } // namespace
@@ -67,6 +79,9 @@ int main(int argc, char* argv[]) {
     parser.addOption({{QStringLiteral("o"), QStringLiteral("output")},
                       QStringLiteral("Where the verb writes its result."),
                       QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("vcd"),
+                      QStringLiteral("test: write a trace of the run that GTKWave opens."),
+                      QStringLiteral("OUT.vcd")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

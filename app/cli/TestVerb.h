@@ -1,0 +1,17 @@
+#pragma once
+
+#include "compiler/ProgramCheck.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace rs::cli {
+
+// `test FILE.sps SCENARIO... [--vcd OUT.vcd]`: runs each scenario from power
+// on against the compiled project, prints one line per failure and the
+// closing "N passed, M failed". With several scenarios and --vcd, each trace
+// goes to OUT.<scenario name>.vcd.
+int runTest(const QString& project, const QStringList& scenarios, const QString& vcd,
+            const compiler::CheckOptions& options);
+
+} // namespace rs::cli

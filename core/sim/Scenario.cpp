@@ -1,0 +1,288 @@
+#include "Scenario.h"
+
+#include "lang/SymbolicName.h"
+#include "lang/TextCase.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace rs::sim {
+
+namespace {
+
+struct Word {
+    std::string_view text;
+    int column;
+};
+
+std::vector<Word> splitWords(std::string_view line) {
+    std::vector<Word> words;
+    std::size_t pos = 0;
+    while (pos < line.size()) {
+        while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r'))
+            ++pos;
+        const std::size_t start = pos;
+        while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t' && line[pos] != '\r')
+            ++pos;
+        if (pos > start)
+            words.push_back({line.substr(start, pos - start), static_cast<int>(start) + 1});
+    }
+    return words;
+}
+
+bool parseInteger(std::string_view text, std::int64_t& value) {
+    if (!text.empty() && text.front() == '+')
+        text.remove_prefix(1);
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size() && !text.empty();
+}
+
+bool isBitOperand(const lang::Address& a) {
+    return a.isBit() && a.kind != lang::AddressKind::AnalogInput;
+}
+
+} // namespace
+
+bool parseDuration(std::string_view text, std::int64_t& ms) {
+    const std::string lower = lang::toLower(text);
+    std::string_view t(lower);
+    auto number = [](std::string_view digits, std::int64_t scale, std::int64_t& out) {
+        // Decimal with an optional fraction, in units of `scale` ms; the result must be whole ms.
+        const std::size_t dot = digits.find('.');
+        std::string_view whole = digits.substr(0, dot);
+        std::string_view fraction =
+            dot == std::string_view::npos ? std::string_view() : digits.substr(dot + 1);
+        if (whole.empty() || whole.find_first_not_of("0123456789") != std::string_view::npos ||
+            fraction.find_first_not_of("0123456789") != std::string_view::npos ||
+            whole.size() > 9 || fraction.size() > 6 ||
+            (dot != std::string_view::npos && fraction.empty()))
+            return false;
+        std::int64_t value = 0;
+        std::from_chars(whole.data(), whole.data() + whole.size(), value);
+        std::int64_t micro = value * scale * 1000;
+        std::int64_t place = scale * 1000;
+        for (char c : fraction) {
+            place /= 10;
+            micro += (c - '0') * place;
+            if (place == 0 && c != '0')
+                return false;
+        }
+        if (micro % 1000 != 0)
+            return false;
+        out = micro / 1000;
+        return true;
+    };
+    if (t.ends_with("ms"))
+        return number(t.substr(0, t.size() - 2), 1, ms);
+    if (t.ends_with("min"))
+        return number(t.substr(0, t.size() - 3), 60000, ms);
+    if (t.ends_with("s"))
+        return number(t.substr(0, t.size() - 1), 1000, ms);
+    // The language's notation: 2s50 is 2.50 s.
+    const std::size_t s = t.find('s');
+    if (s == std::string_view::npos || s == 0)
+        return false;
+    std::string_view whole = t.substr(0, s);
+    std::string_view hundredths = t.substr(s + 1);
+    if (hundredths.empty() || hundredths.size() > 2 ||
+        whole.find_first_not_of("0123456789") != std::string_view::npos ||
+        hundredths.find_first_not_of("0123456789") != std::string_view::npos || whole.size() > 9)
+        return false;
+    std::int64_t seconds = 0;
+    std::int64_t fraction = 0;
+    std::from_chars(whole.data(), whole.data() + whole.size(), seconds);
+    std::from_chars(hundredths.data(), hundredths.data() + hundredths.size(), fraction);
+    if (hundredths.size() == 1)
+        fraction *= 10;
+    ms = seconds * 1000 + fraction * 10;
+    return true;
+}
+
+OperandNames::OperandNames(const project::Project& project) {
+    m_stations = project.stations();
+    auto add = [&](const std::vector<lang::Line>& lines) {
+        for (const auto& line : lines)
+            if (const auto* declaration = std::get_if<lang::Declaration>(&line.body))
+                if (const auto* name = std::get_if<lang::NameDeclaration>(&declaration->body)) {
+                    const std::string key = lang::foldName(name->name);
+                    auto it = std::find_if(m_names.begin(), m_names.end(),
+                                           [&](const auto& entry) { return entry.first == key; });
+                    if (it == m_names.end())
+                        m_names.push_back({key, {name->variable.address, false}});
+                    else if (!(it->second.address == name->variable.address))
+                        it->second.ambiguous = true;
+                }
+    };
+    add(project.program.preamble);
+    for (const auto& unit : project.program.units)
+        add(unit.declarations);
+}
+
+bool OperandNames::resolve(std::string_view word, lang::Address& address,
+                           std::string& error) const {
+    lang::AddressWord read = lang::readAddressWord(word);
+    if (read.shape == lang::AddressWord::Shape::Variable) {
+        address = read.address;
+        return true;
+    }
+    if (read.shape == lang::AddressWord::Shape::Malformed) {
+        error = read.error;
+        return false;
+    }
+    if (read.shape == lang::AddressWord::Shape::Step) {
+        error = "'" + std::string(word) +
+                "' is a step header; write S<unit>.<sequence> for the "
+                "active step of a sequence";
+        return false;
+    }
+    const std::string key = lang::foldName(word);
+    for (const auto& [name, entry] : m_names)
+        if (name == key) {
+            if (entry.ambiguous) {
+                error =
+                    "'" + std::string(word) + "' names variables of several units; use the address";
+                return false;
+            }
+            address = entry.address;
+            return true;
+        }
+    if (lang::systemName(word, 0).valid()) {
+        if (m_stations.size() != 1) {
+            error = "'" + std::string(word) + "' is in every unit; use the address (SM<unit>.<n>)";
+            return false;
+        }
+        address = lang::systemName(word, m_stations.front());
+        return true;
+    }
+    error = "unknown operand '" + std::string(word) + "': use an address or a declared name";
+    return false;
+}
+
+Scenario parseScenario(std::string_view text, const OperandNames& names) {
+    Scenario scenario;
+    int lineNumber = 0;
+    bool timeStarted = false;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos)
+            end = text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++lineNumber;
+        if (const std::size_t comment = line.find_first_of(";#"); comment != std::string_view::npos)
+            line = line.substr(0, comment);
+        std::vector<Word> words = splitWords(line);
+        if (words.empty()) {
+            if (end == text.size())
+                break;
+            continue;
+        }
+        auto fail = [&](const Word& at, std::string message) {
+            scenario.diagnostics.push_back(
+                {lang::Severity::Error, lineNumber, at.column, std::move(message)});
+        };
+        ScenarioStep step;
+        step.line = lineNumber;
+        for (std::size_t i = 0; i < words.size(); ++i)
+            step.text += (i ? " " : "") + std::string(words[i].text);
+        const std::string verb = lang::toLower(words[0].text);
+        auto expectCount = [&](std::size_t count, const char* form) {
+            if (words.size() == count)
+                return true;
+            fail(words.size() > count ? words[count] : words.back(),
+                 std::string(words.size() > count
+                                 ? "unexpected '" + std::string(words[count].text) +
+                                       "'; the form is "
+                                 : "missing argument; the form is ") +
+                     form);
+            return false;
+        };
+        auto operand = [&](const Word& word) {
+            std::string error;
+            if (!names.resolve(word.text, step.operand, error)) {
+                fail(word, error);
+                return false;
+            }
+            return true;
+        };
+        auto value = [&](const Word& word) {
+            if (!parseInteger(word.text, step.value)) {
+                fail(word, "expected a number, found '" + std::string(word.text) + "'");
+                return false;
+            }
+            if (isBitOperand(step.operand) && step.value != 0 && step.value != 1) {
+                fail(word, lang::toString(step.operand) + " is a bit: its value is 0 or 1");
+                return false;
+            }
+            return true;
+        };
+        auto duration = [&](const Word& word, std::int64_t& ms) {
+            if (!parseDuration(word.text, ms)) {
+                fail(word, "expected a duration such as 10ms, 2.5s, 2s50 or 1min, found '" +
+                               std::string(word.text) + "'");
+                return false;
+            }
+            return true;
+        };
+        bool ok = false;
+        if (verb == "set") {
+            step.kind = ScenarioStep::Kind::Set;
+            ok = expectCount(3, "set OPERAND VALUE") && operand(words[1]) && value(words[2]);
+        } else if (verb == "release") {
+            step.kind = ScenarioStep::Kind::Release;
+            ok = expectCount(2, "release OPERAND") && operand(words[1]);
+        } else if (verb == "run") {
+            step.kind = ScenarioStep::Kind::Run;
+            ok = expectCount(2, "run DURATION") && duration(words[1], step.durationMs);
+            timeStarted = true;
+        } else if (verb == "scans") {
+            step.kind = ScenarioStep::Kind::Scans;
+            ok = expectCount(2, "scans N");
+            if (ok && (!parseInteger(words[1].text, step.count) || step.count < 0)) {
+                fail(words[1],
+                     "expected a number of scans, found '" + std::string(words[1].text) + "'");
+                ok = false;
+            }
+            timeStarted = true;
+        } else if (verb == "expect") {
+            step.kind = ScenarioStep::Kind::Expect;
+            if (words.size() == 5 || words.size() == 3) {
+                ok = operand(words[1]) && value(words[2]);
+                if (ok && words.size() == 5) {
+                    if (lang::toLower(words[3].text) != "within") {
+                        fail(words[3],
+                             "expected 'within', found '" + std::string(words[3].text) + "'");
+                        ok = false;
+                    } else {
+                        ok = duration(words[4], step.durationMs);
+                        timeStarted = true;
+                    }
+                }
+            } else {
+                expectCount(words.size() < 3 ? 3 : 5, "expect OPERAND VALUE [within DURATION]");
+            }
+        } else if (verb == "cycle") {
+            step.kind = ScenarioStep::Kind::Cycle;
+            ok = expectCount(2, "cycle DURATION") && duration(words[1], step.durationMs);
+            if (ok && timeStarted) {
+                fail(words[0], "cycle must come before the first run");
+                ok = false;
+            }
+            if (ok && step.durationMs <= 0) {
+                fail(words[1], "the scan cycle must be longer than 0 ms");
+                ok = false;
+            }
+        } else {
+            fail(words[0], "unknown line '" + std::string(words[0].text) +
+                               "'; expected set, release, run, scans, expect or cycle");
+        }
+        if (ok)
+            scenario.steps.push_back(std::move(step));
+        if (end == text.size())
+            break;
+    }
+    return scenario;
+}
+
+} // namespace rs::sim

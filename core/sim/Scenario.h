@@ -1,0 +1,53 @@
+#pragma once
+
+#include "lang/Address.h"
+#include "lang/Diagnostic.h"
+#include "project/Project.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// Scenario files (.scn): a user's test of a program on virtual time, as
+// ../shared/spec/scenario.md defines them.
+namespace rs::sim {
+
+struct ScenarioStep {
+    enum class Kind { Set, Release, Run, Scans, Expect, Cycle } kind = Kind::Run;
+    lang::Address operand;
+    std::int64_t value = 0;
+    std::int64_t durationMs = 0; // Run, Cycle; Expect with `within` (0 without)
+    std::int64_t count = 0;      // Scans
+    int line = 0;
+    std::string text; // the line as written, without its comment
+};
+
+struct Scenario {
+    std::vector<ScenarioStep> steps;
+    lang::Diagnostics diagnostics; // syntax errors: the scenario does not run
+};
+
+// Names a scenario may use: the project's symbolic names, and the system
+// names when the project has one unit.
+class OperandNames {
+public:
+    explicit OperandNames(const project::Project& project);
+    // The address of a name or address word; an error message otherwise.
+    bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
+
+private:
+    struct Entry {
+        lang::Address address;
+        bool ambiguous = false;
+    };
+    std::vector<std::pair<std::string, Entry>> m_names; // folded name -> address
+    std::vector<int> m_stations;
+};
+
+Scenario parseScenario(std::string_view text, const OperandNames& names);
+
+// "10ms", "2.5s", "2s50" (the language's notation), "1min"; false when malformed.
+bool parseDuration(std::string_view text, std::int64_t& ms);
+
+} // namespace rs::sim

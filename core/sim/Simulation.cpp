@@ -1,0 +1,110 @@
+#include "Simulation.h"
+
+#include <algorithm>
+
+namespace rs::sim {
+
+bool isOutsideValue(const lang::Address& address) {
+    switch (address.kind) {
+    case lang::AddressKind::Input:
+    case lang::AddressKind::InputOutput:
+    case lang::AddressKind::AnalogInput:
+        return true;
+    case lang::AddressKind::AsiInput:
+        return true;
+    case lang::AddressKind::SystemRegister:
+        return address.index >= 40 && address.index <= 46; // voltages and currents
+    default:
+        return false;
+    }
+}
+
+Simulation::Simulation(std::vector<compiler::UnitImage> images, int cycleMs)
+    : m_bus(std::make_unique<UnitEngine::Bus>()), m_cycleMs(cycleMs) {
+    std::sort(images.begin(), images.end(),
+              [](const auto& a, const auto& b) { return a.station < b.station; });
+    std::array<bool, 32> present{};
+    for (auto& image : images) {
+        present[image.station % 32] = true;
+        m_units.push_back(std::make_unique<UnitEngine>(std::move(image), *m_bus));
+    }
+    for (auto& unit : m_units)
+        unit->setPresent(present);
+    publish();
+}
+
+std::vector<int> Simulation::stations() const {
+    std::vector<int> stations;
+    for (const auto& unit : m_units)
+        stations.push_back(unit->image().station);
+    return stations;
+}
+
+UnitEngine* Simulation::unit(int station) {
+    for (auto& unit : m_units)
+        if (unit->image().station == station)
+            return unit.get();
+    return nullptr;
+}
+
+const UnitEngine* Simulation::unit(int station) const {
+    return const_cast<Simulation*>(this)->unit(station);
+}
+
+void Simulation::setRemanent(int station, std::vector<lang::Address> addresses) {
+    m_remanent[static_cast<std::size_t>(station) % 32] = std::move(addresses);
+}
+
+void Simulation::restart() {
+    for (auto& unit : m_units)
+        unit->powerOn(m_remanent[unit->image().station % 32]);
+    m_timeMs = 0;
+    m_scans = 0;
+    publish();
+}
+
+void Simulation::publish() {
+    for (const auto& unit : m_units)
+        (*m_bus)[unit->image().station % 32] = unit->memory();
+}
+
+void Simulation::scan() {
+    for (auto& unit : m_units)
+        unit->scan(m_timeMs, m_cycleMs);
+    publish();
+    ++m_scans;
+    m_timeMs += m_cycleMs;
+}
+
+void Simulation::run(std::int64_t ms) {
+    const std::int64_t end = m_timeMs + ms;
+    while (m_timeMs < end)
+        scan();
+}
+
+std::int64_t Simulation::value(const lang::Address& address) const {
+    const UnitEngine* engine = unit(address.unit);
+    return engine ? engine->read(address) : 0;
+}
+
+void Simulation::set(const lang::Address& address, std::int64_t value) {
+    UnitEngine* engine = unit(address.unit);
+    if (!engine)
+        return;
+    if (isOutsideValue(address))
+        engine->write(address, value);
+    else
+        engine->force(address, value);
+}
+
+void Simulation::force(const lang::Address& address, std::int64_t value) {
+    if (UnitEngine* engine = unit(address.unit))
+        engine->force(address, value);
+}
+
+void Simulation::release(const lang::Address& address) {
+    if (UnitEngine* engine = unit(address.unit))
+        engine->release(address);
+}
+
+} // namespace rs::sim

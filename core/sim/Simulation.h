@@ -1,0 +1,63 @@
+#pragma once
+
+#include "UnitEngine.h"
+
+#include <memory>
+#include <vector>
+
+namespace rs::sim {
+
+// A project's units running together on one simulated bus, on virtual time.
+// Every unit sees the others' global variables as they were at the end of
+// the previous scan cycle, whatever order the units scan in, so a run is the
+// same every time.
+class Simulation {
+public:
+    explicit Simulation(std::vector<compiler::UnitImage> images, int cycleMs = 10);
+
+    // Power on again: virtual time 0, every unit in its first scan.
+    void restart();
+
+    // One scan cycle: every unit scans once, then the bus carries the results.
+    void scan();
+    // Whole scans until at least `ms` of virtual time has passed.
+    void run(std::int64_t ms);
+
+    std::int64_t timeMs() const { return m_timeMs; }
+    std::uint64_t scans() const { return m_scans; }
+    int cycleMs() const { return m_cycleMs; }
+    void setCycleMs(int ms) { m_cycleMs = ms; }
+
+    std::vector<int> stations() const;
+    UnitEngine* unit(int station);
+    const UnitEngine* unit(int station) const;
+
+    // Reads any variable of any unit; S<u>.<s> gives sequence s's active step.
+    std::int64_t value(const lang::Address& address) const;
+    // Inputs (I, IQ buttons, IA, AS-i inputs) and system registers that stand
+    // for measured values (supply voltage, I5 voltage, Q16/Q17 current) take
+    // the value from the next scan on; any other variable is forced.
+    void set(const lang::Address& address, std::int64_t value);
+    void force(const lang::Address& address, std::int64_t value);
+    void release(const lang::Address& address);
+
+    // Remanent variables (R100..R131, M100..M131 as configured) of a unit,
+    // kept by restart().
+    void setRemanent(int station, std::vector<lang::Address> addresses);
+
+private:
+    void publish();
+
+    std::unique_ptr<UnitEngine::Bus> m_bus; // stable address: engines point into it
+    std::vector<std::unique_ptr<UnitEngine>> m_units;
+    std::array<std::vector<lang::Address>, 32> m_remanent;
+    int m_cycleMs;
+    std::int64_t m_timeMs = 0;
+    std::uint64_t m_scans = 0;
+};
+
+// Whether set() gives this variable a value as the outside world would
+// (an input or a measured value) rather than forcing it.
+bool isOutsideValue(const lang::Address& address);
+
+} // namespace rs::sim
