@@ -1,7 +1,9 @@
 #include "ProgramCheck.h"
 
 #include "lang/Printer.h"
+#include "lang/SymbolicName.h"
 
+#include <algorithm>
 #include <set>
 
 namespace rs::compiler {
@@ -39,6 +41,11 @@ Address storage(Address a) {
 
 bool isDoubleWord(const Address& a) {
     return a.kind == AddressKind::DoubleRegister;
+}
+
+bool isSixteenBit(const Address& a) {
+    return a.kind == AddressKind::Register || a.kind == AddressKind::DoubleRegisterLow ||
+           a.kind == AddressKind::DoubleRegisterHigh;
 }
 
 std::string shown(const Operand& operand) {
@@ -79,6 +86,8 @@ private:
         m_timers = 0;
         m_doubleRegisters.clear();
         m_coils.clear();
+        m_latches.clear();
+        m_coilAndLatch.clear();
         m_steps.clear();
         const auto& program = *unit.program;
 
@@ -193,6 +202,9 @@ private:
             break;
         case StatementKind::Set:
         case StatementKind::Reset:
+            if (checkOperand(s.target, Use::WriteBit))
+                noteLatch(s.target);
+            break;
         case StatementKind::Toggle:
             checkOperand(s.target, Use::WriteBit);
             break;
@@ -327,9 +339,13 @@ private:
                 error(e.location, "more than 50 timers in unit " + std::to_string(m_unit->station));
             if (lang::timerKind(e.timer) == lang::TimerKind::OffDelay && m_unit->instructionSet < 3)
                 needsSet3(e.location, "the off-delay timer TOF");
-            if (e.preset.registerOperand)
-                checkOperand(*e.preset.registerOperand, Use::ReadWord);
-            else if (e.preset.hundredths < 1 || e.preset.hundredths > 65535)
+            if (e.preset.registerOperand) {
+                const Operand& preset = *e.preset.registerOperand;
+                if (checkOperand(preset, Use::ReadWord) && !isSixteenBit(preset.address))
+                    error(preset.location, shown(preset) +
+                                               " cannot hold a timer's time: use a register (R) "
+                                               "holding hundredths of a second");
+            } else if (e.preset.hundredths < 1 || e.preset.hundredths > 65535)
                 error(e.location, "a time must be between 0s01 and 655s35, not " +
                                       lang::formatTime(e.preset.hundredths));
             return;
@@ -338,14 +354,14 @@ private:
             if (e.right.operand)
                 checkOperand(*e.right.operand, Use::ReadWord);
             else
-                checkConstant(e.right, true);
+                checkConstant(e.right, !isSixteenBit(e.operand.address));
             return;
         }
     }
 
     void needsSet3(SourceLocation at, const std::string& feature) {
         const int station = m_unit->station;
-        error(at, feature + " needs instruction set 3; unit " + std::to_string(station) +
+        error(at, feature + ": only with instruction set 3; unit " + std::to_string(station) +
                       " uses instruction set 2 (declare '! type_pluto:" + two(station) + "=" +
                       std::string(m_unit->type->name) + ",is3')");
     }
@@ -355,9 +371,15 @@ private:
         const Address& a = operand.address;
         if (!a.valid())
             return false; // an unknown name, reported by name resolution
-        m_used.insert(storage(a));
+        m_used.insert(a);
+        m_usedStorage.insert(storage(a));
         const SourceLocation at = operand.location;
         const std::string name = shown(operand);
+        if (a.unit > 31) {
+            error(at, name + " belongs to unit " + std::to_string(a.unit) +
+                          ", but stations are numbered 0-31");
+            return false;
+        }
         auto owner = m_units.find(a.unit);
         if (owner == m_units.end()) {
             error(at, name + " belongs to unit " + std::to_string(a.unit) +
@@ -378,12 +400,21 @@ private:
             }
         }
         if (!target::hasVariable(*unit.type, a, unit.instructionSet)) {
-            error(at, name + " does not exist on unit " + std::to_string(a.unit) + ", a " +
-                          std::string(unit.type->display) +
-                          (unit.instructionSet < 3 && a.kind == AddressKind::Memory
-                               ? " with instruction set 2"
-                               : ""));
+            const bool moreWithSet3 = a.kind == AddressKind::Memory && unit.instructionSet < 3 &&
+                                      a.index < target::memoryCount(*unit.type, 3);
+            error(at, name + " does not exist on unit " + std::to_string(a.unit) + ", " +
+                          target::withArticle(*unit.type) +
+                          (moreWithSet3 ? " with instruction set 2" : ""));
             return false;
+        }
+        if (operand.isName() && lang::systemName(operand.name, a.unit).valid()) {
+            const target::SystemVariable* system = target::systemVariable(*unit.type, a);
+            if (!system || lang::foldName(system->name) != lang::foldName(operand.name)) {
+                error(at, "'" + operand.name + "' is not a system " +
+                              (a.kind == AddressKind::SystemMemory ? "memory" : "register") +
+                              " of " + target::withArticle(*unit.type));
+                return false;
+            }
         }
         if (auto feature = target::instructionSet3Feature(a);
             feature && m_unit->instructionSet < 3) {
@@ -406,7 +437,7 @@ private:
         if (write && !checkWritable(operand, unit))
             return false;
         checkRegisterHalves(operand);
-        checkTerminal(operand, unit, write);
+        checkTerminal(operand, unit, use);
         return true;
     }
 
@@ -426,7 +457,10 @@ private:
                 return true;
             error(
                 operand.location,
-                name + (system ? " (" + std::string(system->name) + ")" : std::string()) +
+                name +
+                    (system && lang::foldName(operand.name) != lang::foldName(system->name)
+                         ? " (" + std::string(system->name) + ")"
+                         : std::string()) +
                     " is read-only; the program may write only SM_TimerFreeze and SR_PlutoDisplay");
             return false;
         }
@@ -445,13 +479,19 @@ private:
         if (it == m_doubleRegisters.end())
             return;
         const std::string dr = "DR" + std::to_string(a.unit) + "." + std::to_string(low);
-        error(operand.location, lang::toString(Address{AddressKind::Register, a.unit, a.index}) +
-                                    " is half of " + dr + " (used at line " +
-                                    std::to_string(it->second.line) + "); write " + dr +
-                                    (a.index == low ? ".Lo" : ".Hi"));
+        const std::string half = lang::toString(Address{AddressKind::Register, a.unit, a.index});
+        const std::string used = " (used at line " + std::to_string(it->second.line) + ")";
+        if (a.kind == AddressKind::RegisterBit)
+            error(operand.location, lang::toString(a) + " is a bit of " + half +
+                                        ", which is half of " + dr + used +
+                                        "; bits of a double register cannot be addressed");
+        else
+            error(operand.location, half + " is half of " + dr + used + "; write " + dr +
+                                        (a.index == low ? ".Lo" : ".Hi"));
     }
 
-    void checkTerminal(const Operand& operand, const UnitSetup& unit, bool write) {
+    void checkTerminal(const Operand& operand, const UnitSetup& unit, Use use) {
+        const bool write = use == Use::WriteBit || use == Use::WriteWord;
         const Address& a = operand.address;
         const std::string name = shown(operand);
         const auto* type = unit.type;
@@ -466,8 +506,9 @@ private:
             break;
         case AddressKind::AnalogInput:
             if (auto it = unit.analogTerminals.find(a.index); it != unit.analogTerminals.end())
-                return;
-            warnUnconfigured(operand, a);
+                checkAnalogUse(operand, it->second, use);
+            else
+                warnUnconfigured(operand, a);
             return;
         default:
             return;
@@ -496,6 +537,25 @@ private:
                       line + ", not as an illuminated push button (IQ)");
     }
 
+    // An IA terminal is declared either as a value (voltage, current, counter)
+    // or as an ordinary input; the code must use it the same way.
+    void checkAnalogUse(const Operand& operand, const TerminalDeclaration& declared, Use use) {
+        const bool value =
+            std::any_of(declared.options.begin(), declared.options.end(), [](auto& o) {
+                return o == "voltage" || o == "current" || o == "counter_up" ||
+                       o == "counter_updown";
+            });
+        const std::string line = std::to_string(declared.location.line);
+        if (value && use == Use::ReadBit)
+            error(operand.location, shown(operand) + " is declared as a " +
+                                        declared.options.front() + " input at line " + line +
+                                        "; compare its value, as in (" +
+                                        lang::toString(operand.address) + ">0)");
+        else if (!value && use == Use::ReadWord)
+            error(operand.location, shown(operand) + " is declared as an ordinary input at line " +
+                                        line + "; use it as a contact");
+    }
+
     void warnUnconfigured(const Operand& operand, const Address& a) {
         if (!m_options.warnUnconfiguredIo || !m_unconfigured.insert(a).second)
             return;
@@ -507,15 +567,49 @@ private:
     // A coil written in two places fights itself, unless the places are steps
     // of one sequence, of which only one runs at a time.
     void noteCoil(const Operand& target, int sequence, int step) {
-        auto& writes = m_coils[target.address];
+        Address output = target.address;
+        if (output.kind == AddressKind::InputOutput)
+            output.kind = AddressKind::Output; // IQ12 lights the lamp Q12
+        auto& writes = m_coils[output];
         for (const auto& previous : writes)
             if (previous.sequence != sequence || sequence == 0 || previous.step == step) {
                 warning(target.location, shown(target) + " is also written at line " +
                                              std::to_string(previous.at.line) +
-                                             "; the later line wins in each scan");
+                                             "; the write that runs last in each scan wins");
                 break;
             }
         writes.push_back({sequence, step, target.location});
+        if (auto latch = m_latches.find(output); latch != m_latches.end())
+            warnCoilAndLatch(target, latch->second);
+    }
+
+    void noteLatch(const Operand& target) {
+        Address output = target.address;
+        if (output.kind == AddressKind::InputOutput)
+            output.kind = AddressKind::Output;
+        if (!m_latches.count(output))
+            m_latches[output] = target.location;
+        if (auto coil = m_coils.find(output); coil != m_coils.end() && !coil->second.empty())
+            warnCoilAndLatch(target, coil->second.front().at);
+    }
+
+    void warnCoilAndLatch(const Operand& target, SourceLocation other) {
+        if (!m_coilAndLatch.insert(target.address).second)
+            return;
+        warning(target.location, shown(target) +
+                                     " is both a coil and latched with S(...)/R(...) "
+                                     "(see line " +
+                                     std::to_string(other.line) +
+                                     "); the coil sets it every scan the line runs");
+    }
+
+    // A whole register is used when any bit or half of it is; a bit or half
+    // only when it, or the whole register, is.
+    bool isUsed(const Address& a) const {
+        const Address whole = storage(a);
+        if (a == whole)
+            return m_usedStorage.count(whole) != 0;
+        return m_used.count(a) != 0 || m_used.count(whole) != 0;
     }
 
     void warnUnusedNames() {
@@ -523,7 +617,7 @@ private:
             for (const auto& line : lines)
                 if (const auto* declaration = std::get_if<lang::Declaration>(&line.body))
                     if (const auto* name = std::get_if<lang::NameDeclaration>(&declaration->body))
-                        if (!m_used.count(storage(name->variable.address)))
+                        if (!isUsed(name->variable.address))
                             warning(name->nameLocation, "'" + name->name + "' (" +
                                                             lang::toString(name->variable.address) +
                                                             ") is named but never used");
@@ -543,7 +637,10 @@ private:
     std::map<int, SourceLocation> m_doubleRegisters;         // by low register, first use
     std::map<int, std::map<int, const lang::Step*>> m_steps; // sequence -> step -> step
     std::map<Address, std::vector<Write>> m_coils;
-    std::set<Address> m_used;
+    std::map<Address, SourceLocation> m_latches;
+    std::set<Address> m_coilAndLatch;
+    std::set<Address> m_used;        // as used
+    std::set<Address> m_usedStorage; // the registers those belong to
     std::set<Address> m_unconfigured;
 };
 

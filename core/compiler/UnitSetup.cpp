@@ -22,6 +22,10 @@ std::string_view familyKeyword(lang::UnitFamily family) {
     return "id_pluto";
 }
 
+std::string two(int station) {
+    return (station < 10 ? "0" : "") + std::to_string(station);
+}
+
 bool isPulse(const std::string& option) {
     return option == "a_pulse" || option == "b_pulse" || option == "c_pulse";
 }
@@ -81,7 +85,7 @@ public:
         for (const auto& [station, typed] : types) {
             auto unit = m_units.find(station);
             if (unit == m_units.end()) {
-                error(typed.at, "type_pluto:" + std::to_string(station) +
+                error(typed.at, "type_pluto:" + two(station) +
                                     " names a unit that has no id_pluto declaration");
                 continue;
             }
@@ -89,12 +93,10 @@ public:
             if (!info)
                 continue; // the parser has reported the unknown type
             if (info->family != m_families[station]) {
-                error(typed.at, "a " + std::string(info->display) + " is declared with '! " +
-                                    std::string(familyKeyword(info->family)) + ":" +
-                                    (station < 10 ? "0" : "") + std::to_string(station) +
+                error(typed.at, target::withArticle(*info) + " is declared with '! " +
+                                    std::string(familyKeyword(info->family)) + ":" + two(station) +
                                     "=...', not with '! " +
                                     std::string(familyKeyword(m_families[station])) + "'");
-                continue;
             }
             unit->second.type = info;
             if (typed.declaration->instructionSet)
@@ -109,8 +111,7 @@ public:
             auto unit = m_units.find(station);
             if (unit == m_units.end()) {
                 error(at, "code for unit " + std::to_string(station) +
-                              ", which has no '! id_pluto:" + (station < 10 ? "0" : "") +
-                              std::to_string(station) + "=...' declaration");
+                              ", which has no '! id_pluto:" + two(station) + "=...' declaration");
                 continue;
             }
             if (unit->second.program) {
@@ -128,6 +129,10 @@ public:
 private:
     void error(lang::SourceLocation at, std::string message) {
         m_diagnostics.push_back({lang::Severity::Error, at.line, at.column, std::move(message)});
+    }
+
+    void warning(lang::SourceLocation at, std::string message) {
+        m_diagnostics.push_back({lang::Severity::Warning, at.line, at.column, std::move(message)});
     }
 
     bool validStation(int station, lang::SourceLocation at) {
@@ -176,7 +181,7 @@ private:
         const target::UnitTypeInfo& type = *unit.type;
         const lang::Address& a = io.io.address;
         const std::string name = terminalName(a);
-        const std::string typeName(type.display);
+        const std::string typeName = target::withArticle(type);
         auto has = [&](std::string_view option) {
             return std::find(io.options.begin(), io.options.end(), option) != io.options.end();
         };
@@ -217,16 +222,25 @@ private:
         case AddressKind::Input:
             if (!target::contains(type.globalInputs, a.index) &&
                 !target::contains(type.localInputs, a.index)) {
-                error(at, "a " + typeName + " has no input " + name);
+                error(at, typeName + " has no input " + name);
                 return false;
             }
-            return signalRules(true, target::contains(type.configurableTerminals, a.index));
+            if (!signalRules(true, target::contains(type.configurableTerminals, a.index)))
+                return false;
+            // The manual's footnote to I_.10..I_.17.
+            if (has("static") && a.index >= 10 && a.index <= 17)
+                warning(at, name + ",static does not fulfil category 4 (EN 954-1) as a stand-alone "
+                                   "input");
+            return true;
         case AddressKind::Output:
+            if (!target::hasVariable(type, a, unit.instructionSet)) {
+                error(at, typeName + " has no output " + name);
+                return false;
+            }
             if ((a.index == 2 || a.index == 3) && has("no_test_pulse")) {
                 if (!type.testPulsesCanBeDisabled ||
                     !target::contains(type.globalSafetyOutputs, a.index)) {
-                    error(at,
-                          "the test pulses of " + name + " cannot be disabled on a " + typeName);
+                    error(at, "the test pulses of " + name + " cannot be disabled on " + typeName);
                     return false;
                 }
                 if (io.options.size() != 1) {
@@ -244,7 +258,7 @@ private:
             return signalRules(false, false);
         case AddressKind::InputOutput:
             if (!target::contains(type.configurableTerminals, a.index)) {
-                error(at, "a " + typeName + " has no terminal " + name);
+                error(at, typeName + " has no terminal " + name);
                 return false;
             }
             if (pulses != 1 || has("static") || io.options.size() != 1) {
@@ -256,13 +270,13 @@ private:
             return true;
         case AddressKind::AnalogInput: {
             if (!target::contains(type.analogInputs, a.index)) {
-                error(at, "a " + typeName + " has no analogue input " + name);
+                error(at, typeName + " has no analogue input " + name);
                 return false;
             }
             const bool counter = has("counter_up") || has("counter_updown");
             const bool analogue = has("voltage") || has("current");
             if (counter && !target::contains(type.counterInputs, a.index)) {
-                error(at, name + " cannot count pulses on a " + typeName +
+                error(at, name + " cannot count pulses on " + typeName +
                               (type.counterInputs.empty() ? "" : " (only IA0..IA3)"));
                 return false;
             }

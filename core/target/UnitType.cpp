@@ -217,6 +217,13 @@ UnitType baseType(lang::UnitFamily family) {
     return UnitType::A20;
 }
 
+std::string withArticle(const UnitTypeInfo& info) {
+    // Said letter by letter: "an A20", "an O2", "an S46", "a B46", "a D20".
+    const char first = info.display.empty() ? 'B' : info.display.front();
+    return std::string(first == 'A' || first == 'O' || first == 'S' ? "an " : "a ") +
+           std::string(info.display);
+}
+
 int memoryCount(const UnitTypeInfo& info, int instructionSet) {
     return instructionSet >= 3 ? info.memoriesInstructionSet3 : info.memoriesInstructionSet2;
 }

@@ -4,6 +4,7 @@
 #include "lang/Ast.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -75,6 +76,9 @@ const UnitTypeInfo* findUnitType(std::string_view name);
 UnitType baseType(lang::UnitFamily family);
 
 int memoryCount(const UnitTypeInfo& info, int instructionSet);
+
+// "an A20", "a B46": the type's display name with its article, for messages.
+std::string withArticle(const UnitTypeInfo& info);
 
 // Whether the unit type has this variable at all (its own station's numbering).
 bool hasVariable(const UnitTypeInfo& info, const lang::Address& address, int instructionSet);
