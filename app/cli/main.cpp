@@ -1,5 +1,6 @@
 #include "Invocation.h"
 #include "TestVerb.h"
+#include "VarsVerbs.h"
 #include "Verbs.h"
 
 #include <QCoreApplication>
@@ -58,6 +59,10 @@ const rs::cli::Verb kVerbs[] = {
     {"test",
      "test FILE.sps SCENARIO... [--vcd OUT.vcd]  run scenario files on the simulated project",
      test},
+    {"vars",
+     "vars export FILE.sps -o OUT.csv  variable names and descriptions to CSV\n"
+     "  vars import FILE.sps IN.csv -o OUT.sps  names and descriptions from CSV into the project",
+     rs::cli::runVars},
 };
 
 } // namespace

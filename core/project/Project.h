@@ -3,6 +3,7 @@
 #include "lang/Ast.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct Project {
     bool includeSource = false;
     std::map<int, std::string> unitDescriptions;               // by station
     std::map<lang::Address, std::string> variableDescriptions; // by address
+    // The manual's [E]: local variables made visible to the other units (10.2.1).
+    std::set<lang::Address> exportedVariables;
+    // The manual's [R]: registers and memories kept at power off (10.3).
+    std::set<lang::Address> remanentVariables;
 
     // The project name from "$name", empty when the file has none.
     std::string name() const;

@@ -1,6 +1,7 @@
 #include "ProjectFile.h"
 
 #include "Annotation.h"
+#include "RemanentVariables.h"
 #include "lang/NameResolver.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
@@ -103,7 +104,16 @@ private:
                 error(at, "@unit needs a station number 0-31, as in ;@unit 00 description=\"...\"");
                 return false;
             }
-            m_project.unitDescriptions[station] = annotation->value("description");
+            if (std::string description = annotation->value("description"); !description.empty())
+                m_project.unitDescriptions[station] = std::move(description);
+            if (std::string list = annotation->value("remanent"); !list.empty()) {
+                try {
+                    std::set<lang::Address> remanent = parseRemanentList(list, station);
+                    m_project.remanentVariables.insert(remanent.begin(), remanent.end());
+                } catch (const RemanentListError& problem) {
+                    error(at, "@unit remanent: " + problem.message);
+                }
+            }
             return true;
         }
         if (kind == "var") {
@@ -114,7 +124,14 @@ private:
                 error(at, "@var needs an address, as in ;@var I0.0 description=\"...\"");
                 return false;
             }
-            m_project.variableDescriptions[word.address] = annotation->value("description");
+            if (std::string description = annotation->value("description"); !description.empty())
+                m_project.variableDescriptions[word.address] = std::move(description);
+            bool exported = false;
+            if (std::string flag = annotation->value("export");
+                !flag.empty() && !parseFlag(flag, exported))
+                error(at, "export must be yes or no, not '" + flag + "'");
+            if (exported)
+                m_project.exportedVariables.insert(word.address);
             return true;
         }
         if (kind != "network")
@@ -141,17 +158,35 @@ std::string stationText(int station) {
     return (station < 10 ? "0" : "") + std::to_string(station);
 }
 
-// The records of one unit: its description, then its variables' descriptions.
+// The records of one unit: its description and remanent variables, then its
+// variables' descriptions and export marks.
 std::vector<Line> unitRecords(const Project& project, int station) {
     std::vector<Line> lines;
+    Annotation unit{"unit", {stationText(station)}, {}};
     if (auto it = project.unitDescriptions.find(station);
         it != project.unitDescriptions.end() && !it->second.empty())
-        lines.push_back(
-            commentLine({"unit", {stationText(station)}, {{"description", it->second}}}));
+        unit.attributes.emplace_back("description", it->second);
+    if (std::string remanent = formatRemanentList(project.remanentVariables, station);
+        !remanent.empty())
+        unit.attributes.emplace_back("remanent", std::move(remanent));
+    if (!unit.attributes.empty())
+        lines.push_back(commentLine(unit));
+    std::set<lang::Address> variables;
     for (const auto& [address, description] : project.variableDescriptions)
         if (address.unit == station && !description.empty())
-            lines.push_back(
-                commentLine({"var", {lang::toString(address)}, {{"description", description}}}));
+            variables.insert(address);
+    for (const auto& address : project.exportedVariables)
+        if (address.unit == station)
+            variables.insert(address);
+    for (const auto& address : variables) {
+        Annotation record{"var", {lang::toString(address)}, {}};
+        if (auto it = project.variableDescriptions.find(address);
+            it != project.variableDescriptions.end() && !it->second.empty())
+            record.attributes.emplace_back("description", it->second);
+        if (project.exportedVariables.count(address))
+            record.attributes.emplace_back("export", "yes");
+        lines.push_back(commentLine(record));
+    }
     return lines;
 }
 
@@ -202,6 +237,9 @@ std::string writeProject(const Project& project) {
         stations.insert(station);
     for (const auto& [address, text] : project.variableDescriptions)
         stations.insert(address.unit);
+    for (const auto* addresses : {&project.exportedVariables, &project.remanentVariables})
+        for (const auto& address : *addresses)
+            stations.insert(address.unit);
     for (int station : stations) {
         std::vector<Line> records = unitRecords(project, station);
         if (records.empty())

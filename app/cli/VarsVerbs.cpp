@@ -1,0 +1,96 @@
+#include "VarsVerbs.h"
+
+#include "Verbs.h"
+#include "project/ProjectFile.h"
+#include "project/VariableCsv.h"
+
+#include <cstdio>
+#include <optional>
+
+namespace rs::cli {
+
+namespace {
+
+int usage(const char* message) {
+    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", message);
+    return UsageOrIo;
+}
+
+// The project with its diagnostics reported; nothing when it cannot be read
+// (exit 2) or has errors (exit 1), with the status in `status`.
+std::optional<project::Project> loadProject(const QString& path, int& status) {
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        status = UsageOrIo;
+        return std::nullopt;
+    }
+    project::ProjectReadResult read = project::readProject(file.text);
+    const std::string name = path.toStdString();
+    for (const auto& diagnostic : read.diagnostics)
+        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
+    if (!read.ok()) {
+        status = Failed;
+        return std::nullopt;
+    }
+    return std::move(read.project);
+}
+
+int write(const QString& path, std::string_view text) {
+    const QString error = project::writeTextFile(path, text);
+    if (error.isEmpty())
+        return Ok;
+    std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+    return UsageOrIo;
+}
+
+int exportCsv(const QString& projectPath, const QString& out) {
+    int status = Ok;
+    const auto project = loadProject(projectPath, status);
+    if (!project)
+        return status;
+    return write(out, project::exportVariablesCsv(*project, {}));
+}
+
+int importCsv(const QString& projectPath, const QString& csvPath, const QString& out) {
+    int status = Ok;
+    const auto project = loadProject(projectPath, status);
+    if (!project)
+        return status;
+    const project::FileText csv = project::readTextFile(csvPath);
+    if (!csv.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(csv.error));
+        return UsageOrIo;
+    }
+    const project::CsvImport imported = project::importVariablesCsv(*project, csv.text, {});
+    for (const auto& problem : imported.problems)
+        std::fprintf(stderr, "%s:%d: error: %s\n", qPrintable(csvPath), problem.line,
+                     problem.message.c_str());
+    if (!imported.problems.empty())
+        return Failed;
+    return write(out, project::writeProject(imported.project));
+}
+
+} // namespace
+
+int runVars(const Invocation& invocation) {
+    const QStringList& arguments = invocation.arguments;
+    const QString out = invocation.options.value(QStringLiteral("output"));
+    if (arguments.isEmpty())
+        return usage("vars takes export or import");
+    const QString& action = arguments.front();
+    if (action == QLatin1String("export")) {
+        if (arguments.size() != 2 || out.isEmpty())
+            return usage("vars export takes FILE.sps and -o OUT.csv");
+        return exportCsv(arguments[1], out);
+    }
+    if (action == QLatin1String("import")) {
+        if (arguments.size() != 3 || out.isEmpty())
+            return usage("vars import takes FILE.sps, IN.csv and -o OUT.sps");
+        return importCsv(arguments[1], arguments[2], out);
+    }
+    return usage(
+        qPrintable(QStringLiteral("unknown vars action '%1'; use export or import").arg(action)));
+}
+
+} // namespace rs::cli

@@ -1,0 +1,107 @@
+#include "ProjectChange.h"
+
+namespace rs::project {
+
+namespace {
+
+bool sameStations(const std::vector<lang::UnitProgram>& a,
+                  const std::vector<lang::UnitProgram>& b) {
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].station() != b[i].station() || !(a[i].header == b[i].header))
+            return false;
+    return true;
+}
+
+} // namespace
+
+ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
+    return {project.description,          project.includeSource,     project.unitDescriptions,
+            project.variableDescriptions, project.exportedVariables, project.remanentVariables};
+}
+
+void ProjectChange::setRecords(Project& project, const Records& records) {
+    project.description = records.description;
+    project.includeSource = records.includeSource;
+    project.unitDescriptions = records.unitDescriptions;
+    project.variableDescriptions = records.variableDescriptions;
+    project.exportedVariables = records.exportedVariables;
+    project.remanentVariables = records.remanentVariables;
+}
+
+ProjectChange ProjectChange::between(const Project& before, const Project& after) {
+    ProjectChange change;
+    Records was = recordsOf(before);
+    Records is = recordsOf(after);
+    if (was.description != is.description || was.includeSource != is.includeSource ||
+        was.unitDescriptions != is.unitDescriptions ||
+        was.variableDescriptions != is.variableDescriptions ||
+        was.exportedVariables != is.exportedVariables ||
+        was.remanentVariables != is.remanentVariables)
+        change.m_records = Replacement<Records>{std::move(was), std::move(is)};
+    if (!(before.program.preamble == after.program.preamble))
+        change.m_preamble = {before.program.preamble, after.program.preamble};
+
+    const auto& unitsBefore = before.program.units;
+    const auto& unitsAfter = after.program.units;
+    if (!sameStations(unitsBefore, unitsAfter)) {
+        change.m_units = {unitsBefore, unitsAfter};
+        return change;
+    }
+    for (std::size_t i = 0; i < unitsBefore.size(); ++i) {
+        const auto& was = unitsBefore[i];
+        const auto& is = unitsAfter[i];
+        UnitChange unit;
+        unit.index = i;
+        if (!(was.declarations == is.declarations))
+            unit.declarations = {was.declarations, is.declarations};
+        if (was.steps.size() != is.steps.size()) {
+            unit.allSteps = {was.steps, is.steps};
+        } else {
+            for (std::size_t s = 0; s < was.steps.size(); ++s)
+                if (!(was.steps[s] == is.steps[s]))
+                    unit.steps.push_back({s, {was.steps[s], is.steps[s]}});
+        }
+        if (unit.declarations || unit.allSteps || !unit.steps.empty())
+            change.m_unitChanges.push_back(std::move(unit));
+    }
+    return change;
+}
+
+bool ProjectChange::empty() const {
+    return !m_records && !m_preamble && !m_units && m_unitChanges.empty();
+}
+
+void ProjectChange::apply(Project& project) const {
+    change(project, true);
+}
+
+void ProjectChange::revert(Project& project) const {
+    change(project, false);
+}
+
+void ProjectChange::change(Project& project, bool forward) const {
+    auto pick = [forward](const auto& replacement) -> const auto& {
+        return forward ? replacement.after : replacement.before;
+    };
+    if (m_records)
+        setRecords(project, pick(*m_records));
+    if (m_preamble)
+        project.program.preamble = pick(*m_preamble);
+    if (m_units) {
+        project.program.units = pick(*m_units);
+        return;
+    }
+    for (const auto& unit : m_unitChanges) {
+        auto& program = project.program.units.at(unit.index);
+        if (unit.declarations)
+            program.declarations = pick(*unit.declarations);
+        if (unit.allSteps)
+            program.steps = pick(*unit.allSteps);
+        for (const auto& [index, step] : unit.steps)
+            program.steps.at(index) = pick(step);
+    }
+}
+
+} // namespace rs::project

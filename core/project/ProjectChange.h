@@ -1,0 +1,55 @@
+#pragma once
+
+#include "Project.h"
+
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace rs::project {
+
+// The difference between two states of a project, as an undo step keeps it:
+// only the parts that differ (the preamble, one unit's declarations, one
+// step), both ways, so that a long undo history of small edits stays small.
+class ProjectChange {
+public:
+    static ProjectChange between(const Project& before, const Project& after);
+
+    bool empty() const;
+    // Turns the project as it was before into the project after, and back.
+    void apply(Project& project) const;
+    void revert(Project& project) const;
+
+private:
+    template <typename T> struct Replacement {
+        T before;
+        T after;
+    };
+    // What the language has no words for: descriptions, options, attributes.
+    struct Records {
+        std::string description;
+        bool includeSource = false;
+        std::map<int, std::string> unitDescriptions;
+        std::map<lang::Address, std::string> variableDescriptions;
+        std::set<lang::Address> exportedVariables;
+        std::set<lang::Address> remanentVariables;
+    };
+    struct UnitChange {
+        std::size_t index = 0;
+        std::optional<Replacement<std::vector<lang::Line>>> declarations;
+        std::optional<Replacement<std::vector<lang::Step>>> allSteps; // steps added or removed
+        std::vector<std::pair<std::size_t, Replacement<lang::Step>>> steps;
+    };
+
+    static Records recordsOf(const Project& project);
+    static void setRecords(Project& project, const Records& records);
+    void change(Project& project, bool forward) const;
+
+    std::optional<Replacement<Records>> m_records;
+    std::optional<Replacement<std::vector<lang::Line>>> m_preamble;
+    std::optional<Replacement<std::vector<lang::UnitProgram>>> m_units; // units added or removed
+    std::vector<UnitChange> m_unitChanges;
+};
+
+} // namespace rs::project

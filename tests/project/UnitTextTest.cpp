@@ -1,0 +1,102 @@
+#include "project/UnitText.h"
+#include "ProjectText.h"
+#include "project/ProjectFile.h"
+#include "project/VariableTable.h"
+
+#include <gtest/gtest.h>
+
+using namespace rs;
+
+namespace {
+
+const char* kTwoUnits = "$name Two\n"
+                        "\n"
+                        "! id_pluto:00=000000000000\n"
+                        ";@var M0.0 description=\"Muting\"\n"
+                        "! id_pluto:01=000000000000\n"
+                        "! I0.12=EStop\n"
+                        "\n"
+                        "! pgm_pluto:00\n"
+                        "! M0.0=Muting\n"
+                        "S0.0_0\n"
+                        "Q0.2 = EStop * Muting\n"
+                        "\n"
+                        "! pgm_pluto:01\n"
+                        "S1.0_0\n"
+                        "Q1.2 = EStop\n";
+
+} // namespace
+
+TEST(UnitText, IsTheUnitsPartOfTheProjectText) {
+    const project::Project p = projectFrom(kTwoUnits);
+    EXPECT_EQ(project::unitText(p, 0), "! pgm_pluto:00\n"
+                                       "! M0.0=Muting\n"
+                                       "S0.0_0\n"
+                                       "Q0.2 = EStop * Muting\n");
+    EXPECT_EQ(project::unitText(p, 1), "! pgm_pluto:01\nS1.0_0\nQ1.2 = EStop\n");
+    EXPECT_EQ(project::unitText(p, 7), "! pgm_pluto:07\n");
+}
+
+TEST(UnitText, ReadingItBackReplacesOnlyThatUnit) {
+    const project::Project p = projectFrom(kTwoUnits);
+    const auto read = project::readUnitText(p, 0,
+                                            "! pgm_pluto:00\n"
+                                            "! M0.0=Muting\n"
+                                            ";@var M0.1 description=\"Fault\"\n"
+                                            "! M0.1=Fault\n"
+                                            "s0.0_0\n"
+                                            "q0.2 = estop * muting * /fault\n");
+    ASSERT_TRUE(read.ok()) << read.diagnostics.front().message;
+    EXPECT_EQ(textOf(read.project), "$name Two\n"
+                                    "\n"
+                                    "! id_pluto:00=000000000000\n"
+                                    ";@var M0.0 description=\"Muting\"\n"
+                                    ";@var M0.1 description=\"Fault\"\n"
+                                    "! id_pluto:01=000000000000\n"
+                                    "! I0.12=EStop\n"
+                                    "\n"
+                                    "! pgm_pluto:00\n"
+                                    "! M0.0=Muting\n"
+                                    "! M0.1=Fault\n"
+                                    "S0.0_0\n"
+                                    "Q0.2 = EStop * Muting * /Fault\n"
+                                    "\n"
+                                    "! pgm_pluto:01\n"
+                                    "S1.0_0\n"
+                                    "Q1.2 = EStop\n");
+    EXPECT_TRUE(isStable(read.project));
+    // Its own text gives the project back.
+    const auto same = project::readUnitText(p, 1, project::unitText(p, 1));
+    ASSERT_TRUE(same.ok());
+    EXPECT_TRUE(same.project == p);
+    EXPECT_EQ(textOf(same.project), textOf(p));
+}
+
+TEST(UnitText, ErrorsAreReportedAtTheirLineInTheUnitsText) {
+    const project::Project p = projectFrom(kTwoUnits);
+    const auto read = project::readUnitText(p, 1,
+                                            "! pgm_pluto:01\n"
+                                            "S1.0_0\n"
+                                            "Q1.2 = EStop +\n"
+                                            "Q1.3 = Muting\n");
+    ASSERT_EQ(read.diagnostics.size(), 2u);
+    EXPECT_EQ(read.diagnostics[0].line, 3);
+    EXPECT_EQ(read.diagnostics[1].line, 4); // Muting is unit 0's own name
+    EXPECT_EQ(read.diagnostics[1].column, 8);
+    EXPECT_FALSE(read.ok());
+    EXPECT_TRUE(read.project == p);
+}
+
+TEST(UnitText, TheTextIsOneUnitsCodeAndNothingElse) {
+    const project::Project p = projectFrom(kTwoUnits);
+    auto read = project::readUnitText(p, 1, "S1.0_0\nQ1.2 = EStop\n");
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.diagnostics.front().line, 1);
+    read = project::readUnitText(p, 1, "! pgm_pluto:00\nS0.0_0\n");
+    ASSERT_FALSE(read.ok());
+    read = project::readUnitText(p, 1, "! pgm_pluto:01\nS1.0_0\n! pgm_pluto:02\nS2.0_0\n");
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.diagnostics.back().line, 3);
+    read = project::readUnitText(p, 1, "\n\n! pgm_pluto:01\nS1.0_0\n");
+    EXPECT_TRUE(read.ok());
+}
