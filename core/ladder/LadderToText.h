@@ -1,0 +1,24 @@
+#pragma once
+
+#include "Network.h"
+
+#include <vector>
+
+namespace rs::ladder {
+
+lang::Expr toExpr(const Circuit& circuit);
+
+// The statements of a rung, one per output, each with its own copy of the
+// condition and the output's trailing comment.
+std::vector<lang::Line> toLines(const Rung& rung);
+
+// The lines of a step. A network keeps the record it was read with (with its
+// comment brought up to date). A network without one gets a record when the
+// text needs it to read back as the same network: when it has a comment, not
+// exactly one statement, or starts with a comment line, or when a network
+// before it in the step has a record. In a step where none had a record,
+// once one network needs a record every network gets one
+// (docs/file-format.md).
+std::vector<lang::Line> toLines(const StepLadder& step);
+
+} // namespace rs::ladder

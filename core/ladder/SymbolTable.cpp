@@ -1,0 +1,27 @@
+#include "SymbolTable.h"
+
+namespace rs::ladder {
+
+SymbolTable SymbolTable::of(const lang::Document& document, int station) {
+    SymbolTable table;
+    table.declare(document.preamble);
+    for (const auto& unit : document.units)
+        if (unit.station() == station)
+            table.declare(unit.declarations);
+    return table;
+}
+
+const std::string& SymbolTable::nameOf(const lang::Address& address) const {
+    static const std::string none;
+    auto found = m_names.find(address);
+    return found == m_names.end() ? none : found->second;
+}
+
+void SymbolTable::declare(const std::vector<lang::Line>& lines) {
+    for (const auto& line : lines)
+        if (const auto* declaration = std::get_if<lang::Declaration>(&line.body))
+            if (const auto* name = std::get_if<lang::NameDeclaration>(&declaration->body))
+                m_names.emplace(name->variable.address, name->name);
+}
+
+} // namespace rs::ladder

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "Network.h"
+
+// The language's syntax tree in ladder form. Together with LadderToText.h
+// this is a pair of inverse functions: converting a step to ladder and back
+// gives the same lines, so the canonical text is the same.
+namespace rs::ladder {
+
+// A parsed condition (OR and AND flattened, no negated group) as a circuit.
+Circuit toCircuit(const lang::Expr& expr);
+
+Output toOutput(const lang::Statement& statement, const std::optional<std::string>& comment);
+
+Rung toRung(const lang::Statement& statement, const std::optional<std::string>& comment);
+
+// The networks of a step, grouped as project::networksOf groups them. In a
+// network that a ";@network" record groups, statements that follow each other
+// with the same condition and can share it (see canJoin) are one rung with
+// several outputs. A malformed record is a comment like any other.
+StepLadder toLadder(const lang::Step& step);
+
+} // namespace rs::ladder

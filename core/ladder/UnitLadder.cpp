@@ -1,0 +1,21 @@
+#include "UnitLadder.h"
+
+#include "TextToLadder.h"
+
+namespace rs::ladder {
+
+std::vector<StepPage> unitLadder(const lang::UnitProgram& unit) {
+    std::vector<StepPage> pages;
+    std::uint32_t statement = 0;
+    for (const auto& step : unit.steps) {
+        StepPage page{step.address, toLadder(step), {}};
+        for (const auto& network : page.ladder.networks) {
+            page.firstStatements.push_back(statement);
+            statement += static_cast<std::uint32_t>(statementCount(network));
+        }
+        pages.push_back(std::move(page));
+    }
+    return pages;
+}
+
+} // namespace rs::ladder

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "Network.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rs::ladder {
+
+// The ladder of one step of a unit's code, with the number each network's
+// first statement has in the unit (file order, from 0, as the compiler and
+// the simulator number statements).
+struct StepPage {
+    lang::StepAddress address;
+    StepLadder ladder;
+    std::vector<std::uint32_t> firstStatements; // one per network
+};
+
+// Every step of the unit's code in file order.
+std::vector<StepPage> unitLadder(const lang::UnitProgram& unit);
+
+} // namespace rs::ladder
