@@ -1,0 +1,34 @@
+#pragma once
+
+#include <QColor>
+#include <QFont>
+#include <QPen>
+
+namespace rs::render {
+
+// Colours, line weights and fonts of the drawing. Conducting wires and
+// elements differ from the others in colour and in line weight, so the state
+// reads without colour too (in print, for colour-blind users).
+struct LadderStyle {
+    QColor background{255, 255, 255};
+    QColor ink{32, 32, 32};            // wires, rails, symbols
+    QColor powered{0, 150, 60};        // conducting wires and elements
+    QColor poweredFill{200, 240, 210}; // inside a conducting contact, coil or box
+    QColor nameInk{20, 40, 120};       // symbolic names
+    QColor addressInk{70, 70, 70};     // addresses, presets
+    QColor commentInk{90, 90, 90};     // comments among and beside the rungs
+    qreal lineWidth = 1.5;
+    qreal poweredLineWidth = 4;
+    qreal railWidth = 3;
+    qreal poweredRailWidth = 5;
+    QString fontFamily = QStringLiteral("DejaVu Sans");
+    int labelPixelSize = 11; // names, addresses, comments
+    int textPixelSize = 12;  // inside boxes and coils
+    int titlePixelSize = 13;
+
+    QPen wirePen(bool conducting) const;
+    QPen railPen(bool conducting) const;
+    QFont font(int pixelSize, bool bold = false, bool italic = false) const;
+};
+
+} // namespace rs::render

@@ -1,0 +1,34 @@
+#include "PowerSnapshot.h"
+
+#include <algorithm>
+
+namespace rs::render {
+
+bool PowerSnapshot::ran(std::uint32_t statement) const {
+    return statements.count(statement) != 0;
+}
+
+bool PowerSnapshot::conducts(std::uint32_t statement, std::uint16_t element) const {
+    auto found = statements.find(statement);
+    if (found == statements.end())
+        return false;
+    if (element == 0)
+        return found->second.energised;
+    return found->second.conducting.count(element) != 0;
+}
+
+bool PowerSnapshot::powers(const ladder::PowerFeed& feed) const {
+    switch (feed.kind) {
+    case ladder::PowerFeed::Kind::None:
+        return false;
+    case ladder::PowerFeed::Kind::Rail:
+        return ran(feed.statement);
+    case ladder::PowerFeed::Kind::Elements:
+        return std::any_of(feed.elements.begin(), feed.elements.end(), [&](std::uint16_t element) {
+            return conducts(feed.statement, element);
+        });
+    }
+    return false;
+}
+
+} // namespace rs::render

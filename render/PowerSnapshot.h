@@ -1,0 +1,34 @@
+#pragma once
+
+#include "ladder/Layout.h"
+
+#include <cstdint>
+#include <map>
+#include <set>
+
+namespace rs::render {
+
+// What one scan did in one statement.
+struct StatementPower {
+    // The elements with power at their right side, numbered as the compiler
+    // numbers them (ladder::ElementLayout::element). Group numbers may be
+    // listed too; the drawing does not need them.
+    std::set<std::uint16_t> conducting;
+    bool energised = false; // the output was driven
+};
+
+// The power flow of one scan of a unit, as the simulator publishes it: a
+// statement that is not listed did not run (its step was not active). The
+// drawing only restyles what the snapshot says; it never evaluates logic.
+struct PowerSnapshot {
+    std::map<std::uint32_t, StatementPower> statements; // by statement number in the unit
+
+    bool ran(std::uint32_t statement) const;
+    // Element 0 is the output: it conducts when it is energised.
+    bool conducts(std::uint32_t statement, std::uint16_t element) const;
+    // A wire carries power when its feed does: the left rail of a statement
+    // that ran, or any of the elements whose right side it joins.
+    bool powers(const ladder::PowerFeed& feed) const;
+};
+
+} // namespace rs::render
