@@ -1,4 +1,5 @@
 #include "Invocation.h"
+#include "LadderVerbs.h"
 #include "TestVerb.h"
 #include "VarsVerbs.h"
 #include "Verbs.h"
@@ -63,12 +64,19 @@ const rs::cli::Verb kVerbs[] = {
      "vars export FILE.sps -o OUT.csv  variable names and descriptions to CSV\n"
      "  vars import FILE.sps IN.csv -o OUT.sps  names and descriptions from CSV into the project",
      rs::cli::runVars},
+    {"ladder",
+     "ladder FILE.sps --unit U [--sequence S --step N] --network K -o OUT.svg|.png\n"
+     "                                 draw one network as the editor does",
+     rs::cli::runLadder},
+    {"roundtrip",
+     "roundtrip FILE.sps             every network to the ladder model and back; print the text",
+     rs::cli::runRoundtrip},
 };
 
 } // namespace
 
 int main(int argc, char* argv[]) {
-    QCoreApplication app(argc, argv);
+    const auto app = rs::cli::makeApplication(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("rungsmith-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
 
@@ -87,12 +95,22 @@ int main(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("vcd"),
                       QStringLiteral("test: write a trace of the run that GTKWave opens."),
                       QStringLiteral("OUT.vcd")});
+    parser.addOption({QStringLiteral("unit"), QStringLiteral("ladder: the unit's station number."),
+                      QStringLiteral("U")});
+    parser.addOption({QStringLiteral("sequence"),
+                      QStringLiteral("ladder: the sequence (with --step; default the PLC code)."),
+                      QStringLiteral("S")});
+    parser.addOption({QStringLiteral("step"), QStringLiteral("ladder: the step in the sequence."),
+                      QStringLiteral("N")});
+    parser.addOption({QStringLiteral("network"),
+                      QStringLiteral("ladder: the network's number in its step, from 1."),
+                      QStringLiteral("K")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
-    if (!parser.parse(app.arguments()))
+    if (!parser.parse(app->arguments()))
         return usage(parser.errorText());
     if (parser.isSet(help)) {
         std::fputs(qPrintable(parser.helpText()), stdout);

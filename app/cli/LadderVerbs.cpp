@@ -1,0 +1,159 @@
+#include "LadderVerbs.h"
+
+#include "NetworkPicture.h"
+#include "Verbs.h"
+#include "ladder/LadderToText.h"
+#include "ladder/Layout.h"
+#include "ladder/TextToLadder.h"
+#include "ladder/UnitLadder.h"
+#include "project/ProjectFile.h"
+
+#include <QGuiApplication>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+namespace rs::cli {
+
+namespace {
+
+int usage(const QString& message) {
+    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
+    return UsageOrIo;
+}
+
+int failure(const QString& path, const QString& message) {
+    std::fprintf(stderr, "rungsmith-cli: %s: %s\n", qPrintable(path), qPrintable(message));
+    return Failed;
+}
+
+// A whole number option, or nothing when it is absent or not a number in range.
+std::optional<int> number(const Invocation& invocation, const char* name, int low, int high) {
+    bool ok = false;
+    const int value = invocation.options.value(QLatin1String(name)).toInt(&ok);
+    if (!ok || value < low || value > high)
+        return std::nullopt;
+    return value;
+}
+
+struct ReadProject {
+    project::Project project;
+    int status = Ok; // UsageOrIo when unreadable, Failed on errors
+};
+
+ReadProject read(const QString& path) {
+    project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        return {{}, UsageOrIo};
+    }
+    project::ProjectReadResult result = project::readProject(file.text);
+    const std::string name = path.toStdString();
+    for (const auto& diagnostic : result.diagnostics)
+        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
+    return {std::move(result.project), result.ok() ? Ok : Failed};
+}
+
+QString stepName(const lang::StepAddress& step) {
+    return QString::fromStdString(lang::toString(step));
+}
+
+int firstDifferingLine(const std::string& a, const std::string& b) {
+    const auto mismatch = std::mismatch(a.begin(), a.end(), b.begin(), b.end()).first;
+    return 1 + static_cast<int>(std::count(a.begin(), mismatch, '\n'));
+}
+
+} // namespace
+
+int runLadder(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("ladder takes exactly one FILE.sps"));
+    const auto unit = number(invocation, "unit", 0, 31);
+    if (!unit)
+        return usage(QStringLiteral("ladder needs --unit U, a station number 0-31"));
+    const auto networkNumber = number(invocation, "network", 1, 1 << 30);
+    if (!networkNumber)
+        return usage(QStringLiteral("ladder needs --network K, a network number from 1"));
+    const bool inSequence = invocation.options.isSet(QStringLiteral("sequence")) ||
+                            invocation.options.isSet(QStringLiteral("step"));
+    const auto sequence = inSequence ? number(invocation, "sequence", 0, 9) : 0;
+    const auto stepNumber = inSequence ? number(invocation, "step", 0, 254) : 0;
+    if (!sequence || !stepNumber)
+        return usage(QStringLiteral("--sequence S (0-9) and --step N (0-254) go together"));
+    const QString output = invocation.options.value(QStringLiteral("output"));
+    if (!render::isPictureFileName(output))
+        return usage(QStringLiteral("ladder needs -o OUT.svg or -o OUT.png"));
+
+    const QString& path = invocation.arguments[0];
+    ReadProject loaded = read(path);
+    if (loaded.status != Ok)
+        return loaded.status;
+    const lang::Document& document = loaded.project.program;
+    const auto program =
+        std::find_if(document.units.begin(), document.units.end(),
+                     [&](const lang::UnitProgram& p) { return p.station() == *unit; });
+    if (program == document.units.end())
+        return failure(path, QStringLiteral("unit %1 has no code").arg(*unit));
+    const lang::StepAddress wanted{*unit, *sequence, *stepNumber};
+    const auto pages = ladder::unitLadder(*program);
+    const auto page = std::find_if(pages.begin(), pages.end(),
+                                   [&](const ladder::StepPage& p) { return p.address == wanted; });
+    if (page == pages.end())
+        return failure(path,
+                       QStringLiteral("unit %1 has no step %2").arg(*unit).arg(stepName(wanted)));
+    const auto networks = static_cast<int>(page->ladder.networks.size());
+    if (*networkNumber > networks)
+        return failure(path, QStringLiteral("step %1 has %2 network(s), not %3")
+                                 .arg(stepName(wanted))
+                                 .arg(networks)
+                                 .arg(*networkNumber));
+
+    const auto index = static_cast<std::size_t>(*networkNumber - 1);
+    const ladder::SymbolTable symbols = ladder::SymbolTable::of(document, *unit);
+    ladder::LayoutContext context;
+    context.number = *networkNumber;
+    context.firstStatement = page->firstStatements[index];
+    context.symbols = &symbols;
+    const ladder::NetworkLayout layout =
+        ladder::layoutNetwork(page->ladder.networks[index], context);
+    const QString title = QStringLiteral("%1 network %2").arg(stepName(wanted)).arg(*networkNumber);
+    const QString error = render::writeNetworkPicture(output, layout, {}, nullptr, title);
+    if (!error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+        return UsageOrIo;
+    }
+    return Ok;
+}
+
+int runRoundtrip(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("roundtrip takes exactly one FILE.sps"));
+    const QString& path = invocation.arguments[0];
+    ReadProject loaded = read(path);
+    if (loaded.status != Ok)
+        return loaded.status;
+    const std::string canonical = project::writeProject(loaded.project);
+    for (auto& unit : loaded.project.program.units)
+        for (auto& step : unit.steps)
+            step.lines = ladder::toLines(ladder::toLadder(step));
+    const std::string text = project::writeProject(loaded.project);
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    if (text != canonical)
+        return failure(path, QStringLiteral("line %1 changed on the way through the ladder model")
+                                 .arg(firstDifferingLine(canonical, text)));
+    return Ok;
+}
+
+std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
+    const bool draws = std::any_of(argv + 1, argv + argc, [](const char* argument) {
+        return !std::strcmp(argument, "ladder");
+    });
+    if (!draws)
+        return std::make_unique<QCoreApplication>(argc, argv);
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
+
+} // namespace rs::cli

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "Invocation.h"
+
+#include <QCoreApplication>
+
+#include <memory>
+
+namespace rs::cli {
+
+// `ladder FILE.sps --unit U [--sequence S --step N] --network K -o OUT.svg|.png`:
+// draws one network of a step (the unit's PLC code S<U>.0_0 by default) as
+// the editor does. Networks are numbered from 1 within their step.
+int runLadder(const Invocation& invocation);
+
+// `roundtrip FILE.sps`: turns every network into the ladder model and back
+// and prints the project text. Exit 1 when the project has errors, or when
+// the text differs from the canonical text (which would be a bug: the
+// differing line is reported).
+int runRoundtrip(const Invocation& invocation);
+
+// Drawing text needs fonts, and fonts need a QGuiApplication, which then
+// runs on the offscreen platform so that no display is needed. The other
+// verbs need only a QCoreApplication.
+std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv);
+
+} // namespace rs::cli
