@@ -14,11 +14,24 @@ using ladder::Symbol;
 
 constexpr qreal kBubbleRadius = 4; // the circle that negates a box's output
 
+// A font with its metrics, made once per network rather than once per label.
+struct TextFont {
+    explicit TextFont(const QFont& f) : font(f), metrics(f) {}
+    QFont font;
+    QFontMetricsF metrics;
+};
+
 class Painter {
 public:
     Painter(QPainter& painter, const ladder::NetworkLayout& layout, const LadderStyle& style,
             const PowerSnapshot* power)
-        : m_painter(painter), m_layout(layout), m_style(style), m_power(power) {}
+        : m_painter(painter), m_layout(layout), m_style(style), m_power(power),
+          m_symbolFont(style.font(style.textPixelSize, true)),
+          m_nameFont(style.font(style.labelPixelSize, true)),
+          m_addressFont(style.font(style.labelPixelSize)),
+          m_titleFont(style.font(style.titlePixelSize, true)),
+          m_commentFont(style.font(style.titlePixelSize)),
+          m_asideFont(style.font(style.labelPixelSize, false, true)) {}
 
     void run() {
         m_painter.save();
@@ -101,8 +114,8 @@ private:
             box(r, e.text, e.negated);
             break;
         }
-        label(e.nameRect, e.name, m_style.nameInk, true);
-        label(e.addressRect, e.address, m_style.addressInk, false);
+        label(e.nameRect, e.name, m_style.nameInk, m_nameFont);
+        label(e.addressRect, e.address, m_style.addressInk, m_addressFont);
     }
 
     // -| |-, with a slash when normally closed, or the edge's letter.
@@ -141,43 +154,48 @@ private:
     }
 
     void symbolText(const QRectF& r, const QString& text) {
-        m_painter.setFont(m_style.font(m_style.textPixelSize, true));
         m_painter.setPen(m_style.ink);
-        const QFontMetricsF metrics(m_painter.font());
-        m_painter.drawText(r, Qt::AlignCenter, metrics.elidedText(text, Qt::ElideRight, r.width()));
+        drawText(m_symbolFont, r, Qt::AlignCenter, text, Qt::ElideRight);
     }
 
-    void label(const QRectF& r, const QString& text, const QColor& colour, bool bold) {
+    void label(const QRectF& r, const QString& text, const QColor& colour, const TextFont& font) {
         if (text.isEmpty())
             return;
-        m_painter.setFont(m_style.font(m_style.labelPixelSize, bold));
         m_painter.setPen(colour);
-        const QFontMetricsF metrics(m_painter.font());
-        m_painter.drawText(r, Qt::AlignCenter,
-                           metrics.elidedText(text, Qt::ElideMiddle, r.width()));
+        drawText(font, r, Qt::AlignCenter, text, Qt::ElideMiddle);
     }
 
     void drawText(const ladder::TextLayout& t) {
         using Role = ladder::TextLayout::Role;
-        const bool title = t.role == Role::Title;
         const bool aside = t.role == Role::Note || t.role == Role::OutputComment;
-        m_painter.setFont(m_style.font(title || t.role == Role::Comment ? m_style.titlePixelSize
-                                                                        : m_style.labelPixelSize,
-                                       title, aside));
+        const TextFont& font = t.role == Role::Title     ? m_titleFont
+                               : t.role == Role::Comment ? m_commentFont
+                                                         : m_asideFont;
         m_painter.setPen(aside ? m_style.commentInk : m_style.ink);
         // The layout sizes text from an average character width; a line may
         // use the room up to the picture's right edge before it is shortened.
         QRectF room = t.rect;
         room.setRight(std::max(t.rect.right(), m_layout.size.width() - m_layout.metrics.margin));
-        const QFontMetricsF metrics(m_painter.font());
-        m_painter.drawText(room, Qt::AlignLeft | Qt::AlignVCenter,
-                           metrics.elidedText(t.text, Qt::ElideRight, room.width()));
+        drawText(font, room, Qt::AlignLeft | Qt::AlignVCenter, t.text, Qt::ElideRight);
+    }
+
+    // Text that does not fit is shortened with an ellipsis, never clipped.
+    void drawText(const TextFont& font, const QRectF& r, int alignment, const QString& text,
+                  Qt::TextElideMode elide) {
+        m_painter.setFont(font.font);
+        m_painter.drawText(r, alignment, font.metrics.elidedText(text, elide, r.width()));
     }
 
     QPainter& m_painter;
     const ladder::NetworkLayout& m_layout;
     const LadderStyle& m_style;
     const PowerSnapshot* m_power;
+    const TextFont m_symbolFont;
+    const TextFont m_nameFont;
+    const TextFont m_addressFont;
+    const TextFont m_titleFont;
+    const TextFont m_commentFont;
+    const TextFont m_asideFont;
 };
 
 } // namespace
