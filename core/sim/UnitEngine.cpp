@@ -48,6 +48,38 @@ bool flashing(int memory, std::int64_t t) {
     }
 }
 
+// runStep's handlers: the image's ops, with the common cases split out so that
+// their code has no branches on the data (a branch that depends on the data
+// mispredicts whenever the data changes, and that is most of an interpreter's time).
+enum Handler : std::uint8_t {
+    HRung,
+    HContactByte,
+    HContact,
+    HEdge,
+    HTimer,
+    HLoadA,
+    HLoadB,
+    HEqual,
+    HGreater,
+    HLess,
+    HGreaterEqual,
+    HLessEqual,
+    HBranchOpen,
+    HBranchNext,
+    HBranchClose,
+    HCoilByte,
+    HCoil,
+    HSetByte,
+    HSet,
+    HResetByte,
+    HReset,
+    HToggle,
+    HJump,
+    HSequenceReset,
+    HArith,
+    HandlerCount
+};
+
 bool isWordKind(AddressKind kind) {
     switch (kind) {
     case AddressKind::Register:
@@ -106,35 +138,135 @@ WordRef UnitEngine::decodeWord(const lang::Address& address) {
     return wordRef(m_memory, address);
 }
 
+void UnitEngine::Decoded::pointAt(const BitRef& target) {
+    refKind = static_cast<std::uint8_t>(target.kind);
+    bit = static_cast<std::uint8_t>(target.bit);
+    ref = target.kind == BitRef::Kind::Byte          ? static_cast<void*>(target.byte)
+          : target.kind == BitRef::Kind::RegisterBit ? static_cast<void*>(target.word)
+                                                     : static_cast<void*>(target.wide);
+}
+
+void UnitEngine::Decoded::pointAt(const WordRef& target) {
+    refKind = static_cast<std::uint8_t>(target.kind);
+    ref = target.kind == WordRef::Kind::Wide ? static_cast<void*>(target.wide)
+                                             : static_cast<void*>(target.word);
+}
+
+bool UnitEngine::Decoded::readBit() const {
+    switch (static_cast<BitRef::Kind>(refKind)) {
+    case BitRef::Kind::Byte:
+        return *static_cast<const std::uint8_t*>(ref) != 0;
+    case BitRef::Kind::RegisterBit:
+        return (static_cast<std::uint16_t>(*static_cast<const std::int16_t*>(ref)) >> bit) & 1u;
+    case BitRef::Kind::Analog:
+        return *static_cast<const std::int32_t*>(ref) != 0;
+    case BitRef::Kind::None:
+        break;
+    }
+    return false;
+}
+
+void UnitEngine::Decoded::writeBit(bool value) const {
+    BitRef target;
+    target.kind = static_cast<BitRef::Kind>(refKind);
+    target.byte = static_cast<std::uint8_t*>(ref);
+    target.word = static_cast<std::int16_t*>(ref);
+    target.wide = static_cast<std::int32_t*>(ref);
+    target.bit = bit;
+    target.write(value);
+}
+
+std::int64_t UnitEngine::Decoded::readWord() const {
+    WordRef source;
+    source.kind = static_cast<WordRef::Kind>(refKind);
+    source.word = static_cast<std::int16_t*>(ref);
+    source.wide = static_cast<std::int32_t*>(ref);
+    return source.read();
+}
+
+void UnitEngine::Decoded::writeWord(std::int64_t value) const {
+    WordRef target;
+    target.kind = static_cast<WordRef::Kind>(refKind);
+    target.word = static_cast<std::int16_t*>(ref);
+    target.wide = static_cast<std::int32_t*>(ref);
+    target.write(value);
+}
+
+bool UnitEngine::Decoded::wideWord() const {
+    return static_cast<WordRef::Kind>(refKind) != WordRef::Kind::Register;
+}
+
+std::uint8_t UnitEngine::handlerFor(const Decoded& d) {
+    const bool byte = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+    switch (d.op) {
+    case Op::Rung:
+        return HRung;
+    case Op::Contact:
+        return byte ? HContactByte : HContact;
+    case Op::Edge:
+        return HEdge;
+    case Op::Timer:
+        return HTimer;
+    case Op::LoadA:
+        return HLoadA;
+    case Op::LoadB:
+        return HLoadB;
+    case Op::Compare:
+        return static_cast<std::uint8_t>(HEqual + d.aux);
+    case Op::BranchOpen:
+        return HBranchOpen;
+    case Op::BranchNext:
+        return HBranchNext;
+    case Op::BranchClose:
+        return HBranchClose;
+    case Op::Coil:
+        return byte ? HCoilByte : HCoil;
+    case Op::Set:
+        return byte ? HSetByte : HSet;
+    case Op::Reset:
+        return byte ? HResetByte : HReset;
+    case Op::Toggle:
+        return HToggle;
+    case Op::Jump:
+        return HJump;
+    case Op::SequenceReset:
+        return HSequenceReset;
+    case Op::Arith:
+        return HArith;
+    }
+    return HRung;
+}
+
 void UnitEngine::decode() {
     m_code.clear();
     m_code.reserve(m_image.code.size());
     for (const auto& in : m_image.code) {
-        Decoded d{in.op, in.flags, in.aux, in.slot, in.constant, {}, {}, false};
+        Decoded d{in.op, 0, in.flags, in.aux, 0, 0, false, in.slot, in.constant, nullptr};
         switch (in.op) {
         case Op::Contact:
         case Op::Edge:
-            d.bit = decodeBit(in.operand, false);
+            d.pointAt(decodeBit(in.operand, false));
             break;
         case Op::Coil:
         case Op::Set:
         case Op::Reset:
         case Op::Toggle:
-            d.bit = decodeBit(in.operand, true);
+            d.pointAt(decodeBit(in.operand, true));
             break;
         case Op::LoadA:
         case Op::LoadB:
         case Op::Timer:
             if (!(in.flags & compiler::ConstantOperand))
-                d.word = decodeWord(in.operand);
+                d.pointAt(decodeWord(in.operand));
             break;
         case Op::Arith:
-            d.word = decodeWord(in.operand);
+            d.pointAt(decodeWord(in.operand));
             d.dropWrite = m_forces.count(in.operand) != 0;
             break;
         default:
             break;
         }
+        d.handler = handlerFor(d);
         m_code.push_back(d);
     }
 }
@@ -211,7 +343,12 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         sm[memory] = flashing(memory, timeMs);
     for (int station = 0; station < 32; ++station)
         sm[static_cast<std::size_t>(100 + station)] = m_present[static_cast<std::size_t>(station)];
-    std::fill(m_conduction.begin(), m_conduction.end(), Conduction::NotRun);
+    // Only the steps that ran last time have marks to clear.
+    for (int index : m_ranSteps) {
+        const StepRun& step = m_steps[static_cast<std::size_t>(index)];
+        std::fill_n(m_conduction.begin() + step.first, step.count, Conduction::NotRun);
+    }
+    m_ranSteps.clear();
 
     for (int number = 0; number < 10; ++number) {
         Sequence& sequence = m_sequences[static_cast<std::size_t>(number)];
@@ -227,7 +364,9 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         int pendingJump = -1;
         sm[kStepNew] = sequence.stepNew;
         sequence.stepNew = false;
-        runStep(sequence.stepIndex[sequence.active], pendingJump, cycleMs);
+        const int stepIndex = sequence.stepIndex[static_cast<std::size_t>(sequence.active)];
+        runStep(stepIndex, pendingJump, cycleMs);
+        m_ranSteps.push_back(stepIndex);
         if (pendingJump >= 0 && !held) {
             leaveStep(sequence.stepIndex[sequence.active]);
             sequence.active = pendingJump;
@@ -240,120 +379,153 @@ void UnitEngine::leaveStep(int index) {
     const StepRun& step = m_steps[static_cast<std::size_t>(index)];
     for (std::uint32_t i = step.first; i < step.first + step.count; ++i)
         if (m_code[i].op == Op::Coil)
-            m_code[i].bit.write(false);
+            m_code[i].writeBit(false);
 }
 
+// Threaded dispatch (GCC's labels as values): each handler jumps straight to
+// the next one, so the processor predicts each transition on its own. On a
+// 32-unit project that is what keeps the engine near compiled code.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"
 void UnitEngine::runStep(int index, int& pendingJump, int cycleMs) {
     const StepRun& step = m_steps[static_cast<std::size_t>(index)];
+    if (step.count == 0)
+        return;
     auto& sm = m_memory.systemMemories;
     struct Branch {
-        bool in;
-        bool any;
+        unsigned in;
+        unsigned any;
     };
     Branch branches[64];
     int depth = 0;
-    bool power = true;
+    unsigned power = 1; // 0 or 1, combined with & and | so that nothing branches on it
     std::int64_t a = 0;
     std::int64_t b = 0;
-    const std::uint32_t end = step.first + step.count;
-    for (std::uint32_t i = step.first; i < end; ++i) {
-        const Decoded& in = m_code[i];
-        const bool negated = in.flags & compiler::Negated;
-        switch (in.op) {
-        case Op::Rung:
-            power = true;
-            break;
-        case Op::Contact:
-            power = power && (in.bit.read() != negated);
-            break;
-        case Op::Edge: {
-            EdgeState& edge = m_edges[in.slot];
-            const bool value = in.bit.read() != bool(in.flags & compiler::OperandNegated);
-            bool seen = false;
-            if (edge.seen)
-                seen =
-                    (in.flags & compiler::Rising) ? (value && !edge.last) : (!value && edge.last);
-            edge.seen = true;
-            edge.last = value;
-            power = power && (seen != negated);
-            break;
-        }
-        case Op::Timer:
-            power = timer(in, power, cycleMs);
-            break;
-        case Op::LoadA:
-            a = (in.flags & compiler::ConstantOperand) ? in.constant : in.word.read();
-            break;
-        case Op::LoadB:
-            b = (in.flags & compiler::ConstantOperand) ? in.constant : in.word.read();
-            break;
-        case Op::Compare: {
-            bool result = false;
-            switch (static_cast<lang::CompareOp>(in.aux)) {
-            case lang::CompareOp::Equal:
-                result = a == b;
-                break;
-            case lang::CompareOp::Greater:
-                result = a > b;
-                break;
-            case lang::CompareOp::Less:
-                result = a < b;
-                break;
-            case lang::CompareOp::GreaterEqual:
-                result = a >= b;
-                break;
-            case lang::CompareOp::LessEqual:
-                result = a <= b;
-                break;
-            }
-            power = power && (result != negated);
-            break;
-        }
-        case Op::BranchOpen:
-            branches[depth++] = {power, false};
-            break;
-        case Op::BranchNext:
-            branches[depth - 1].any = branches[depth - 1].any || power;
-            power = branches[depth - 1].in;
-            break;
-        case Op::BranchClose:
-            power = branches[--depth].any || power;
-            break;
-        case Op::Coil:
-            in.bit.write(power);
-            sm[kDitto] = power;
-            break;
-        case Op::Set:
-            if (power)
-                in.bit.write(true);
-            sm[kDitto] = power;
-            break;
-        case Op::Reset:
-            if (power)
-                in.bit.write(false);
-            sm[kDitto] = power;
-            break;
-        case Op::Toggle:
-            if (power)
-                in.bit.write(!in.bit.read());
-            sm[kDitto] = power;
-            break;
-        case Op::Jump:
-            if (power)
-                pendingJump = in.slot; // the last jump taken in the step wins
-            break;
-        case Op::SequenceReset:
-            if (power && in.slot < 10)
-                m_sequences[in.slot].resetRequested = true;
-            break;
-        case Op::Arith:
-            if (power)
-                arithmetic(in, a, b);
-            break;
-        }
-        m_conduction[i] = power ? Conduction::On : Conduction::Off;
-    }
+    const Decoded* in = m_code.data() + step.first;
+    const Decoded* const end = in + step.count;
+    Conduction* mark = m_conduction.data() + step.first;
+    static_assert(compiler::Negated == 1);
+
+    static const void* const handlers[] = {
+        &&rung,         &&contactByte, &&contact,    &&edge,          &&timer,
+        &&loadA,        &&loadB,       &&equal,      &&greater,       &&less,
+        &&greaterEqual, &&lessEqual,   &&branchOpen, &&branchNext,    &&branchClose,
+        &&coilByte,     &&coil,        &&setByte,    &&set,           &&resetByte,
+        &&reset,        &&toggle,      &&jump,       &&sequenceReset, &&arith};
+    static_assert(std::size(handlers) == HandlerCount);
+#define RS_NEXT()                                                                                  \
+    do {                                                                                           \
+        *mark++ = static_cast<Conduction>(1 + power);                                              \
+        if (++in == end)                                                                           \
+            return;                                                                                \
+        goto* handlers[in->handler];                                                               \
+    } while (false)
+#define RS_NEGATED (in->flags & compiler::Negated)
+#define RS_BYTE (*static_cast<std::uint8_t*>(in->ref))
+
+    goto* handlers[in->handler];
+rung:
+    power = 1;
+    RS_NEXT();
+contactByte:
+    power &= static_cast<unsigned>(RS_BYTE != 0) ^ RS_NEGATED;
+    RS_NEXT();
+contact:
+    power &= static_cast<unsigned>(in->readBit()) ^ RS_NEGATED;
+    RS_NEXT();
+edge : {
+    EdgeState& state = m_edges[in->slot];
+    const bool value = in->readBit() != bool(in->flags & compiler::OperandNegated);
+    bool seen = false;
+    if (state.seen)
+        seen = (in->flags & compiler::Rising) ? (value && !state.last) : (!value && state.last);
+    state.seen = true;
+    state.last = value;
+    power &= static_cast<unsigned>(seen) ^ RS_NEGATED;
+    RS_NEXT();
 }
+timer:
+    power = timer(*in, power != 0, cycleMs);
+    RS_NEXT();
+loadA:
+    a = (in->flags & compiler::ConstantOperand) ? in->constant : in->readWord();
+    RS_NEXT();
+loadB:
+    b = (in->flags & compiler::ConstantOperand) ? in->constant : in->readWord();
+    RS_NEXT();
+equal:
+    power &= static_cast<unsigned>(a == b) ^ RS_NEGATED;
+    RS_NEXT();
+greater:
+    power &= static_cast<unsigned>(a > b) ^ RS_NEGATED;
+    RS_NEXT();
+less:
+    power &= static_cast<unsigned>(a < b) ^ RS_NEGATED;
+    RS_NEXT();
+greaterEqual:
+    power &= static_cast<unsigned>(a >= b) ^ RS_NEGATED;
+    RS_NEXT();
+lessEqual:
+    power &= static_cast<unsigned>(a <= b) ^ RS_NEGATED;
+    RS_NEXT();
+branchOpen:
+    branches[depth++] = {power, 0};
+    RS_NEXT();
+branchNext:
+    branches[depth - 1].any |= power;
+    power = branches[depth - 1].in;
+    RS_NEXT();
+branchClose:
+    power |= branches[--depth].any;
+    RS_NEXT();
+coilByte:
+    RS_BYTE = static_cast<std::uint8_t>(power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+coil:
+    in->writeBit(power != 0);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+setByte:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+set:
+    if (power)
+        in->writeBit(true);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+resetByte:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+reset:
+    if (power)
+        in->writeBit(false);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+toggle:
+    if (power)
+        in->writeBit(!in->readBit());
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+jump:
+    if (power)
+        pendingJump = in->slot; // the last jump taken in the step wins
+    RS_NEXT();
+sequenceReset:
+    if (power && in->slot < 10)
+        m_sequences[in->slot].resetRequested = true;
+    RS_NEXT();
+arith:
+    if (power)
+        arithmetic(*in, a, b);
+    RS_NEXT();
+#undef RS_BYTE
+#undef RS_NEGATED
+#undef RS_NEXT
+}
+#pragma GCC diagnostic pop
 
 bool UnitEngine::timer(const Decoded& in, bool input, int cycleMs) {
     TimerState& t = m_timers[in.slot];
@@ -365,7 +537,7 @@ bool UnitEngine::timer(const Decoded& in, bool input, int cycleMs) {
     const std::int64_t dt = freeze ? 0 : cycleMs;
     freeze = 0; // SM_TimerFreeze holds the next timer in the code only
     const std::int64_t preset =
-        10 * ((in.flags & compiler::ConstantOperand) ? in.constant : in.word.read());
+        10 * ((in.flags & compiler::ConstantOperand) ? in.constant : in.readWord());
     const bool rising = input && !t.lastInput;
     const bool falling = !input && t.lastInput;
     switch (static_cast<lang::TimerKind>(in.aux)) {
@@ -403,12 +575,11 @@ bool UnitEngine::timer(const Decoded& in, bool input, int cycleMs) {
 
 void UnitEngine::arithmetic(const Decoded& in, std::int64_t a, std::int64_t b) {
     auto& sm = m_memory.systemMemories;
-    const WordRef& target = in.word;
-    const bool wide = target.isDouble() || target.kind == WordRef::Kind::Wide;
+    const bool wide = in.wideWord();
     // The manual: a register saturates at 32767 / -32768, a double register at ±2147483647.
     const std::int64_t low = wide ? -2147483647 : -32768;
     const std::int64_t high = wide ? 2147483647 : 32767;
-    const std::int64_t current = target.read();
+    const std::int64_t current = in.readWord();
     std::int64_t result = 0;
     bool division = false;
     std::int64_t dividend = 0;
@@ -463,7 +634,7 @@ void UnitEngine::arithmetic(const Decoded& in, std::int64_t a, std::int64_t b) {
     }
     sm[kOverflow] = result < low || result > high;
     if (!in.dropWrite) // a forced register keeps its value
-        target.write(std::clamp(result, low, high));
+        in.writeWord(std::clamp(result, low, high));
 }
 
 } // namespace rs::sim

@@ -51,15 +51,27 @@ public:
     void write(const lang::Address& address, std::int64_t value);
 
 private:
+    // An instruction ready to run: 24 bytes, its operand resolved to a pointer
+    // into this unit's memory (or the bus image, or a sink for forced targets).
     struct Decoded {
         compiler::Op op;
+        std::uint8_t handler; // what runStep does, specialised by operand kind
         std::uint8_t flags;
         std::uint8_t aux;
+        std::uint8_t refKind; // BitRef::Kind or WordRef::Kind, by op
+        std::uint8_t bit;     // register bit
+        bool dropWrite;       // an arithmetic target that is forced
         std::uint16_t slot;
         std::int32_t constant;
-        BitRef bit;     // contact and edge operands; coil, set, reset, toggle targets
-        WordRef word;   // loads, comparison operands, timer presets, arithmetic targets
-        bool dropWrite; // an arithmetic target that is forced
+        void* ref;
+
+        void pointAt(const BitRef& target);
+        void pointAt(const WordRef& target);
+        bool readBit() const;
+        void writeBit(bool value) const;
+        std::int64_t readWord() const;
+        void writeWord(std::int64_t value) const;
+        bool wideWord() const;
     };
     struct StepRun {
         int sequence;
@@ -86,6 +98,7 @@ private:
     };
 
     void decode();
+    static std::uint8_t handlerFor(const Decoded& decoded);
     BitRef decodeBit(const lang::Address& address, bool forWriting);
     WordRef decodeWord(const lang::Address& address);
     void runStep(int index, int& pendingJump, int cycleMs);
@@ -104,6 +117,7 @@ private:
     std::vector<EdgeState> m_edges;
     std::vector<TimerState> m_timers;
     std::vector<Conduction> m_conduction;
+    std::vector<int> m_ranSteps; // steps run in the last scan, by index
     std::map<lang::Address, std::int64_t> m_forces;
     std::array<bool, 32> m_present{};
     std::uint64_t m_scan = 0;
