@@ -30,8 +30,13 @@ std::vector<Network> networksOf(const lang::Step& step) {
     bool grouping = false;
     for (const auto& line : step.lines) {
         if (auto* comment = std::get_if<lang::CommentLine>(&line.body)) {
-            if (auto annotation = parseAnnotation(comment->text);
-                annotation && annotation->kind == "network") {
+            std::optional<Annotation> annotation;
+            try {
+                annotation = parseAnnotation(comment->text);
+            } catch (const AnnotationError&) {
+                // Reading reported it; while it is malformed it is an ordinary comment.
+            }
+            if (annotation && annotation->kind == "network") {
                 networks.push_back({annotation->value("comment"), {}});
                 grouping = true;
                 continue;

@@ -90,6 +90,14 @@ TEST(ProjectFile, NetworksGroupStatements) {
     EXPECT_EQ(single[1].lines.size(), 1u);
 }
 
+TEST(ProjectFile, AMalformedNetworkRecordIsAnOrdinaryComment) {
+    auto result = project::readProject("! pgm_pluto:00\nS0.0_0\n;@network comment=\"open\n"
+                                       "Q0.1 = I0.0\nQ0.2 = I0.1\n");
+    EXPECT_EQ(lang::errorCount(result.diagnostics), 1);
+    auto networks = project::networksOf(result.project.program.units.at(0).steps.at(0));
+    EXPECT_EQ(networks.size(), 2u);
+}
+
 TEST(ProjectFile, MalformedAndUnknownRecords) {
     auto result = project::readProject("$name x\n"
                                        ";@project description=\"open\n"
