@@ -236,7 +236,9 @@ TEST(IoOptionCheck, InputsNeedExactlyOneSignal) {
         {"A20,is3", "! i0.2,a_pulse,non_inv", ""},
         {"A20,is3", "! i0.3,static", ""},
         {"A20,is3", "! I0.4,b_pulse,no_filt", ""},
-        {"A20,is3", "! I0.17,static,no_filt", ""},
+        {"A20,is3", "! I0.17,static,no_filt",
+         "4:3: warning: I0.17,static does not fulfil category 4 (EN 954-1) as a stand-alone "
+         "input"},
     });
 }
 
@@ -907,7 +909,9 @@ TEST(AccessCheck, TimerFreezeAndPlutoDisplayAreWritable) {
         checkUnit("A20,is3", {"S0.0_0", "SM_TimerFreeze = M0.0", "S(SM0.10) = M0.2",
                               "(SR0.10 = 201)", "(SR_PlutoDisplay = 202) = M0.3", "(SR0.10 += 1)",
                               "M0.4 = SM0.9 * (SR0.2 > 0) * SM_TimerFreeze"}),
-        Lines{});
+        // Writable, so no errors; a coil that is also latched is worth a warning.
+        (Lines{"6:3: warning: SM0.10 is both a coil and latched with S(...)/R(...) (see line 5); "
+               "the coil sets it every scan the line runs"}));
 }
 
 // ===== I/O declarations and the code
@@ -955,7 +959,7 @@ TEST(TerminalCheck, UnconfiguredInputOfAnotherUnit) {
 }
 
 TEST(TerminalCheck, DeclaredUseMustMatch) {
-    const Lines body{"! I0.10,static",   // 4
+    const Lines body{"! I0.10,a_pulse",  // 4
                      "! Q0.11,static",   // 5
                      "! IQ0.12,a_pulse", // 6
                      "! I0.13,a_pulse",  // 7
