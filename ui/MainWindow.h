@@ -1,52 +1,111 @@
 #pragma once
 
+#include "PageRef.h"
+#include "Preferences.h"
 #include "RecentFiles.h"
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "compiler/Compiler.h"
 #include "lang/Diagnostic.h"
+#include "project/TextPlace.h"
+#endif
 
+#include <QFutureWatcher>
 #include <QMainWindow>
 #include <QTimer>
+#include <QUndoGroup>
+
+#include <string>
+#include <vector>
 
 class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QProgressBar;
+class QStackedWidget;
 class QToolBar;
 
 namespace rs::ui {
 
+class CompileOutput;
+class IoOptionsPage;
 class ProblemsView;
 class ProgramEditor;
+class ProjectDocument;
+class ProjectPage;
+class ProjectTree;
+class TextPage;
+class UnitPage;
+class VariablesPage;
 
-// The IDE window: the program text in the middle, the checker's findings in
-// the Problems dock, and the file and edit commands.
+// The IDE window (manual Part 1, 4): the project tree at the left with every
+// open project, the page of the chosen node in the middle (project, unit,
+// I/O options, variables, the code as text), the text checker's Problems and
+// the compiler's Output below. Every edit of every page goes through the
+// undo stack of its project; Edit > Undo and Redo work on the project shown.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    // How long typing must pause before the text is checked again.
+    // How long typing must pause before the text is read into the project.
     static constexpr int kCheckDelayMs = 300;
 
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
 
-    // Loads a project file without asking anything and without recording it
+    // Opens a project file without asking anything and without recording it
     // among the recent files. Returns the error message, empty on success.
     QString loadFile(const QString& path);
-
-    // Loads a project file the way the Open command does: unsaved changes are
-    // offered for saving first, a file that cannot be read is reported in a
-    // message box and the current text stays, a file read joins the recent files.
+    // Opens a project file the way the Open command does: a file that cannot
+    // be read is reported in a message box, a file read joins the recent files.
     bool openFile(const QString& path);
-
-    // Shows the example project bundled with the IDE, as an unsaved file.
+    // Opens the example project bundled with the IDE, as an unsaved project.
     void showExample();
+    // A new project, as File > New makes it once its dialog is answered.
+    ProjectDocument* createProject(const QString& name, const QString& description,
+                                   bool includeSource);
 
-    // Shows the program text of the unit with this station number. False when
-    // the project has no such unit.
+    // Shows a page of the current project: the code (text) of a unit, its
+    // unit page, I/O options or variables. False when there is no such unit.
     bool showUnit(int station);
+    bool showPage(PageRef::Kind kind, int station);
+    // Shows any page; false when the user keeps editing a text with errors.
+    bool showPage(const PageRef& page);
+    PageRef currentPage() const { return m_current; }
+
+    ProjectDocument* currentDocument() const;
+    const std::vector<ProjectDocument*>& documents() const { return m_documents; }
+
+    // Saves the project to its file, or asks for one; false when not saved.
+    bool saveDocument(ProjectDocument* document);
+    // Saves under a new name; without a path, asks for one.
+    bool saveDocumentAs(ProjectDocument* document, const QString& path = {});
+    // Closes the project, offering to save changes; false when the user cancels.
+    bool closeDocument(ProjectDocument* document);
+    // Writes the program text alone (File > Export); without a path, asks for one.
+    bool exportProgramText(ProjectDocument* document, const QString& path = {});
+
+    // Builds the current project off the window's thread.
+    void compile();
+    bool isCompiling() const;
+
+    // Writes every modified project's autosave copy now.
+    void autosaveNow();
+    // Offers the autosave copies that a crash left behind; returns how many were recovered.
+    int recoverAutosaved();
 
     // Window size, position and dock layout as the user left them.
     void restoreLayout();
 
-    ProgramEditor* editor() const { return m_editor; }
+    ProgramEditor* editor() const;
+    TextPage* textPage() const { return m_textPage; }
+    ProjectPage* projectPage() const { return m_projectPage; }
+    UnitPage* unitPage() const { return m_unitPage; }
+    IoOptionsPage* ioOptionsPage() const { return m_ioPage; }
+    VariablesPage* variablesPage() const { return m_variablesPage; }
+    ProjectTree* projectTree() const { return m_tree; }
+    CompileOutput* compileOutput() const { return m_output; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -55,44 +114,77 @@ private:
     void createActions();
     void createMenus();
     void createToolBar();
-    void createProblemsDock();
+    void createDocks();
     void createStatusBar();
+
+    void addDocument(ProjectDocument* document);
+    void removeDocument(ProjectDocument* document);
+    void rebuildTree();
+    void showFirstPageOf(ProjectDocument* document);
 
     void newProject();
     void open();
-    bool save();
-    bool saveAs();
-    bool saveTo(const QString& path);
+    bool maybeSave(ProjectDocument* document);
+    bool leaveTextPage();
+    void undo();
+    void redo();
     void formatDocument();
+    void newUnit(ProjectDocument* document);
+    void newSequence(ProjectDocument* document, int station);
+    void removeUnit(ProjectDocument* document, int station);
+    void editRemanent(ProjectDocument* document, int station);
+    void importCsv(ProjectDocument* document, int station);
+    void exportCsv(ProjectDocument* document, int station);
+    void editPreferences();
     void about();
+    void showTreeMenu(const PageRef& page, const QPoint& globalPosition);
+    void showCompilePlace(const project::TextPlace& place, int column);
+    void compileFinished();
 
-    bool maybeSave();
-    void showText(const QByteArray& text, const QString& path, const QString& displayName);
     void updateTitle();
+    void updateActions();
     void fillRecentMenu();
-    void updateEditActions();
-
-    // Checks the text now and shows the findings.
-    void check();
     void showSummary(const lang::Diagnostics& diagnostics);
+    void showMessage(const QString& message);
 
-    ProgramEditor* m_editor;
+    std::vector<ProjectDocument*> m_documents;
+    PageRef m_current;
+    QUndoGroup m_undoGroup;
+    RecentFiles m_recentFiles;
+    Preferences m_preferences;
+    QTimer m_autosaveTimer;
+
+    QStackedWidget* m_pages = nullptr;
+    QWidget* m_welcomePage = nullptr;
+    ProjectPage* m_projectPage = nullptr;
+    UnitPage* m_unitPage = nullptr;
+    IoOptionsPage* m_ioPage = nullptr;
+    VariablesPage* m_variablesPage = nullptr;
+    TextPage* m_textPage = nullptr;
+    ProjectTree* m_tree = nullptr;
     ProblemsView* m_problems = nullptr;
+    CompileOutput* m_output = nullptr;
+    QDockWidget* m_treeDock = nullptr;
     QDockWidget* m_problemsDock = nullptr;
+    QDockWidget* m_outputDock = nullptr;
     QLabel* m_summary = nullptr;
     QLabel* m_position = nullptr;
+    QProgressBar* m_progress = nullptr;
     QMenu* m_recentMenu = nullptr;
     QToolBar* m_fileToolBar = nullptr;
-    QTimer m_checkTimer;
-    RecentFiles m_recentFiles;
 
-    QString m_path; // empty while the text has never been saved
-    QString m_displayName;
+    QFutureWatcher<compiler::CompileResult> m_compileWatcher;
+    QPointer<ProjectDocument> m_compiling;
+    bool m_compileRunning = false; // from Compile until its result is shown
+    std::string m_compiledText;
 
     QAction* m_newAction = nullptr;
     QAction* m_openAction = nullptr;
     QAction* m_saveAction = nullptr;
     QAction* m_saveAsAction = nullptr;
+    QAction* m_saveAllAction = nullptr;
+    QAction* m_closeAction = nullptr;
+    QAction* m_exportTextAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
@@ -101,6 +193,14 @@ private:
     QAction* m_pasteAction = nullptr;
     QAction* m_selectAllAction = nullptr;
     QAction* m_formatAction = nullptr;
+    QAction* m_preferencesAction = nullptr;
+    QAction* m_newUnitAction = nullptr;
+    QAction* m_newSequenceAction = nullptr;
+    QAction* m_removeUnitAction = nullptr;
+    QAction* m_remanentAction = nullptr;
+    QAction* m_importCsvAction = nullptr;
+    QAction* m_exportCsvAction = nullptr;
+    QAction* m_compileAction = nullptr;
     QAction* m_exampleAction = nullptr;
     QAction* m_aboutAction = nullptr;
 };

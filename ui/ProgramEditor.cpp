@@ -3,6 +3,8 @@
 #include "PlutoLexer.h"
 #include "lang/Lexer.h"
 
+#include <Qsci/qscicommand.h>
+#include <Qsci/qscicommandset.h>
 #include <Qsci/qscistyledtext.h>
 
 #include <QApplication>
@@ -180,6 +182,25 @@ void ProgramEditor::setTextBytes(const QByteArray& text) {
     SendScintilla(SCI_EMPTYUNDOBUFFER);
     setModified(false);
     SendScintilla(SCI_GOTOPOS, 0UL);
+}
+
+void ProgramEditor::setProjectUndo(bool projectUndo) {
+    SendScintilla(SCI_SETUNDOCOLLECTION, projectUndo ? 0UL : 1UL);
+    SendScintilla(SCI_EMPTYUNDOBUFFER);
+    for (auto command : {QsciCommand::Undo, QsciCommand::Redo}) {
+        QsciCommand* bound = standardCommands()->find(command);
+        if (projectUndo) {
+            bound->setKey(0);
+            bound->setAlternateKey(0);
+        } else {
+            const bool undo = command == QsciCommand::Undo;
+            // QScintilla's own bindings.
+            bound->setKey((undo ? Qt::CTRL | Qt::Key_Z : Qt::CTRL | Qt::Key_Y).toCombined());
+            bound->setAlternateKey(
+                (undo ? Qt::ALT | Qt::Key_Backspace : Qt::CTRL | Qt::SHIFT | Qt::Key_Z)
+                    .toCombined());
+        }
+    }
 }
 
 void ProgramEditor::goTo(int line, int column) {

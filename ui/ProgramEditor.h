@@ -34,6 +34,10 @@ public:
     // the text counts as unmodified.
     void setTextBytes(const QByteArray& text);
 
+    // With the project's undo, the editor keeps no undo history of its own and
+    // leaves the undo and redo keys to the window's Edit menu.
+    void setProjectUndo(bool projectUndo);
+
 private:
     void defineMarkers();
     void fitLineNumberMargin();

@@ -1,4 +1,7 @@
 #include "MainWindow.h"
+#include "PageRef.h"
+#include "Preferences.h"
+#include "Theme.h"
 #include "Translations.h"
 
 #include <QApplication>
@@ -27,15 +30,36 @@ int usageError(const QString& message) {
     return 2;
 }
 
-// "text:N" is the program text of the unit with station number N. The other
-// pages of the command-line contract (ladder, io, variables) arrive with
-// their editors.
-std::optional<int> textPageStation(const QString& page) {
-    static const QRegularExpression form(QStringLiteral("^text:(\\d{1,2})$"));
-    const QRegularExpressionMatch match = form.match(page);
+struct Page {
+    rs::ui::PageRef::Kind kind;
+    int station;
+};
+
+// "text:N", "io:N", "variables:N" and "unit:N": a page of the unit with
+// station number N.
+std::optional<Page> pageOf(const QString& text) {
+    static const QRegularExpression form(QStringLiteral("^(text|io|variables|unit):(\\d{1,2})$"));
+    const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
-    return match.captured(1).toInt();
+    const QString kind = match.captured(1);
+    using Kind = rs::ui::PageRef::Kind;
+    return Page{kind == QLatin1String("text")   ? Kind::Code
+                : kind == QLatin1String("io")   ? Kind::IoOptions
+                : kind == QLatin1String("unit") ? Kind::Unit
+                                                : Kind::Variables,
+                match.captured(2).toInt()};
+}
+
+std::optional<rs::ui::Preferences::Theme> themeOf(const QString& text) {
+    using Theme = rs::ui::Preferences::Theme;
+    if (text == QLatin1String("light"))
+        return Theme::Light;
+    if (text == QLatin1String("dark"))
+        return Theme::Dark;
+    if (text == QLatin1String("system"))
+        return Theme::System;
+    return std::nullopt;
 }
 
 // Lets the window lay itself out and paint as it would on a screen.
@@ -54,7 +78,9 @@ int main(int argc, char* argv[]) {
     QApplication::setApplicationName(QStringLiteral("Rungsmith"));
     QApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/rungsmith.svg")));
-    rs::ui::installTranslations(application);
+    const rs::ui::Preferences preferences = rs::ui::Preferences::load();
+    rs::ui::installTranslations(
+        application, preferences.language.isEmpty() ? QLocale() : QLocale(preferences.language));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(CommandLine::tr("IDE for Pluto safety PLCs."));
@@ -70,9 +96,14 @@ int main(int argc, char* argv[]) {
         QStringLiteral("OUT.png"));
     const QCommandLineOption pageOption(
         QStringLiteral("page"),
-        CommandLine::tr("The page to show: text:N, the program text of unit N."),
+        CommandLine::tr("The page to show for unit N: text:N (its code), io:N (I/O options), "
+                        "variables:N or unit:N."),
         QStringLiteral("PAGE"));
-    parser.addOptions({screenshotOption, pageOption});
+    const QCommandLineOption themeOption(
+        QStringLiteral("theme"),
+        CommandLine::tr("Draw with the light or dark palette, or the system's, this time."),
+        QStringLiteral("light|dark|system"));
+    parser.addOptions({screenshotOption, pageOption, themeOption});
 
     if (!parser.parse(QCoreApplication::arguments()))
         return usageError(parser.errorText());
@@ -84,17 +115,26 @@ int main(int argc, char* argv[]) {
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1)
         return usageError(CommandLine::tr("give at most one project file"));
-    std::optional<int> station;
+    std::optional<Page> page;
     if (parser.isSet(pageOption)) {
-        station = textPageStation(parser.value(pageOption));
-        if (!station)
-            return usageError(CommandLine::tr("unknown page '%1'; the pages so far are text:N, the "
-                                              "program text of unit N")
+        page = pageOf(parser.value(pageOption));
+        if (!page)
+            return usageError(CommandLine::tr("unknown page '%1'; the pages are text:N, io:N, "
+                                              "variables:N and unit:N for unit N")
                                   .arg(parser.value(pageOption)));
     }
+    std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;
+    if (parser.isSet(themeOption)) {
+        theme = themeOf(parser.value(themeOption));
+        if (!theme)
+            return usageError(CommandLine::tr("unknown theme '%1'; use light, dark or system")
+                                  .arg(parser.value(themeOption)));
+    }
+    if (*theme != rs::ui::Preferences::Theme::System)
+        rs::ui::applyTheme(*theme);
     const QString shownFile = files.isEmpty() ? CommandLine::tr("the example") : files.first();
     const QString noSuchUnit =
-        CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(station.value_or(0));
+        CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
 
     rs::ui::MainWindow window;
     if (parser.isSet(screenshotOption)) {
@@ -104,7 +144,7 @@ int main(int argc, char* argv[]) {
             return usageError(error);
         window.show();
         settle();
-        if (station && !window.showUnit(*station))
+        if (page && !window.showPage(page->kind, page->station))
             return usageError(noSuchUnit);
         settle();
         const QString out = parser.value(screenshotOption);
@@ -117,11 +157,12 @@ int main(int argc, char* argv[]) {
 
     window.restoreLayout();
     window.show();
-    if (files.isEmpty())
-        window.showExample();
-    else
+    const bool recovered = window.recoverAutosaved() > 0;
+    if (!files.isEmpty())
         window.openFile(files.first());
-    if (station && !window.showUnit(*station))
+    else if (!recovered)
+        window.showExample();
+    if (page && !window.showPage(page->kind, page->station))
         complain(noSuchUnit);
     return QApplication::exec();
 }

@@ -1,6 +1,7 @@
 #include "project/UnitText.h"
 #include "ProjectText.h"
 #include "project/ProjectFile.h"
+#include "project/TextPlace.h"
 #include "project/VariableTable.h"
 
 #include <gtest/gtest.h>
@@ -99,4 +100,21 @@ TEST(UnitText, TheTextIsOneUnitsCodeAndNothingElse) {
     EXPECT_EQ(read.diagnostics.back().line, 3);
     read = project::readUnitText(p, 1, "\n\n! pgm_pluto:01\nS1.0_0\n");
     EXPECT_TRUE(read.ok());
+}
+
+TEST(TextPlace, LinesOfTheProjectTextLeadToTheirPage) {
+    const project::Project p = projectFrom(kTwoUnits);
+    using Kind = project::TextPlace::Kind;
+    // 1 $name, 2 blank, 3 id 00, 4 @var, 5 id 01, 6 I0.12=EStop, 7 blank,
+    // 8 pgm 00, 9 M0.0=Muting, 10 S0.0_0, 11 Q0.2, 12 blank, 13 pgm 01, 14 S1.0_0, 15 Q1.2
+    EXPECT_EQ(project::placeOfLine(p, 1).kind, Kind::Project);
+    EXPECT_EQ(project::placeOfLine(p, 3), (project::TextPlace{Kind::Unit, 0, {}, 0}));
+    EXPECT_EQ(project::placeOfLine(p, 5).station, 1);
+    const auto variable = project::placeOfLine(p, 4);
+    EXPECT_EQ(variable.kind, Kind::Variable);
+    EXPECT_EQ(lang::toString(variable.address), "M0.0");
+    EXPECT_EQ(lang::toString(project::placeOfLine(p, 6).address), "I0.12");
+    EXPECT_EQ(project::placeOfLine(p, 11), (project::TextPlace{Kind::UnitCode, 0, {}, 4}));
+    EXPECT_EQ(project::placeOfLine(p, 15), (project::TextPlace{Kind::UnitCode, 1, {}, 3}));
+    EXPECT_EQ(project::placeOfLine(p, 99).kind, Kind::Project);
 }

@@ -2,6 +2,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QPushButton>
 
 MessageBoxAnswerer::MessageBoxAnswerer(QMessageBox::StandardButton answer) : m_answer(answer) {
     connect(&m_timer, &QTimer::timeout, this, &MessageBoxAnswerer::poll);
@@ -17,8 +18,11 @@ void MessageBoxAnswerer::poll() {
     m_text = box->text();
     m_informativeText = box->informativeText();
     m_buttons = box->standardButtons();
+    // A box without that button gets the answer of the Enter key: its default button.
     if (QAbstractButton* button = box->button(m_answer))
         button->click();
+    else if (QPushButton* fallback = box->defaultButton())
+        fallback->click();
     else
         box->reject();
 }

@@ -5,8 +5,8 @@
 #include <QTimer>
 
 // Answers the next message box that opens, as a user would, and remembers
-// what it said. Message boxes run their own event loop, so the answer has to
-// come from a timer.
+// what it said. A box that has no button for the answer gets its default one. Message boxes run
+// their own event loop, so the answer has to come from a timer.
 class MessageBoxAnswerer : public QObject {
     Q_OBJECT
 public:

@@ -1,0 +1,22 @@
+#include "DialogDriver.h"
+
+#include <QApplication>
+#include <QDialog>
+
+DialogDriver::DialogDriver(std::deque<Handler> handlers) : m_handlers(std::move(handlers)) {
+    connect(&m_timer, &QTimer::timeout, this, &DialogDriver::poll);
+    m_timer.start(10);
+}
+
+void DialogDriver::poll() {
+    auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+    if (!dialog || !dialog->isVisible() || dialog == m_last || m_handlers.empty())
+        return;
+    m_last = dialog;
+    Handler handler = std::move(m_handlers.front());
+    m_handlers.pop_front();
+    ++m_handled;
+    handler(*dialog);
+    if (m_handlers.empty())
+        m_timer.stop();
+}

@@ -1,0 +1,88 @@
+#include "Autosave.h"
+
+#include "ProjectDocument.h"
+#include "project/ProjectFile.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+
+namespace rs::ui {
+
+namespace {
+
+QString& overriddenDirectory() {
+    static QString directory;
+    return directory;
+}
+
+QString textPath(const QString& id) {
+    return QDir(Autosave::directory()).filePath(id + QStringLiteral(".sps"));
+}
+
+QString infoPath(const QString& id) {
+    return QDir(Autosave::directory()).filePath(id + QStringLiteral(".json"));
+}
+
+} // namespace
+
+QString Autosave::directory() {
+    if (!overriddenDirectory().isEmpty())
+        return overriddenDirectory();
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+        .filePath(QStringLiteral("autosave"));
+}
+
+void Autosave::setDirectory(const QString& directory) {
+    overriddenDirectory() = directory;
+}
+
+QString Autosave::write(const ProjectDocument& document) {
+    if (!QDir().mkpath(directory()))
+        return QStringLiteral("cannot create %1").arg(directory());
+    const QByteArray text = document.fileText();
+    QString error = project::writeTextFile(
+        textPath(document.autosaveId()),
+        std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
+    if (!error.isEmpty())
+        return error;
+    const QJsonObject info{
+        {QStringLiteral("path"), document.path()},
+        {QStringLiteral("name"), document.displayName()},
+        {QStringLiteral("written"), QDateTime::currentDateTime().toString(Qt::ISODate)}};
+    const QByteArray json = QJsonDocument(info).toJson();
+    return project::writeTextFile(
+        infoPath(document.autosaveId()),
+        std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
+}
+
+void Autosave::remove(const QString& id) {
+    QFile::remove(textPath(id));
+    QFile::remove(infoPath(id));
+}
+
+QList<Autosave::Copy> Autosave::copies() {
+    QList<Copy> found;
+    const QDir folder(directory());
+    for (const QString& name :
+         folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Time)) {
+        QFile file(folder.filePath(name));
+        if (!file.open(QIODevice::ReadOnly))
+            continue;
+        const QJsonObject info = QJsonDocument::fromJson(file.readAll()).object();
+        Copy copy;
+        copy.id = name.chopped(5);
+        copy.path = info.value(QStringLiteral("path")).toString();
+        copy.displayName = info.value(QStringLiteral("name")).toString();
+        copy.written =
+            QDateTime::fromString(info.value(QStringLiteral("written")).toString(), Qt::ISODate);
+        copy.copyPath = textPath(copy.id);
+        if (QFile::exists(copy.copyPath))
+            found.append(copy);
+    }
+    return found;
+}
+
+} // namespace rs::ui

@@ -1,0 +1,38 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "compiler/Compiler.h"
+#include "project/TextPlace.h"
+#endif
+
+#include <QTreeWidget>
+
+namespace rs::ui {
+
+// The output of Build > Compile (manual Part 1, 13): a line per finding with
+// where it is (a unit's code and line, a unit's settings, a variable) and the
+// closing line "N Error(s) detected Result=OK|FAILED". Activating a finding
+// asks for its place to be shown.
+class CompileOutput : public QTreeWidget {
+    Q_OBJECT
+public:
+    enum Column { PlaceColumn = 0, MessageColumn = 1 };
+
+    explicit CompileOutput(QWidget* parent = nullptr);
+
+    void showRunning(const QString& projectName);
+    // The findings of compiling a project's canonical text, which the lines count in.
+    void showResult(const QString& projectName, std::string_view canonicalText,
+                    const compiler::CompileResult& result, const QString& writtenFile);
+    QString closingLine() const;
+
+signals:
+    void placeActivated(const project::TextPlace& place, int column);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+};
+
+} // namespace rs::ui

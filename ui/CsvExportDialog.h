@@ -1,0 +1,38 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "project/VariableCsv.h"
+#endif
+
+#include <QDialog>
+
+class QButtonGroup;
+class QComboBox;
+class QLineEdit;
+
+namespace rs::ui {
+
+// Export Variable Names (manual Part 1, 10.4): global and/or local
+// variables, a prefix for the names, the sort order, the separator a
+// spreadsheet expects, and the file.
+class CsvExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    CsvExportDialog(int station, const QString& suggestedPath, QWidget* parent = nullptr);
+
+    project::CsvExportOptions options() const;
+    QString path() const;
+    void setPath(const QString& path);
+
+private:
+    int m_station;
+    QButtonGroup* m_scope;
+    QLineEdit* m_prefix;
+    QButtonGroup* m_order;
+    QComboBox* m_separator;
+    QLineEdit* m_path;
+};
+
+} // namespace rs::ui

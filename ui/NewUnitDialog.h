@@ -1,0 +1,35 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "project/Project.h"
+#include "project/UnitSettings.h"
+#endif
+
+#include <QDialog>
+
+class QDialogButtonBox;
+
+namespace rs::ui {
+
+class UnitSettingsForm;
+
+// "New Pluto" (manual Part 1, 3.6 and 5): type of every family, a free
+// station 0-31, instruction set, IDFIX and description.
+class NewUnitDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit NewUnitDialog(const project::Project& project, QWidget* parent = nullptr);
+
+    project::UnitSettings settings() const;
+    UnitSettingsForm* form() const { return m_form; }
+
+private:
+    void updateButtons();
+
+    UnitSettingsForm* m_form;
+    QDialogButtonBox* m_buttons;
+};
+
+} // namespace rs::ui

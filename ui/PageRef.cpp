@@ -1,0 +1,12 @@
+#include "PageRef.h"
+
+#include "ProjectDocument.h"
+
+namespace rs::ui {
+
+bool PageRef::operator==(const PageRef& other) const {
+    return kind == other.kind && document == other.document && station == other.station &&
+           sequence == other.sequence;
+}
+
+} // namespace rs::ui

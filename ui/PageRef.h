@@ -1,0 +1,21 @@
+#pragma once
+
+#include <QPointer>
+
+namespace rs::ui {
+
+class ProjectDocument;
+
+// Which page the window shows: a node of the project tree.
+struct PageRef {
+    enum class Kind { None, Project, ProjectText, Unit, IoOptions, Variables, Code };
+
+    Kind kind = Kind::None;
+    QPointer<ProjectDocument> document;
+    int station = -1;
+    int sequence = 0; // Code: 0 is the unit's PLC code, 1-9 its sequences
+
+    bool operator==(const PageRef& other) const;
+};
+
+} // namespace rs::ui

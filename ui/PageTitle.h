@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QLabel>
+
+namespace rs::ui {
+
+// The heading above a page: which project, unit and page it is, in a larger
+// bold font, with an optional line of explanation under it.
+class PageTitle : public QWidget {
+    Q_OBJECT
+public:
+    explicit PageTitle(QWidget* parent = nullptr);
+
+    void setTitle(const QString& title);
+    void setSubtitle(const QString& subtitle);
+    QString title() const { return m_title->text(); }
+
+private:
+    QLabel* m_title;
+    QLabel* m_subtitle;
+};
+
+} // namespace rs::ui

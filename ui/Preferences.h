@@ -1,0 +1,36 @@
+#pragma once
+
+#include <QColor>
+#include <QString>
+
+namespace rs::ui {
+
+// The user's preferences (manual Part 1, 14), kept in the settings so that
+// they outlive the program: the ladder diagram's colours, the screen update
+// interval in online mode, whether ladder diagrams start expanded, whether
+// the compiler warns about unconfigured I/O, the language, and this IDE's
+// own additions (theme, autosave interval).
+struct Preferences {
+    enum class Theme { System, Light, Dark };
+
+    QColor ladderBackground;
+    QColor ladderFocusedBackground;
+    QColor ladderComponentBody;
+    QColor ladderLines;
+    QColor ladderLinesOff;
+    QColor ladderLinesOn;
+    int screenUpdateMs = 100;
+    bool startExpanded = true;
+    bool warnUnconfiguredIo = true;
+    QString language; // "", the system's, or "en", "sv", "de"
+    Theme theme = Theme::System;
+    int autosaveMinutes = 2;
+
+    static Preferences defaults();
+    static Preferences load();
+    void save() const;
+
+    friend bool operator==(const Preferences&, const Preferences&) = default;
+};
+
+} // namespace rs::ui

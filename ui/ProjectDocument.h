@@ -1,0 +1,88 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "project/Project.h"
+#include "project/ProjectChange.h"
+#endif
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <functional>
+
+namespace rs::ui {
+
+// One open project: the model every page shows, the undo stack that every
+// edit of every page goes through, and the file it belongs to.
+//
+// A file that reads with errors is kept as the text it is ("damaged"): the
+// lines with errors could not be shown on the pages and would be lost on
+// saving, so the project is edited as text until it reads cleanly.
+class ProjectDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit ProjectDocument(project::Project project, QObject* parent = nullptr);
+    ~ProjectDocument() override;
+
+    const project::Project& project() const { return m_project; }
+    QUndoStack* undoStack() { return &m_undoStack; }
+
+    // Applies an edit as one undo step named `text`. Nothing is pushed when
+    // the edit changes nothing. Returns whether it changed the project.
+    bool edit(const QString& text, const std::function<void(project::Project&)>& change);
+    bool replace(const QString& text, const project::Project& after);
+
+    // Called by the undo commands.
+    void applyChange(const project::ProjectChange& change, bool forward);
+
+    QString path() const { return m_path; }
+    // The file name, or a name for a project never saved.
+    QString displayName() const;
+    bool isModified() const;
+    // A project that has never been saved, or was recovered, counts as modified.
+    void setModifiedWithoutUndo(bool modified);
+
+    bool isDamaged() const { return m_damaged; }
+    const QByteArray& damagedText() const { return m_damagedText; }
+    void setDamagedText(const QByteArray& text);
+    // The damaged text now reads cleanly: it becomes the project.
+    void repair(project::Project project);
+
+    // What Save writes: the canonical text, or the damaged text as it is.
+    QByteArray fileText() const;
+    // Writes the file atomically; returns the error message, empty on success.
+    QString saveTo(const QString& path);
+    void setPath(const QString& path);
+
+    // Identifies the project's autosave file.
+    QString autosaveId() const { return m_autosaveId; }
+    // A recovered project keeps writing to the copy it was recovered from.
+    void setAutosaveId(const QString& id) { m_autosaveId = id; }
+
+    // Reads a file; a file with errors opens damaged. Returns the error message
+    // in `error` when the file cannot be read.
+    static ProjectDocument* open(const QString& path, QString& error, QObject* parent);
+    static ProjectDocument* fromText(const QByteArray& text, QObject* parent);
+
+signals:
+    void changed();
+    void modificationChanged(bool modified);
+    void pathChanged();
+
+private:
+    void emitModification();
+
+    project::Project m_project;
+    QUndoStack m_undoStack;
+    QString m_path;
+    QString m_autosaveId;
+    bool m_modifiedWithoutUndo = false;
+    bool m_lastModified = false;
+    bool m_damaged = false;
+    QByteArray m_damagedText;
+};
+
+} // namespace rs::ui

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <QColor>
+#include <QPalette>
+
+class QWidget;
+
+namespace rs::ui {
+
+// Colours for what the palette has no role for, readable on light and dark
+// palettes alike: text that reports an error, and the red of the [R] mark.
+bool isDark(const QPalette& palette);
+QColor errorTextColor(const QPalette& palette);
+
+// Shows the widget's text in the error colour.
+void markAsError(QWidget* widget);
+
+} // namespace rs::ui

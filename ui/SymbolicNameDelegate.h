@@ -1,0 +1,24 @@
+#pragma once
+
+#include <QStyledItemDelegate>
+
+namespace rs::ui {
+
+class VariableTableModel;
+
+// Edits a symbolic name and checks it as it is typed: the editor turns red
+// and says why while the name breaks the manual's rules or is taken.
+class SymbolicNameDelegate : public QStyledItemDelegate {
+    Q_OBJECT
+public:
+    explicit SymbolicNameDelegate(QObject* parent = nullptr);
+
+    QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
+                          const QModelIndex& index) const override;
+
+signals:
+    // Why the typed name is refused; empty once it is fine.
+    void problemChanged(const QString& problem) const;
+};
+
+} // namespace rs::ui

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <QPointer>
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+
+namespace rs::ui {
+
+class PageTitle;
+class ProjectDocument;
+class UnitSettingsForm;
+
+// The page of a unit (manual Part 1, 5): its type, instruction set, IDFIX and
+// description, edited in place; what its export and remanent variables take.
+class UnitPage : public QWidget {
+    Q_OBJECT
+public:
+    explicit UnitPage(QWidget* parent = nullptr);
+
+    void showUnit(ProjectDocument* document, int station);
+    int station() const { return m_station; }
+
+signals:
+    void remanentRequested(ProjectDocument* document, int station);
+
+private:
+    void refresh();
+    void apply();
+
+    PageTitle* m_title;
+    UnitSettingsForm* m_form;
+    QLabel* m_undeclared;
+    QLabel* m_exports;
+    QLabel* m_remanent;
+    QPushButton* m_remanentButton;
+    QPointer<ProjectDocument> m_document;
+    int m_station = 0;
+};
+
+} // namespace rs::ui
