@@ -4,6 +4,7 @@
 // and the same timer, edge and arithmetic rules as the simulator's engine, as
 // inline functions, so the comparison measures dispatch and nothing else.
 
+#include "sim/Timer.h"
 #include "sim/UnitMemory.h"
 
 #include <algorithm>
@@ -12,13 +13,7 @@
 
 namespace rs::native {
 
-struct Timer {
-    std::uint64_t lastScan = ~std::uint64_t{0};
-    std::int64_t elapsedMs = 0;
-    bool lastInput = false;
-    bool running = false;
-    bool output = false;
-};
+using sim::Timer;
 
 struct Edge {
     bool seen = false;
@@ -31,43 +26,12 @@ struct Plant {
     std::uint64_t scan = 0;
 };
 
-// kind: 0 on-delay, 1 pulse, 2 off-delay; as UnitEngine::timer.
+// As UnitEngine::timer: SM_TimerFreeze holds the next timer, then clears.
 inline bool timer(Timer& t, bool input, int kind, std::int64_t presetHundredths, bool negated,
                   std::int64_t cycleMs, std::uint64_t scan, std::uint8_t& freeze) {
-    if (t.lastScan + 1 != scan)
-        t = Timer{};
-    t.lastScan = scan;
     const std::int64_t dt = freeze ? 0 : cycleMs;
     freeze = 0;
-    const std::int64_t preset = 10 * presetHundredths;
-    const bool rising = input && !t.lastInput;
-    const bool falling = !input && t.lastInput;
-    if (kind == 0) {
-        t.elapsedMs = input ? (rising ? 0 : t.elapsedMs + dt) : 0;
-        t.output = input && t.elapsedMs >= preset;
-    } else if (kind == 1) {
-        if (rising) {
-            t.running = true;
-            t.elapsedMs = 0;
-        } else if (input && t.running) {
-            t.elapsedMs += dt;
-        }
-        if (!input || t.elapsedMs >= preset)
-            t.running = false;
-        t.output = input && t.running;
-    } else {
-        if (input) {
-            t.running = true;
-            t.elapsedMs = 0;
-        } else if (t.running) {
-            t.elapsedMs = falling ? 0 : t.elapsedMs + dt;
-            if (t.elapsedMs >= preset)
-                t.running = false;
-        }
-        t.output = t.running;
-    }
-    t.lastInput = input;
-    return negated ? input && !t.output : t.output;
+    return t.run(input, kind, 10 * presetHundredths, negated, dt, scan);
 }
 
 inline bool edge(Edge& e, bool value, bool rising) {

@@ -285,7 +285,7 @@ void UnitEngine::powerOn(const std::vector<lang::Address>& keep) {
         sequence.resetRequested = false;
     }
     std::fill(m_edges.begin(), m_edges.end(), EdgeState{});
-    std::fill(m_timers.begin(), m_timers.end(), TimerState{});
+    std::fill(m_timers.begin(), m_timers.end(), Timer{});
     std::fill(m_conduction.begin(), m_conduction.end(), Conduction::NotRun);
     m_scan = 0;
     applyForces();
@@ -528,49 +528,12 @@ arith:
 #pragma GCC diagnostic pop
 
 bool UnitEngine::timer(const Decoded& in, bool input, int cycleMs) {
-    TimerState& t = m_timers[in.slot];
-    // A timer whose line did not run in the previous scan starts afresh.
-    if (t.lastScan + 1 != m_scan)
-        t = TimerState{};
-    t.lastScan = m_scan;
     auto& freeze = m_memory.systemMemories[kTimerFreeze];
     const std::int64_t dt = freeze ? 0 : cycleMs;
     freeze = 0; // SM_TimerFreeze holds the next timer in the code only
     const std::int64_t preset =
         10 * ((in.flags & compiler::ConstantOperand) ? in.constant : in.readWord());
-    const bool rising = input && !t.lastInput;
-    const bool falling = !input && t.lastInput;
-    switch (static_cast<lang::TimerKind>(in.aux)) {
-    case lang::TimerKind::OnDelay:
-        t.elapsedMs = input ? (rising ? 0 : t.elapsedMs + dt) : 0;
-        t.output = input && t.elapsedMs >= preset;
-        break;
-    case lang::TimerKind::Pulse:
-        if (rising) {
-            t.running = true;
-            t.elapsedMs = 0;
-        } else if (input && t.running) {
-            t.elapsedMs += dt;
-        }
-        if (!input || t.elapsedMs >= preset)
-            t.running = false;
-        t.output = input && t.running;
-        break;
-    case lang::TimerKind::OffDelay:
-        if (input) {
-            t.running = true;
-            t.elapsedMs = 0;
-        } else if (t.running) {
-            t.elapsedMs = falling ? 0 : t.elapsedMs + dt;
-            if (t.elapsedMs >= preset)
-                t.running = false;
-        }
-        t.output = t.running;
-        break;
-    }
-    t.lastInput = input;
-    const bool negated = in.flags & compiler::Negated;
-    return negated ? input && !t.output : t.output;
+    return m_timers[in.slot].run(input, in.aux, preset, in.flags & compiler::Negated, dt, m_scan);
 }
 
 void UnitEngine::arithmetic(const Decoded& in, std::int64_t a, std::int64_t b) {

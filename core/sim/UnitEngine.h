@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Timer.h"
 #include "UnitMemory.h"
 #include "compiler/Image.h"
 
@@ -89,14 +90,6 @@ private:
         bool seen = false;
         bool last = false;
     };
-    struct TimerState {
-        std::uint64_t lastScan = ~std::uint64_t{0};
-        std::int64_t elapsedMs = 0;
-        bool lastInput = false;
-        bool running = false;
-        bool output = false;
-    };
-
     void decode();
     static std::uint8_t handlerFor(const Decoded& decoded);
     BitRef decodeBit(const lang::Address& address, bool forWriting);
@@ -115,7 +108,7 @@ private:
     std::vector<StepRun> m_steps;
     std::array<Sequence, 10> m_sequences;
     std::vector<EdgeState> m_edges;
-    std::vector<TimerState> m_timers;
+    std::vector<Timer> m_timers;
     std::vector<Conduction> m_conduction;
     std::vector<int> m_ranSteps; // steps run in the last scan, by index
     std::map<lang::Address, std::int64_t> m_forces;
