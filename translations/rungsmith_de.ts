@@ -16,16 +16,8 @@
         <translation>Ein Bild des Hauptfensters in OUT.png speichern und beenden.</translation>
     </message>
     <message>
-        <source>The page to show: text:N, the program text of unit N.</source>
-        <translation>Die anzuzeigende Seite: text:N, der Programmtext der Einheit N.</translation>
-    </message>
-    <message>
         <source>give at most one project file</source>
         <translation>höchstens eine Projektdatei angeben</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages so far are text:N, the program text of unit N</source>
-        <translation>unbekannte Seite &apos;%1&apos;; bisher gibt es die Seiten text:N, der Programmtext der Einheit N</translation>
     </message>
     <message>
         <source>the example</source>
@@ -39,6 +31,359 @@
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
+    <message>
+        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
+        <translation>Die Seite, die für Einheit N gezeigt wird: text:N (ihr Code), io:N (E/A-Optionen), variables:N oder unit:N.</translation>
+    </message>
+    <message>
+        <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
+        <translation>Dieses Mal mit heller oder dunkler Palette zeichnen oder mit der des Systems.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind text:N, io:N, variables:N und unit:N für Einheit N</translation>
+    </message>
+    <message>
+        <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
+        <translation>unbekanntes Design &apos;%1&apos;; verwenden Sie light, dark oder system</translation>
+    </message>
+</context>
+<context>
+    <name>UnitCaption</name>
+    <message>
+        <source>Pluto %1 — %2</source>
+        <translation>Pluto %1 — %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutput</name>
+    <message>
+        <source>Pluto %1, line %2:%3</source>
+        <translation>Pluto %1, Zeile %2:%3</translation>
+    </message>
+    <message>
+        <source>Pluto %1, settings</source>
+        <translation>Pluto %1, Einstellungen</translation>
+    </message>
+    <message>
+        <source>Pluto %1, %2</source>
+        <translation>Pluto %1, %2</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>%1 wird kompiliert …</translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation>%1 wird kompiliert</translation>
+    </message>
+    <message>
+        <source>Line %1 of the project file</source>
+        <translation>Zeile %1 der Projektdatei</translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation>Fehler: %1</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation>Erstellen &gt; Kompilieren (F7) prüft das Projekt und schreibt die kompilierte Datei.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvExportDialog</name>
+    <message>
+        <source>Export Variable Names from Pluto %1</source>
+        <translation>Variablennamen aus Pluto %1 exportieren</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Semicolon (;)</source>
+        <translation>Semikolon (;)</translation>
+    </message>
+    <message>
+        <source>Comma (,)</source>
+        <translation>Komma (,)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen …</translation>
+    </message>
+    <message>
+        <source>Variables:</source>
+        <translation>Variablen:</translation>
+    </message>
+    <message>
+        <source>&amp;Global and local</source>
+        <translation>&amp;Globale und lokale</translation>
+    </message>
+    <message>
+        <source>G&amp;lobal only</source>
+        <translation>Nur g&amp;lobale</translation>
+    </message>
+    <message>
+        <source>L&amp;ocal only</source>
+        <translation>Nur l&amp;okale</translation>
+    </message>
+    <message>
+        <source>&amp;Prefix for names:</source>
+        <translation>&amp;Präfix für Namen:</translation>
+    </message>
+    <message>
+        <source>Sort by:</source>
+        <translation>Sortieren nach:</translation>
+    </message>
+    <message>
+        <source>&amp;Variable</source>
+        <translation>&amp;Variable</translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name</source>
+        <translation>Symbolischer &amp;Name</translation>
+    </message>
+    <message>
+        <source>&amp;Separator:</source>
+        <translation>&amp;Trennzeichen:</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvImportDialog</name>
+    <message>
+        <source>semicolons</source>
+        <translation>Semikolons</translation>
+    </message>
+    <message>
+        <source>tabs</source>
+        <translation>Tabulatoren</translation>
+    </message>
+    <message>
+        <source>commas</source>
+        <translation>Kommas</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Variablennamen in Pluto %1 importieren</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen …</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <source>&amp;Remove prefix from names:</source>
+        <translation>Präfix von Namen &amp;entfernen:</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symbolischer Name</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Left out because</source>
+        <translation>Ausgelassen, weil</translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation>&amp;Importieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Choose a CSV file with the columns Variable, Symbolic Name and Description. Nothing changes before you press Import.</source>
+        <translation>Wählen Sie eine CSV-Datei mit den Spalten Variable, Symbolic Name und Description. Nichts ändert sich, bevor Sie Importieren drücken.</translation>
+    </message>
+    <message>
+        <source>Fields separated by %1. %2 to change, %3 unchanged, %4 left out.</source>
+        <translation>Felder durch %1 getrennt. %2 zu ändern, %3 unverändert, %4 ausgelassen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s)</source>
+        <translation>
+            <numerusform>%n Variable</numerusform>
+            <numerusform>%n Variablen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s)</source>
+        <translation>
+            <numerusform>%n Zeile</numerusform>
+            <numerusform>%n Zeilen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::IoOptionsPage</name>
+    <message>
+        <source>Failsafe inputs</source>
+        <translation>Fehlersichere Eingänge</translation>
+    </message>
+    <message>
+        <source>Failsafe inputs / non-failsafe outputs</source>
+        <translation>Fehlersichere Eingänge / nicht fehlersichere Ausgänge</translation>
+    </message>
+    <message>
+        <source>Analogue inputs</source>
+        <translation>Analoge Eingänge</translation>
+    </message>
+    <message>
+        <source>Safety outputs: test pulses</source>
+        <translation>Sicherheitsausgänge: Testpulse</translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation>Undefiniert</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Eingang</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgabe</translation>
+    </message>
+    <message>
+        <source>Light button</source>
+        <translation>Leuchttaster</translation>
+    </message>
+    <message>
+        <source>Analogue 0-10 V</source>
+        <translation>Analog 0-10 V</translation>
+    </message>
+    <message>
+        <source>Analogue 4-20 mA</source>
+        <translation>Analog 4-20 mA</translation>
+    </message>
+    <message>
+        <source>Counter, up</source>
+        <translation>Zähler, aufwärts</translation>
+    </message>
+    <message>
+        <source>Counter, up/down</source>
+        <translation>Zähler, auf/ab</translation>
+    </message>
+    <message>
+        <source>Static</source>
+        <translation>Statisch</translation>
+    </message>
+    <message>
+        <source>A_Pulse</source>
+        <translation>A_Pulse</translation>
+    </message>
+    <message>
+        <source>B_Pulse</source>
+        <translation>B_Pulse</translation>
+    </message>
+    <message>
+        <source>C_Pulse</source>
+        <translation>C_Pulse</translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Optionen</translation>
+    </message>
+    <message>
+        <source>Type of signal</source>
+        <translation>Signalart</translation>
+    </message>
+    <message>
+        <source>Signal shape</source>
+        <translation>Signalform</translation>
+    </message>
+    <message>
+        <source>No_Test_Pulse</source>
+        <translation>No_Test_Pulse</translation>
+    </message>
+    <message>
+        <source>Non_Inv</source>
+        <translation>Non_Inv</translation>
+    </message>
+    <message>
+        <source>No_Filt</source>
+        <translation>No_Filt</translation>
+    </message>
+    <message>
+        <source>X_Talk</source>
+        <translation>X_Talk</translation>
+    </message>
+    <message>
+        <source>The configuration must match the wiring. Q0..Q3 are not listed: they can be used in one way only.</source>
+        <translation>Die Konfiguration muss zur Verdrahtung passen. Q0..Q3 fehlen in der Liste: Sie lassen sich nur auf eine Weise verwenden.</translation>
+    </message>
+    <message>
+        <source>%1 — I/O Options</source>
+        <translation>%1 — E/A-Optionen</translation>
+    </message>
+    <message>
+        <source>Choose from the lists what each terminal is wired for; combinations the unit cannot take are not offered.</source>
+        <translation>Wählen Sie aus den Listen, wofür jede Klemme verdrahtet ist; Kombinationen, die die Einheit nicht kann, werden nicht angeboten.</translation>
+    </message>
+    <message>
+        <source>Set I/O Options of %1</source>
+        <translation>E/A-Optionen von %1 setzen</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -47,36 +392,16 @@
         <translation>Pluto-Projekte (*.sps);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>untitled.sps</source>
-        <translation>unbenannt.sps</translation>
-    </message>
-    <message>
-        <source>&amp;New</source>
-        <translation>&amp;Neu</translation>
-    </message>
-    <message>
         <source>Start a new project</source>
         <translation>Ein neues Projekt beginnen</translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
-        <translation>&amp;Öffnen...</translation>
     </message>
     <message>
         <source>Open a project file</source>
         <translation>Eine Projektdatei öffnen</translation>
     </message>
     <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
         <source>Save the project under a new name</source>
@@ -147,10 +472,6 @@
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <source>File</source>
-        <translation>Datei</translation>
-    </message>
-    <message>
         <source>Problems</source>
         <translation>Probleme</translation>
     </message>
@@ -208,20 +529,12 @@
         </translation>
     </message>
     <message>
-        <source>The text is already formatted.</source>
-        <translation>Der Text ist bereits formatiert.</translation>
-    </message>
-    <message>
         <source>Formatted.</source>
         <translation>Formatiert.</translation>
     </message>
     <message>
         <source>About Rungsmith</source>
         <translation>Über Rungsmith</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: write and check programs in the Pluto text language.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Programme in der Pluto-Textsprache schreiben und prüfen.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -234,6 +547,323 @@
     <message>
         <source>&amp;Clear Menu</source>
         <translation>Menü &amp;leeren</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>The project reads without errors now; its pages are back.</source>
+        <translation>Das Projekt lässt sich jetzt fehlerfrei lesen; seine Seiten sind wieder da.</translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation>&amp;Neues Projekt …</translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation>Projekt ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation>Projekt speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation>A&amp;lle speichern</translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation>Alle offenen Projekte speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation>Projekt s&amp;chließen</translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation>Das Projekt schließen</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation>&amp;Programmtext …</translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation>Das Programm nur in der Sprache schreiben, für einen Texteditor oder den Originalcompiler</translation>
+    </message>
+    <message>
+        <source>Pr&amp;eferences...</source>
+        <translation>&amp;Einstellungen …</translation>
+    </message>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Neuer &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Dem Projekt eine Pluto-Einheit hinzufügen</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Neue &amp;Sequenz …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>Pluto &amp;entfernen …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manente Variablen …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>Variablennamen &amp;importieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>Variablennamen e&amp;xportieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>&amp;Compile</source>
+        <translation>&amp;Kompilieren</translation>
+    </message>
+    <message>
+        <source>Check the project and write the compiled file (.hps)</source>
+        <translation>Das Projekt prüfen und die kompilierte Datei (.hps) schreiben</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation>&amp;Projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Build</source>
+        <translation>E&amp;rstellen</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>Projects</source>
+        <translation>Projekte</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgabe</translation>
+    </message>
+    <message>
+        <source>Compiling</source>
+        <translation>Kompiliert</translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation>%1 geöffnet. Die Datei hat Fehler: Beheben Sie sie in ihrem Text.</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation>Der Code von Pluto %1 hat Fehler, deshalb gehören Ihre letzten Änderungen daran nicht zum Projekt. Das Projekt ohne sie speichern?</translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation>Programmtext exportieren</translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation>-programm</translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation>Programmtext nach %1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Code With Errors</source>
+        <translation>Code mit Fehlern</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so it cannot be read into the project.</source>
+        <translation>Der Code von Pluto %1 hat Fehler und kann deshalb nicht in das Projekt gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Keep editing to fix them, or discard the changes since the code last read without errors.</source>
+        <translation>Bearbeiten Sie weiter, um sie zu beheben, oder verwerfen Sie die Änderungen seit dem letzten fehlerfreien Stand.</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Editing</source>
+        <translation>&amp;Weiter bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Neuer Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Das Projekt hat 32 Einheiten, die höchste Zahl, die ein Bus haben kann.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Neuer Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Neue Sequenz</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 hat alle neun Sequenzen.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sequenznummer für Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Neue Sequenz %1 von Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Pluto entfernen</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>%1 mit Code, Namen und Beschreibungen aus dem Projekt entfernen? Bearbeiten &gt; Rückgängig holt die Einheit zurück.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Pluto %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Remanente Variablen von Pluto %1 setzen</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanente Variablen</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Variablennamen in Pluto %1 importieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>%n Variable importiert.</numerusform>
+            <numerusform>%n Variablen importiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Variablennamen exportieren</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Export Program &amp;Text...</source>
+        <translation>Programm&amp;text exportieren …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names to Pluto...</source>
+        <translation>Variablennamen in Pluto &amp;importieren …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names from Pluto...</source>
+        <translation>Variablennamen aus Pluto e&amp;xportieren …</translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanente Variablen …</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>%1 wird kompiliert …</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilieren</translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation>Fehlerfrei kompiliert. Speichern Sie das Projekt, um die kompilierte Datei zu schreiben.</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation>Projekte wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation>Rungsmith wurde nicht ordnungsgemäß beendet. Diese Projekte haben Änderungen, die automatisch gesichert wurden:</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Projekte, Einheiten, E/A-Optionen, Variablen und der Programmtext, geprüft und kompiliert.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewProjectDialog</name>
+    <message>
+        <source>New project</source>
+        <translation>Neues Projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation>&amp;Quellcode in die kompilierte Datei aufnehmen</translation>
+    </message>
+    <message>
+        <source>New Project</source>
+        <translation>Neues Projekt</translation>
+    </message>
+    <message>
+        <source>For your own notes</source>
+        <translation>Für Ihre eigenen Notizen</translation>
+    </message>
+    <message>
+        <source>The project name is downloaded to the units and checked when going online. With the source code included, a program uploaded from a unit can be opened again; the file grows and anyone with the password can change the program.</source>
+        <translation>Der Projektname wird in die Einheiten geladen und beim Online-Gehen geprüft. Mit eingeschlossenem Quellcode lässt sich ein aus einer Einheit hochgeladenes Programm wieder öffnen; die Datei wird größer, und jeder mit dem Passwort kann das Programm ändern.</translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation>Projekt&amp;name:</translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation>Projekt&amp;beschreibung:</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewUnitDialog</name>
+    <message>
+        <source>New Pluto</source>
+        <translation>Neuer Pluto</translation>
+    </message>
+    <message>
+        <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
+        <translation>Wählen Sie den Pluto-Typ und eine Stationsnummer, die keine andere Einheit des Projekts hat. Die Stationsnummer ist Teil jeder Adresse der Einheit: Die Eingänge von Pluto 1 sind I1.0, I1.1, …</translation>
     </message>
 </context>
 <context>
@@ -300,6 +930,105 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::PreferencesDialog</name>
+    <message>
+        <source>Start with ladder diagrams &amp;expanded</source>
+        <translation>Kontaktpläne &amp;aufgeklappt öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Unconfigured I/O warnings at compile time</source>
+        <translation>Warnungen für &amp;nicht konfigurierte E/A beim Kompilieren</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Ladder colours</source>
+        <translation>Farben des Kontaktplans</translation>
+    </message>
+    <message>
+        <source>Ladder background:</source>
+        <translation>Hintergrund:</translation>
+    </message>
+    <message>
+        <source>Focused ladder background:</source>
+        <translation>Hintergrund mit Fokus:</translation>
+    </message>
+    <message>
+        <source>Ladder component body:</source>
+        <translation>Bauteilkörper:</translation>
+    </message>
+    <message>
+        <source>Ladder lines:</source>
+        <translation>Linien:</translation>
+    </message>
+    <message>
+        <source>Ladder lines off:</source>
+        <translation>Linien, aus:</translation>
+    </message>
+    <message>
+        <source>Ladder lines on:</source>
+        <translation>Linien, ein:</translation>
+    </message>
+    <message>
+        <source>&amp;Default Colours</source>
+        <translation>&amp;Standardfarben</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Update interval in online mode. A shorter interval makes the computer slower.</source>
+        <translation>Aktualisierungsintervall im Online-Modus. Ein kürzeres Intervall macht den Rechner langsamer.</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Sprache des Systems</translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation>Wie das System</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Hell</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Dunkel</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>A new language shows when Rungsmith starts again.</source>
+        <translation>Eine neue Sprache erscheint beim nächsten Start von Rungsmith.</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Allgemein</translation>
+    </message>
+    <message>
+        <source>Screen update &amp;interval:</source>
+        <translation>&amp;Aktualisierungsintervall:</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>&amp;Theme:</source>
+        <translation>&amp;Design:</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Automatisch speichern alle:</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ProblemsView</name>
     <message>
         <source>Location</source>
@@ -331,6 +1060,404 @@
     <message>
         <source>Warning message</source>
         <translation>Warnmeldung</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectPage</name>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation>&amp;Quellcode in die kompilierte Datei aufnehmen</translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation>Projekt&amp;name:</translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation>Projekt&amp;beschreibung:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>Units:</source>
+        <translation>Einheiten:</translation>
+    </message>
+    <message>
+        <source>Include Source Code</source>
+        <translation>Quellcode aufnehmen</translation>
+    </message>
+    <message>
+        <source>Leave Out Source Code</source>
+        <translation>Quellcode weglassen</translation>
+    </message>
+    <message>
+        <source>Project %1</source>
+        <translation>Projekt %1</translation>
+    </message>
+    <message>
+        <source>Not saved yet</source>
+        <translation>Noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>None yet. Add one with Project &gt; New Pluto.</source>
+        <translation>Noch keine. Fügen Sie eine mit Projekt &gt; Neuer Pluto hinzu.</translation>
+    </message>
+    <message>
+        <source>Rename Project</source>
+        <translation>Projekt umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Project Description</source>
+        <translation>Projektbeschreibung ändern</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectTree</name>
+    <message>
+        <source>Projects</source>
+        <translation>Projekte</translation>
+    </message>
+    <message>
+        <source>Project Text</source>
+        <translation>Projekttext</translation>
+    </message>
+    <message>
+        <source>I/O Options</source>
+        <translation>E/A-Optionen</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>PLC Code</source>
+        <translation>SPS-Code</translation>
+    </message>
+    <message>
+        <source>Sequence %1</source>
+        <translation>Sequenz %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::RemanentDialog</name>
+    <message>
+        <source>Remanent Variables of Pluto %1</source>
+        <translation>Remanente Variablen von Pluto %1</translation>
+    </message>
+    <message>
+        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <translation>Remanente Variablen behalten ihren Wert bei ausgeschalteter Versorgung. Register R100-R131 und Merker M100-M131 können in beliebiger Kombination remanent sein, nur kann mit allen Registern kein Merker remanent sein.</translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation>Alle</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>All 32 registers are remanent, so no memory can be.</source>
+        <translation>Alle 32 Register sind remanent, deshalb kann kein Merker remanent sein.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::TextPage</name>
+    <message>
+        <source>%1 — Project Text</source>
+        <translation>%1 — Projekttext</translation>
+    </message>
+    <message>
+        <source>This file has errors, so it is shown as text until they are fixed. Lines with errors could not be shown on the other pages.</source>
+        <translation>Diese Datei hat Fehler und wird deshalb als Text gezeigt, bis sie behoben sind. Zeilen mit Fehlern ließen sich auf den anderen Seiten nicht zeigen.</translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation>%1 — SPS-Code</translation>
+    </message>
+    <message>
+        <source>Edit Code of Pluto %1</source>
+        <translation>Code von Pluto %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitPage</name>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanente Variablen …</translation>
+    </message>
+    <message>
+        <source>This unit has code but no &apos;! id_pluto&apos; declaration. Any change below writes one.</source>
+        <translation>Diese Einheit hat Code, aber keine &apos;! id_pluto&apos;-Deklaration. Jede Änderung unten schreibt eine.</translation>
+    </message>
+    <message>
+        <source>Variables on the bus and at power off</source>
+        <translation>Variablen auf dem Bus und bei ausgeschalteter Versorgung</translation>
+    </message>
+    <message>
+        <source>Export variables:</source>
+        <translation>Exportvariablen:</translation>
+    </message>
+    <message>
+        <source>Remanent variables:</source>
+        <translation>Remanente Variablen:</translation>
+    </message>
+    <message>
+        <source>Station %1 of project %2</source>
+        <translation>Station %1 von Projekt %2</translation>
+    </message>
+    <message>
+        <source>need instruction set 3</source>
+        <translation>benötigen Befehlssatz 3</translation>
+    </message>
+    <message>
+        <source>%1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation>%1 von %2 zusätzlichen Telegrammpaaren (Projekt: %3 von %4)</translation>
+    </message>
+    <message>
+        <source>this type has none</source>
+        <translation>dieser Typ hat keine</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Change Pluto %1</source>
+        <translation>Pluto %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitSettingsForm</name>
+    <message>
+        <source>Instruction set &amp;2</source>
+        <translation>Befehlssatz &amp;2</translation>
+    </message>
+    <message>
+        <source>Instruction set &amp;3</source>
+        <translation>Befehlssatz &amp;3</translation>
+    </message>
+    <message>
+        <source>Instruction set 3 needs Pluto OS 3.0 or later. It adds the off-delay timer, multiplication and division with constants, double registers (32 bits), &quot;not positive edge&quot; and &quot;not negative edge&quot;, register bits and a larger address range.</source>
+        <translation>Befehlssatz 3 benötigt Pluto OS 3.0 oder neuer. Er bringt den ausschaltverzögerten Timer, Multiplikation und Division mit Konstanten, Doppelregister (32 Bit), &quot;nicht positive Flanke&quot; und &quot;nicht negative Flanke&quot;, Registerbits und einen größeren Adressbereich.</translation>
+    </message>
+    <message>
+        <source>IDFIX number</source>
+        <translation>IDFIX-Nummer</translation>
+    </message>
+    <message>
+        <source>No IDFIX</source>
+        <translation>Kein IDFIX</translation>
+    </message>
+    <message>
+        <source>12 hexadecimal digits, e.g. 000034AD4AE1</source>
+        <translation>12 Hexadezimalziffern, z. B. 000034AD4AE1</translation>
+    </message>
+    <message>
+        <source>For your own notes; not downloaded to the unit</source>
+        <translation>Für Ihre eigenen Notizen; wird nicht in die Einheit geladen</translation>
+    </message>
+    <message>
+        <source>&amp;Station number:</source>
+        <translation>&amp;Stationsnummer:</translation>
+    </message>
+    <message>
+        <source>Pluto &amp;type:</source>
+        <translation>Pluto-&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>Instruction set:</source>
+        <translation>Befehlssatz:</translation>
+    </message>
+    <message>
+        <source>&amp;IDFIX:</source>
+        <translation>&amp;IDFIX:</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beschreibung:</translation>
+    </message>
+    <message numerus="yes">
+        <source>The IDFIX number has %n of its 12 hexadecimal digits. Choose &quot;No IDFIX&quot; if the unit has no identifier circuit.</source>
+        <translation>
+            <numerusform>Die IDFIX-Nummer hat %n von 12 Hexadezimalziffern. Wählen Sie &quot;Kein IDFIX&quot;, wenn die Einheit keinen Kennungsbaustein hat.</numerusform>
+            <numerusform>Die IDFIX-Nummer hat %n von 12 Hexadezimalziffern. Wählen Sie &quot;Kein IDFIX&quot;, wenn die Einheit keinen Kennungsbaustein hat.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The %1 runs instruction set 2 only.</source>
+        <translation>%1 kann nur Befehlssatz 2.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariableTableModel</name>
+    <message>
+        <source>Safety Inputs</source>
+        <translation>Sicherheitseingänge</translation>
+    </message>
+    <message>
+        <source>Safety Outputs</source>
+        <translation>Sicherheitsausgänge</translation>
+    </message>
+    <message>
+        <source>NonSafety Outputs</source>
+        <translation>Nicht sichere Ausgänge</translation>
+    </message>
+    <message>
+        <source>Global Memories</source>
+        <translation>Globale Merker</translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Double Registers</source>
+        <translation>Doppelregister</translation>
+    </message>
+    <message>
+        <source>System Memories</source>
+        <translation>Systemmerker</translation>
+    </message>
+    <message>
+        <source>System Registers</source>
+        <translation>Systemregister</translation>
+    </message>
+    <message>
+        <source>AS-i Slaves</source>
+        <translation>AS-i-Slaves</translation>
+    </message>
+    <message>
+        <source>Used in the code of the unit</source>
+        <translation>Im Code der Einheit verwendet</translation>
+    </message>
+    <message>
+        <source>[G] Global variable: visible to the other Plutos on the bus.</source>
+        <translation>[G] Globale Variable: für die anderen Plutos am Bus sichtbar.</translation>
+    </message>
+    <message>
+        <source>[E] Exported variable: made visible to the other Plutos on the bus.</source>
+        <translation>[E] Exportierte Variable: für die anderen Plutos am Bus sichtbar gemacht.</translation>
+    </message>
+    <message>
+        <source>[R] Remanent variable: keeps its value when the power is off.</source>
+        <translation>[R] Remanente Variable: behält ihren Wert bei ausgeschalteter Versorgung.</translation>
+    </message>
+    <message>
+        <source>The manuals&apos; name of this system variable</source>
+        <translation>Der Name dieser Systemvariablen in den Handbüchern</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Attributes</source>
+        <translation>Attribute</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symbolischer Name</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Remove Name of %1</source>
+        <translation>Namen von %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation>%1 %2 nennen</translation>
+    </message>
+    <message>
+        <source>Describe %1</source>
+        <translation>%1 beschreiben</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariablesPage</name>
+    <message>
+        <source>Filter by variable, name or description</source>
+        <translation>Nach Variable, Name oder Beschreibung filtern</translation>
+    </message>
+    <message>
+        <source>Variable attributes: [G] global, visible to the other Plutos on the bus; [E] exported; [R] remanent, kept at power off.</source>
+        <translation>Variablenattribute: [G] global, für die anderen Plutos am Bus sichtbar; [E] exportiert; [R] remanent, bleibt bei ausgeschalteter Versorgung erhalten.</translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanente Variablen …</translation>
+    </message>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation>CSV &amp;importieren …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation>CSV e&amp;xportieren …</translation>
+    </message>
+    <message>
+        <source>%1 — Variables</source>
+        <translation>%1 — Variablen</translation>
+    </message>
+    <message>
+        <source>Export variables need instruction set 3.</source>
+        <translation>Exportvariablen benötigen Befehlssatz 3.</translation>
+    </message>
+    <message>
+        <source>Export variables: %1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation>Exportvariablen: %1 von %2 zusätzlichen Telegrammpaaren (Projekt: %3 von %4)</translation>
+    </message>
+    <message>
+        <source>Export %1</source>
+        <translation>%1 exportieren</translation>
+    </message>
+    <message>
+        <source>Stop Exporting %1</source>
+        <translation>%1 nicht mehr exportieren</translation>
+    </message>
+    <message>
+        <source>&amp;Export Variable [E]</source>
+        <translation>Variable &amp;exportieren [E]</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names from CSV...</source>
+        <translation>Variablennamen aus CSV &amp;importieren …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names to CSV...</source>
+        <translation>Variablennamen in CSV e&amp;xportieren …</translation>
     </message>
 </context>
 </TS>

@@ -16,15 +16,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: text:N, the program text of unit N.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>give at most one project file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages so far are text:N, the program text of unit N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -39,6 +31,359 @@
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>UnitCaption</name>
+    <message>
+        <source>Pluto %1 — %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutput</name>
+    <message>
+        <source>Pluto %1, line %2:%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1, settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line %1 of the project file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvExportDialog</name>
+    <message>
+        <source>Export Variable Names from Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Semicolon (;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comma (,)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variables:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Global and local</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G&amp;lobal only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>L&amp;ocal only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Prefix for names:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sort by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Separator:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvImportDialog</name>
+    <message>
+        <source>semicolons</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tabs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>commas</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove prefix from names:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left out because</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a CSV file with the columns Variable, Symbolic Name and Description. Nothing changes before you press Import.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fields separated by %1. %2 to change, %3 unchanged, %4 left out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s)</source>
+        <translation>
+            <numerusform>%n variable</numerusform>
+            <numerusform>%n variables</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s)</source>
+        <translation>
+            <numerusform>%n row</numerusform>
+            <numerusform>%n rows</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::IoOptionsPage</name>
+    <message>
+        <source>Failsafe inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Failsafe inputs / non-failsafe outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safety outputs: test pulses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light button</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue 0-10 V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue 4-20 mA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Counter, up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Counter, up/down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Static</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A_Pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B_Pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C_Pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type of signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No_Test_Pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Non_Inv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No_Filt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X_Talk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The configuration must match the wiring. Q0..Q3 are not listed: they can be used in one way only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — I/O Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose from the lists what each terminal is wired for; combinations the unit cannot take are not offered.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set I/O Options of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -47,19 +392,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>untitled.sps</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;New</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Start a new project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -67,15 +400,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Save the project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -147,10 +472,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>File</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -208,19 +529,11 @@
         </translation>
     </message>
     <message>
-        <source>The text is already formatted.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Formatted.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>About Rungsmith</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: write and check programs in the Pluto text language.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -233,6 +546,323 @@
     </message>
     <message>
         <source>&amp;Clear Menu</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project reads without errors now; its pages are back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pr&amp;eferences...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Compile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the project and write the compiled file (.hps)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Build</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Projects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Code With Errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so it cannot be read into the project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep editing to fix them, or discard the changes since the code last read without errors.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keep Editing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Imported %n variable.</numerusform>
+            <numerusform>Imported %n variables.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Program &amp;Text...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names to Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names from Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewProjectDialog</name>
+    <message>
+        <source>New project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For your own notes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project name is downloaded to the units and checked when going online. With the source code included, a program uploaded from a unit can be opened again; the file grows and anyone with the password can change the program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewUnitDialog</name>
+    <message>
+        <source>New Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -300,6 +930,105 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::PreferencesDialog</name>
+    <message>
+        <source>Start with ladder diagrams &amp;expanded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Unconfigured I/O warnings at compile time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder background:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Focused ladder background:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder component body:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder lines:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder lines off:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder lines on:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Default Colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update interval in online mode. A shorter interval makes the computer slower.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new language shows when Rungsmith starts again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Screen update &amp;interval:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Theme:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ProblemsView</name>
     <message>
         <source>Location</source>
@@ -330,6 +1059,404 @@
     </message>
     <message>
         <source>Warning message</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectPage</name>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Units:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Include Source Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave Out Source Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None yet. Add one with Project &gt; New Pluto.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rename Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Project Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectTree</name>
+    <message>
+        <source>Projects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I/O Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::RemanentDialog</name>
+    <message>
+        <source>Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All 32 registers are remanent, so no memory can be.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::TextPage</name>
+    <message>
+        <source>%1 — Project Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This file has errors, so it is shown as text until they are fixed. Lines with errors could not be shown on the other pages.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit Code of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitPage</name>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This unit has code but no &apos;! id_pluto&apos; declaration. Any change below writes one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variables on the bus and at power off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export variables:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent variables:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station %1 of project %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>need instruction set 3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this type has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitSettingsForm</name>
+    <message>
+        <source>Instruction set &amp;2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instruction set &amp;3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instruction set 3 needs Pluto OS 3.0 or later. It adds the off-delay timer, multiplication and division with constants, double registers (32 bits), &quot;not positive edge&quot; and &quot;not negative edge&quot;, register bits and a larger address range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IDFIX number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No IDFIX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>12 hexadecimal digits, e.g. 000034AD4AE1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For your own notes; not downloaded to the unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Station number:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto &amp;type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instruction set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;IDFIX:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The IDFIX number has %n of its 12 hexadecimal digits. Choose &quot;No IDFIX&quot; if the unit has no identifier circuit.</source>
+        <translation>
+            <numerusform>The IDFIX number has %n of its 12 hexadecimal digits. Choose &quot;No IDFIX&quot; if the unit has no identifier circuit.</numerusform>
+            <numerusform>The IDFIX number has %n of its 12 hexadecimal digits. Choose &quot;No IDFIX&quot; if the unit has no identifier circuit.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The %1 runs instruction set 2 only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariableTableModel</name>
+    <message>
+        <source>Safety Inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safety Outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NonSafety Outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Global Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i Slaves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Used in the code of the unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[G] Global variable: visible to the other Plutos on the bus.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[E] Exported variable: made visible to the other Plutos on the bus.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[R] Remanent variable: keeps its value when the power is off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The manuals&apos; name of this system variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attributes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Name of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Describe %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariablesPage</name>
+    <message>
+        <source>Filter by variable, name or description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable attributes: [G] global, visible to the other Plutos on the bus; [E] exported; [R] remanent, kept at power off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export variables need instruction set 3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export variables: %1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop Exporting %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export Variable [E]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names from CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names to CSV...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -16,16 +16,8 @@
         <translation>Spara en bild av huvudfönstret i OUT.png och avsluta.</translation>
     </message>
     <message>
-        <source>The page to show: text:N, the program text of unit N.</source>
-        <translation>Sidan som ska visas: text:N, programtexten för enhet N.</translation>
-    </message>
-    <message>
         <source>give at most one project file</source>
         <translation>ange högst en projektfil</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages so far are text:N, the program text of unit N</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna hittills är text:N, programtexten för enhet N</translation>
     </message>
     <message>
         <source>the example</source>
@@ -39,6 +31,359 @@
         <source>cannot write %1: %2</source>
         <translation>kan inte skriva %1: %2</translation>
     </message>
+    <message>
+        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
+        <translation>Sidan som ska visas för enhet N: text:N (dess kod), io:N (I/O-alternativ), variables:N eller unit:N.</translation>
+    </message>
+    <message>
+        <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
+        <translation>Rita med ljus eller mörk palett, eller systemets, den här gången.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är text:N, io:N, variables:N och unit:N för enhet N</translation>
+    </message>
+    <message>
+        <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
+        <translation>okänt tema &apos;%1&apos;; använd light, dark eller system</translation>
+    </message>
+</context>
+<context>
+    <name>UnitCaption</name>
+    <message>
+        <source>Pluto %1 — %2</source>
+        <translation>Pluto %1 — %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutput</name>
+    <message>
+        <source>Pluto %1, line %2:%3</source>
+        <translation>Pluto %1, rad %2:%3</translation>
+    </message>
+    <message>
+        <source>Pluto %1, settings</source>
+        <translation>Pluto %1, inställningar</translation>
+    </message>
+    <message>
+        <source>Pluto %1, %2</source>
+        <translation>Pluto %1, %2</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Plats</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meddelande</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>Kompilerar %1 …</translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation>Kompilerar %1</translation>
+    </message>
+    <message>
+        <source>Line %1 of the project file</source>
+        <translation>Rad %1 i projektfilen</translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation>fel: %1</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>varning: %1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation>Bygg &gt; Kompilera (F7) kontrollerar projektet och skriver den kompilerade filen.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvExportDialog</name>
+    <message>
+        <source>Export Variable Names from Pluto %1</source>
+        <translation>Exportera variabelnamn från Pluto %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>inga</translation>
+    </message>
+    <message>
+        <source>Semicolon (;)</source>
+        <translation>Semikolon (;)</translation>
+    </message>
+    <message>
+        <source>Comma (,)</source>
+        <translation>Komma (,)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Bläddra …</translation>
+    </message>
+    <message>
+        <source>Variables:</source>
+        <translation>Variabler:</translation>
+    </message>
+    <message>
+        <source>&amp;Global and local</source>
+        <translation>&amp;Globala och lokala</translation>
+    </message>
+    <message>
+        <source>G&amp;lobal only</source>
+        <translation>Endast g&amp;lobala</translation>
+    </message>
+    <message>
+        <source>L&amp;ocal only</source>
+        <translation>Endast l&amp;okala</translation>
+    </message>
+    <message>
+        <source>&amp;Prefix for names:</source>
+        <translation>&amp;Prefix för namn:</translation>
+    </message>
+    <message>
+        <source>Sort by:</source>
+        <translation>Sortera efter:</translation>
+    </message>
+    <message>
+        <source>&amp;Variable</source>
+        <translation>&amp;Variabel</translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name</source>
+        <translation>Symboliskt &amp;namn</translation>
+    </message>
+    <message>
+        <source>&amp;Separator:</source>
+        <translation>&amp;Avgränsare:</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Fil:</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportera</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV-filer (*.csv);;Alla filer (*)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CsvImportDialog</name>
+    <message>
+        <source>semicolons</source>
+        <translation>semikolon</translation>
+    </message>
+    <message>
+        <source>tabs</source>
+        <translation>tabbar</translation>
+    </message>
+    <message>
+        <source>commas</source>
+        <translation>kommatecken</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Importera variabelnamn till Pluto %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>inga</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Bläddra …</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Fil:</translation>
+    </message>
+    <message>
+        <source>&amp;Remove prefix from names:</source>
+        <translation>&amp;Ta bort prefix från namn:</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Rad</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabel</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symboliskt namn</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beskrivning</translation>
+    </message>
+    <message>
+        <source>Left out because</source>
+        <translation>Utelämnad eftersom</translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation>&amp;Importera</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-filer (*.csv *.txt);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>Choose a CSV file with the columns Variable, Symbolic Name and Description. Nothing changes before you press Import.</source>
+        <translation>Välj en CSV-fil med kolumnerna Variable, Symbolic Name och Description. Inget ändras innan du trycker på Importera.</translation>
+    </message>
+    <message>
+        <source>Fields separated by %1. %2 to change, %3 unchanged, %4 left out.</source>
+        <translation>Fälten är åtskilda med %1. %2 ändras, %3 oförändrade, %4 utelämnade.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s)</source>
+        <translation>
+            <numerusform>%n variabel</numerusform>
+            <numerusform>%n variabler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s)</source>
+        <translation>
+            <numerusform>%n rad</numerusform>
+            <numerusform>%n rader</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::IoOptionsPage</name>
+    <message>
+        <source>Failsafe inputs</source>
+        <translation>Felsäkra ingångar</translation>
+    </message>
+    <message>
+        <source>Failsafe inputs / non-failsafe outputs</source>
+        <translation>Felsäkra ingångar / icke felsäkra utgångar</translation>
+    </message>
+    <message>
+        <source>Analogue inputs</source>
+        <translation>Analoga ingångar</translation>
+    </message>
+    <message>
+        <source>Safety outputs: test pulses</source>
+        <translation>Säkerhetsutgångar: testpulser</translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation>Odefinierad</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Ingång</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Utdata</translation>
+    </message>
+    <message>
+        <source>Light button</source>
+        <translation>Tryckknapp med lampa</translation>
+    </message>
+    <message>
+        <source>Analogue 0-10 V</source>
+        <translation>Analog 0-10 V</translation>
+    </message>
+    <message>
+        <source>Analogue 4-20 mA</source>
+        <translation>Analog 4-20 mA</translation>
+    </message>
+    <message>
+        <source>Counter, up</source>
+        <translation>Räknare, upp</translation>
+    </message>
+    <message>
+        <source>Counter, up/down</source>
+        <translation>Räknare, upp/ned</translation>
+    </message>
+    <message>
+        <source>Static</source>
+        <translation>Statisk</translation>
+    </message>
+    <message>
+        <source>A_Pulse</source>
+        <translation>A_Pulse</translation>
+    </message>
+    <message>
+        <source>B_Pulse</source>
+        <translation>B_Pulse</translation>
+    </message>
+    <message>
+        <source>C_Pulse</source>
+        <translation>C_Pulse</translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Alternativ</translation>
+    </message>
+    <message>
+        <source>Type of signal</source>
+        <translation>Signaltyp</translation>
+    </message>
+    <message>
+        <source>Signal shape</source>
+        <translation>Signalform</translation>
+    </message>
+    <message>
+        <source>No_Test_Pulse</source>
+        <translation>No_Test_Pulse</translation>
+    </message>
+    <message>
+        <source>Non_Inv</source>
+        <translation>Non_Inv</translation>
+    </message>
+    <message>
+        <source>No_Filt</source>
+        <translation>No_Filt</translation>
+    </message>
+    <message>
+        <source>X_Talk</source>
+        <translation>X_Talk</translation>
+    </message>
+    <message>
+        <source>The configuration must match the wiring. Q0..Q3 are not listed: they can be used in one way only.</source>
+        <translation>Konfigurationen måste stämma med kopplingen. Q0..Q3 finns inte med: de kan bara användas på ett sätt.</translation>
+    </message>
+    <message>
+        <source>%1 — I/O Options</source>
+        <translation>%1 — I/O-alternativ</translation>
+    </message>
+    <message>
+        <source>Choose from the lists what each terminal is wired for; combinations the unit cannot take are not offered.</source>
+        <translation>Välj i listorna vad varje plint är kopplad för; kombinationer som enheten inte klarar erbjuds inte.</translation>
+    </message>
+    <message>
+        <source>Set I/O Options of %1</source>
+        <translation>Ställ in I/O-alternativ för %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -47,36 +392,16 @@
         <translation>Pluto-projekt (*.sps);;Alla filer (*)</translation>
     </message>
     <message>
-        <source>untitled.sps</source>
-        <translation>namnlös.sps</translation>
-    </message>
-    <message>
-        <source>&amp;New</source>
-        <translation>&amp;Ny</translation>
-    </message>
-    <message>
         <source>Start a new project</source>
         <translation>Starta ett nytt projekt</translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
-        <translation>&amp;Öppna...</translation>
     </message>
     <message>
         <source>Open a project file</source>
         <translation>Öppna en projektfil</translation>
     </message>
     <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Spara</translation>
-    </message>
-    <message>
         <source>Save the project</source>
         <translation>Spara projektet</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>Spara s&amp;om...</translation>
     </message>
     <message>
         <source>Save the project under a new name</source>
@@ -147,10 +472,6 @@
         <translation>&amp;Hjälp</translation>
     </message>
     <message>
-        <source>File</source>
-        <translation>Arkiv</translation>
-    </message>
-    <message>
         <source>Problems</source>
         <translation>Problem</translation>
     </message>
@@ -208,20 +529,12 @@
         </translation>
     </message>
     <message>
-        <source>The text is already formatted.</source>
-        <translation>Texten är redan formaterad.</translation>
-    </message>
-    <message>
         <source>Formatted.</source>
         <translation>Formaterad.</translation>
     </message>
     <message>
         <source>About Rungsmith</source>
         <translation>Om Rungsmith</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: write and check programs in the Pluto text language.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: skriv och kontrollera program i Plutos textspråk.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -234,6 +547,323 @@
     <message>
         <source>&amp;Clear Menu</source>
         <translation>&amp;Töm menyn</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>The project reads without errors now; its pages are back.</source>
+        <translation>Projektet läses nu utan fel; dess sidor är tillbaka.</translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation>&amp;Nytt projekt …</translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation>Ö&amp;ppna projekt …</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>&amp;Spara projekt</translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation>Spara projekt &amp;som …</translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation>Spara a&amp;lla</translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation>Spara alla öppna projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation>S&amp;täng projekt</translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation>Stäng projektet</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation>&amp;Programtext …</translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation>Skriv programmet enbart i språket, för en textredigerare eller den ursprungliga kompilatorn</translation>
+    </message>
+    <message>
+        <source>Pr&amp;eferences...</source>
+        <translation>In&amp;ställningar …</translation>
+    </message>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Ny &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Lägg till en Pluto-enhet i projektet</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Ny s&amp;ekvens …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>&amp;Ta bort Pluto …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manenta variabler …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>&amp;Importera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>E&amp;xportera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>&amp;Compile</source>
+        <translation>&amp;Kompilera</translation>
+    </message>
+    <message>
+        <source>Check the project and write the compiled file (.hps)</source>
+        <translation>Kontrollera projektet och skriv den kompilerade filen (.hps)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportera</translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation>&amp;Projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Build</source>
+        <translation>&amp;Bygg</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Huvud</translation>
+    </message>
+    <message>
+        <source>Projects</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Utdata</translation>
+    </message>
+    <message>
+        <source>Compiling</source>
+        <translation>Kompilerar</translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation>Öppnade %1. Den har fel: rätta dem i dess text.</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation>Koden för Pluto %1 har fel, så dina senaste ändringar i den ingår inte i projektet. Spara projektet utan dem?</translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation>Exportera programtext</translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation>-program</translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation>Skrev programtexten till %1</translation>
+    </message>
+    <message>
+        <source>Code With Errors</source>
+        <translation>Kod med fel</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so it cannot be read into the project.</source>
+        <translation>Koden för Pluto %1 har fel, så den kan inte läsas in i projektet.</translation>
+    </message>
+    <message>
+        <source>Keep editing to fix them, or discard the changes since the code last read without errors.</source>
+        <translation>Fortsätt redigera för att rätta dem, eller kasta ändringarna sedan koden senast lästes utan fel.</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Editing</source>
+        <translation>&amp;Fortsätt redigera</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Ångra %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Gör om %1</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Ny Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Projektet har 32 enheter, det största antal en buss kan ha.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Ny Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Ny sekvens</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 har alla nio sekvenser.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sekvensnummer för Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Ny sekvens %1 i Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Ta bort Pluto</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>Ta bort %1 med dess kod, namn och beskrivningar från projektet? Redigera &gt; Ångra tar tillbaka den.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Ta bort Pluto %1</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Ställ in remanenta variabler för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanenta variabler</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Importera variabelnamn till Pluto %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Importerade %n variabel.</numerusform>
+            <numerusform>Importerade %n variabler.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Exportera variabelnamn</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+    <message>
+        <source>Export Program &amp;Text...</source>
+        <translation>Exportera program&amp;text …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names to Pluto...</source>
+        <translation>&amp;Importera variabelnamn till Pluto …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names from Pluto...</source>
+        <translation>E&amp;xportera variabelnamn från Pluto …</translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanenta variabler …</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>Kompilerar %1 …</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilera</translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation>Kompilerat utan fel. Spara projektet för att skriva den kompilerade filen.</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisk sparning misslyckades: %1</translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation>Återställ projekt</translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation>Rungsmith stängdes inte på rätt sätt. De här projekten har ändringar som sparades automatiskt:</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Återställ</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: projekt, enheter, I/O-alternativ, variabler och programtexten, kontrollerade och kompilerade.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewProjectDialog</name>
+    <message>
+        <source>New project</source>
+        <translation>Nytt projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation>&amp;Inkludera källkoden i den kompilerade filen</translation>
+    </message>
+    <message>
+        <source>New Project</source>
+        <translation>Nytt projekt</translation>
+    </message>
+    <message>
+        <source>For your own notes</source>
+        <translation>För dina egna anteckningar</translation>
+    </message>
+    <message>
+        <source>The project name is downloaded to the units and checked when going online. With the source code included, a program uploaded from a unit can be opened again; the file grows and anyone with the password can change the program.</source>
+        <translation>Projektnamnet laddas ned till enheterna och kontrolleras vid uppkoppling. Med källkoden inkluderad kan ett program som laddats upp från en enhet öppnas igen; filen blir större och alla som har lösenordet kan ändra programmet.</translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation>Projekt&amp;namn:</translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation>Projekt&amp;beskrivning:</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NewUnitDialog</name>
+    <message>
+        <source>New Pluto</source>
+        <translation>Ny Pluto</translation>
+    </message>
+    <message>
+        <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
+        <translation>Välj Pluto-typ och ett stationsnummer som ingen annan enhet i projektet har. Stationsnumret ingår i varje adress för enheten: ingångarna i Pluto 1 är I1.0, I1.1, …</translation>
     </message>
 </context>
 <context>
@@ -300,6 +930,105 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::PreferencesDialog</name>
+    <message>
+        <source>Start with ladder diagrams &amp;expanded</source>
+        <translation>Starta med stegdiagrammen &amp;utfällda</translation>
+    </message>
+    <message>
+        <source>&amp;Unconfigured I/O warnings at compile time</source>
+        <translation>Varningar för &amp;okonfigurerad I/O vid kompilering</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Inställningar</translation>
+    </message>
+    <message>
+        <source>Ladder colours</source>
+        <translation>Färger i stegdiagram</translation>
+    </message>
+    <message>
+        <source>Ladder background:</source>
+        <translation>Bakgrund:</translation>
+    </message>
+    <message>
+        <source>Focused ladder background:</source>
+        <translation>Bakgrund med fokus:</translation>
+    </message>
+    <message>
+        <source>Ladder component body:</source>
+        <translation>Komponentkropp:</translation>
+    </message>
+    <message>
+        <source>Ladder lines:</source>
+        <translation>Linjer:</translation>
+    </message>
+    <message>
+        <source>Ladder lines off:</source>
+        <translation>Linjer, från:</translation>
+    </message>
+    <message>
+        <source>Ladder lines on:</source>
+        <translation>Linjer, till:</translation>
+    </message>
+    <message>
+        <source>&amp;Default Colours</source>
+        <translation>&amp;Standardfärger</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Update interval in online mode. A shorter interval makes the computer slower.</source>
+        <translation>Uppdateringsintervall i online-läge. Ett kortare intervall gör datorn långsammare.</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Systemets språk</translation>
+    </message>
+    <message>
+        <source>Follow the system</source>
+        <translation>Följ systemet</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Ljust</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Mörkt</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>A new language shows when Rungsmith starts again.</source>
+        <translation>Ett nytt språk visas när Rungsmith startas igen.</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Allmänt</translation>
+    </message>
+    <message>
+        <source>Screen update &amp;interval:</source>
+        <translation>Skärmens uppdaterings&amp;intervall:</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Språk:</translation>
+    </message>
+    <message>
+        <source>&amp;Theme:</source>
+        <translation>&amp;Tema:</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>Spara &amp;automatiskt var:</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ProblemsView</name>
     <message>
         <source>Location</source>
@@ -331,6 +1060,404 @@
     <message>
         <source>Warning message</source>
         <translation>Varningsmeddelande</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Namnlöst</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectPage</name>
+    <message>
+        <source>&amp;Include source code in compiled file</source>
+        <translation>&amp;Inkludera källkoden i den kompilerade filen</translation>
+    </message>
+    <message>
+        <source>Project &amp;name:</source>
+        <translation>Projekt&amp;namn:</translation>
+    </message>
+    <message>
+        <source>Project &amp;description:</source>
+        <translation>Projekt&amp;beskrivning:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Fil:</translation>
+    </message>
+    <message>
+        <source>Units:</source>
+        <translation>Enheter:</translation>
+    </message>
+    <message>
+        <source>Include Source Code</source>
+        <translation>Inkludera källkoden</translation>
+    </message>
+    <message>
+        <source>Leave Out Source Code</source>
+        <translation>Utelämna källkoden</translation>
+    </message>
+    <message>
+        <source>Project %1</source>
+        <translation>Projekt %1</translation>
+    </message>
+    <message>
+        <source>Not saved yet</source>
+        <translation>Inte sparat än</translation>
+    </message>
+    <message>
+        <source>None yet. Add one with Project &gt; New Pluto.</source>
+        <translation>Inga än. Lägg till en med Projekt &gt; Ny Pluto.</translation>
+    </message>
+    <message>
+        <source>Rename Project</source>
+        <translation>Byt namn på projektet</translation>
+    </message>
+    <message>
+        <source>Change Project Description</source>
+        <translation>Ändra projektbeskrivningen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProjectTree</name>
+    <message>
+        <source>Projects</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Project Text</source>
+        <translation>Projekttext</translation>
+    </message>
+    <message>
+        <source>I/O Options</source>
+        <translation>I/O-alternativ</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variabler</translation>
+    </message>
+    <message>
+        <source>PLC Code</source>
+        <translation>PLC-kod</translation>
+    </message>
+    <message>
+        <source>Sequence %1</source>
+        <translation>Sekvens %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::RemanentDialog</name>
+    <message>
+        <source>Remanent Variables of Pluto %1</source>
+        <translation>Remanenta variabler för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <translation>Remanenta variabler behåller sitt värde när strömmen är bruten. Register R100-R131 och minnen M100-M131 kan vara remanenta i valfri kombination, utom att inget minne kan vara det när alla register är det.</translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation>Alla</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Inga</translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation>Minnen</translation>
+    </message>
+    <message>
+        <source>All 32 registers are remanent, so no memory can be.</source>
+        <translation>Alla 32 register är remanenta, så inget minne kan vara det.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::TextPage</name>
+    <message>
+        <source>%1 — Project Text</source>
+        <translation>%1 — Projekttext</translation>
+    </message>
+    <message>
+        <source>This file has errors, so it is shown as text until they are fixed. Lines with errors could not be shown on the other pages.</source>
+        <translation>Filen har fel, så den visas som text tills de är rättade. Rader med fel kunde inte visas på de andra sidorna.</translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation>%1 — PLC-kod</translation>
+    </message>
+    <message>
+        <source>Edit Code of Pluto %1</source>
+        <translation>Redigera koden för Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitPage</name>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanenta variabler …</translation>
+    </message>
+    <message>
+        <source>This unit has code but no &apos;! id_pluto&apos; declaration. Any change below writes one.</source>
+        <translation>Enheten har kod men ingen &apos;! id_pluto&apos;-deklaration. Varje ändring nedan skriver en.</translation>
+    </message>
+    <message>
+        <source>Variables on the bus and at power off</source>
+        <translation>Variabler på bussen och vid strömavbrott</translation>
+    </message>
+    <message>
+        <source>Export variables:</source>
+        <translation>Exportvariabler:</translation>
+    </message>
+    <message>
+        <source>Remanent variables:</source>
+        <translation>Remanenta variabler:</translation>
+    </message>
+    <message>
+        <source>Station %1 of project %2</source>
+        <translation>Station %1 i projekt %2</translation>
+    </message>
+    <message>
+        <source>need instruction set 3</source>
+        <translation>kräver instruktionsuppsättning 3</translation>
+    </message>
+    <message>
+        <source>%1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation>%1 av %2 extra telegrampar (projektet: %3 av %4)</translation>
+    </message>
+    <message>
+        <source>this type has none</source>
+        <translation>den här typen har inga</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>inga</translation>
+    </message>
+    <message>
+        <source>Change Pluto %1</source>
+        <translation>Ändra Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitSettingsForm</name>
+    <message>
+        <source>Instruction set &amp;2</source>
+        <translation>Instruktionsuppsättning &amp;2</translation>
+    </message>
+    <message>
+        <source>Instruction set &amp;3</source>
+        <translation>Instruktionsuppsättning &amp;3</translation>
+    </message>
+    <message>
+        <source>Instruction set 3 needs Pluto OS 3.0 or later. It adds the off-delay timer, multiplication and division with constants, double registers (32 bits), &quot;not positive edge&quot; and &quot;not negative edge&quot;, register bits and a larger address range.</source>
+        <translation>Instruktionsuppsättning 3 kräver Pluto OS 3.0 eller senare. Den lägger till frånslagsfördröjd timer, multiplikation och division med konstanter, dubbelregister (32 bitar), &quot;inte positiv flank&quot; och &quot;inte negativ flank&quot;, registerbitar och ett större adressområde.</translation>
+    </message>
+    <message>
+        <source>IDFIX number</source>
+        <translation>IDFIX-nummer</translation>
+    </message>
+    <message>
+        <source>No IDFIX</source>
+        <translation>Ingen IDFIX</translation>
+    </message>
+    <message>
+        <source>12 hexadecimal digits, e.g. 000034AD4AE1</source>
+        <translation>12 hexadecimala siffror, t.ex. 000034AD4AE1</translation>
+    </message>
+    <message>
+        <source>For your own notes; not downloaded to the unit</source>
+        <translation>För dina egna anteckningar; laddas inte ned till enheten</translation>
+    </message>
+    <message>
+        <source>&amp;Station number:</source>
+        <translation>&amp;Stationsnummer:</translation>
+    </message>
+    <message>
+        <source>Pluto &amp;type:</source>
+        <translation>Pluto-&amp;typ:</translation>
+    </message>
+    <message>
+        <source>Instruction set:</source>
+        <translation>Instruktionsuppsättning:</translation>
+    </message>
+    <message>
+        <source>&amp;IDFIX:</source>
+        <translation>&amp;IDFIX:</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beskrivning:</translation>
+    </message>
+    <message numerus="yes">
+        <source>The IDFIX number has %n of its 12 hexadecimal digits. Choose &quot;No IDFIX&quot; if the unit has no identifier circuit.</source>
+        <translation>
+            <numerusform>IDFIX-numret har %n av sina 12 hexadecimala siffror. Välj &quot;Ingen IDFIX&quot; om enheten inte har någon identifieringskrets.</numerusform>
+            <numerusform>IDFIX-numret har %n av sina 12 hexadecimala siffror. Välj &quot;Ingen IDFIX&quot; om enheten inte har någon identifieringskrets.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The %1 runs instruction set 2 only.</source>
+        <translation>%1 kör endast instruktionsuppsättning 2.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariableTableModel</name>
+    <message>
+        <source>Safety Inputs</source>
+        <translation>Säkerhetsingångar</translation>
+    </message>
+    <message>
+        <source>Safety Outputs</source>
+        <translation>Säkerhetsutgångar</translation>
+    </message>
+    <message>
+        <source>NonSafety Outputs</source>
+        <translation>Icke säkra utgångar</translation>
+    </message>
+    <message>
+        <source>Global Memories</source>
+        <translation>Globala minnen</translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation>Minnen</translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Double Registers</source>
+        <translation>Dubbelregister</translation>
+    </message>
+    <message>
+        <source>System Memories</source>
+        <translation>Systemminnen</translation>
+    </message>
+    <message>
+        <source>System Registers</source>
+        <translation>Systemregister</translation>
+    </message>
+    <message>
+        <source>AS-i Slaves</source>
+        <translation>AS-i-slavar</translation>
+    </message>
+    <message>
+        <source>Used in the code of the unit</source>
+        <translation>Används i enhetens kod</translation>
+    </message>
+    <message>
+        <source>[G] Global variable: visible to the other Plutos on the bus.</source>
+        <translation>[G] Global variabel: synlig för de andra Plutoenheterna på bussen.</translation>
+    </message>
+    <message>
+        <source>[E] Exported variable: made visible to the other Plutos on the bus.</source>
+        <translation>[E] Exporterad variabel: görs synlig för de andra Plutoenheterna på bussen.</translation>
+    </message>
+    <message>
+        <source>[R] Remanent variable: keeps its value when the power is off.</source>
+        <translation>[R] Remanent variabel: behåller sitt värde när strömmen är bruten.</translation>
+    </message>
+    <message>
+        <source>The manuals&apos; name of this system variable</source>
+        <translation>Manualernas namn på den här systemvariabeln</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabel</translation>
+    </message>
+    <message>
+        <source>Attributes</source>
+        <translation>Attribut</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symboliskt namn</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beskrivning</translation>
+    </message>
+    <message>
+        <source>Remove Name of %1</source>
+        <translation>Ta bort namnet på %1</translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation>Ge %1 namnet %2</translation>
+    </message>
+    <message>
+        <source>Describe %1</source>
+        <translation>Beskriv %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::VariablesPage</name>
+    <message>
+        <source>Filter by variable, name or description</source>
+        <translation>Filtrera på variabel, namn eller beskrivning</translation>
+    </message>
+    <message>
+        <source>Variable attributes: [G] global, visible to the other Plutos on the bus; [E] exported; [R] remanent, kept at power off.</source>
+        <translation>Variabelattribut: [G] global, synlig för de andra Plutoenheterna på bussen; [E] exporterad; [R] remanent, behålls vid strömavbrott.</translation>
+    </message>
+    <message>
+        <source>&amp;Remanent Variables...</source>
+        <translation>&amp;Remanenta variabler …</translation>
+    </message>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation>&amp;Importera CSV …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation>E&amp;xportera CSV …</translation>
+    </message>
+    <message>
+        <source>%1 — Variables</source>
+        <translation>%1 — Variabler</translation>
+    </message>
+    <message>
+        <source>Export variables need instruction set 3.</source>
+        <translation>Exportvariabler kräver instruktionsuppsättning 3.</translation>
+    </message>
+    <message>
+        <source>Export variables: %1 of %2 extra telegram pairs (project: %3 of %4)</source>
+        <translation>Exportvariabler: %1 av %2 extra telegrampar (projektet: %3 av %4)</translation>
+    </message>
+    <message>
+        <source>Export %1</source>
+        <translation>Exportera %1</translation>
+    </message>
+    <message>
+        <source>Stop Exporting %1</source>
+        <translation>Sluta exportera %1</translation>
+    </message>
+    <message>
+        <source>&amp;Export Variable [E]</source>
+        <translation>&amp;Exportera variabel [E]</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names from CSV...</source>
+        <translation>&amp;Importera variabelnamn från CSV …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names to CSV...</source>
+        <translation>E&amp;xportera variabelnamn till CSV …</translation>
     </message>
 </context>
 </TS>

@@ -156,7 +156,7 @@ void UnitSettingsForm::updateInstructionSets() {
         m_set2->setChecked(true);
     m_set3->setToolTip(
         set3 ? QString()
-             : tr("A %1 runs instruction set 2 only.").arg(display(target::unitTypeInfo(type))));
+             : tr("The %1 runs instruction set 2 only.").arg(display(target::unitTypeInfo(type))));
 }
 
 void UnitSettingsForm::updateIdfix() {
