@@ -298,7 +298,7 @@
     </message>
     <message>
         <source>Output</source>
-        <translation>Ausgabe</translation>
+        <translation>Ausgang</translation>
     </message>
     <message>
         <source>Light button</source>

@@ -298,7 +298,7 @@
     </message>
     <message>
         <source>Output</source>
-        <translation>Utdata</translation>
+        <translation>Utgång</translation>
     </message>
     <message>
         <source>Light button</source>

@@ -194,37 +194,53 @@ QString PlutoLexer::description(int style) const {
 }
 
 QColor PlutoLexer::defaultColor(int style) const {
+    // Light, dark.
+    auto pick = [this](unsigned light, unsigned dark) {
+        return rgb(m_dark ? dark : light);
+    };
     switch (style) {
     case Comment:
-        return rgb(0x6e7781);
+        return pick(0x6e7781, 0x8b949e);
     case Record:
-        return rgb(0x1a7f37);
+        return pick(0x1a7f37, 0x7ee787);
     case Declaration:
     case Option:
     case Directive:
-        return rgb(0x8250df);
+        return pick(0x8250df, 0xd2a8ff);
     case DirectiveText:
-        return rgb(0x0a3069);
+        return pick(0x0a3069, 0xa5d6ff);
     case StepHeader:
-        return rgb(0x953800);
+        return pick(0x953800, 0xffa657);
     case Address:
-        return rgb(0x0550ae);
+        return pick(0x0550ae, 0x79c0ff);
     case Keyword:
-        return rgb(0xa626a4);
+        return pick(0xa626a4, 0xf778ba);
     case Time:
     case Number:
-        return rgb(0x0a6e74);
+        return pick(0x0a6e74, 0x56d4dd);
     case Operator:
-        return rgb(0x57606a);
+        return pick(0x57606a, 0x8b949e);
     case Invalid:
-        return rgb(0xa40e26);
+        return pick(0xa40e26, 0xffa198);
     default:
-        return rgb(0x1f2328);
+        return pick(0x1f2328, 0xe6edf3);
     }
 }
 
 QColor PlutoLexer::defaultPaper(int style) const {
-    return style == Invalid ? rgb(0xffebe9) : rgb(0xffffff);
+    if (style == Invalid)
+        return rgb(m_dark ? 0x490202 : 0xffebe9);
+    return rgb(m_dark ? 0x1e1f22 : 0xffffff);
+}
+
+void PlutoLexer::setDark(bool dark) {
+    m_dark = dark;
+    for (int style = Default; style < StyleCount; ++style) {
+        setColor(defaultColor(style), style);
+        setPaper(defaultPaper(style), style);
+    }
+    setDefaultPaper(defaultPaper(Default));
+    setDefaultColor(defaultColor(Default));
 }
 
 QFont PlutoLexer::defaultFont(int style) const {

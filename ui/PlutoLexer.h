@@ -41,6 +41,12 @@ public:
     const char* wordCharacters() const override;
 
     void styleText(int start, int end) override;
+
+    // Colours for a dark background instead of a light one.
+    void setDark(bool dark);
+
+private:
+    bool m_dark = false;
 };
 
 } // namespace rs::ui

@@ -1,6 +1,7 @@
 #include "ProgramEditor.h"
 
 #include "PlutoLexer.h"
+#include "StatusColors.h"
 #include "lang/Lexer.h"
 
 #include <Qsci/qscicommand.h>
@@ -51,8 +52,6 @@ ProgramEditor::ProgramEditor(QWidget* parent)
 
     const QFont textFont = m_lexer->defaultFont(PlutoLexer::Default);
     setMarginsFont(textFont);
-    setMarginsBackgroundColor(QColor(0xf6f8fa));
-    setMarginsForegroundColor(QColor(0x8c959f));
     setMarginType(MarkerMargin, SymbolMargin);
     setMarginWidth(MarkerMargin, kMarkerIconSize + 8);
     setMarginMarkerMask(MarkerMargin, (1 << ErrorMarker) | (1 << WarningMarker));
@@ -63,15 +62,35 @@ ProgramEditor::ProgramEditor(QWidget* parent)
     connect(this, &QsciScintilla::linesChanged, this, &ProgramEditor::fitLineNumberMargin);
 
     setCaretLineVisible(true);
-    setCaretLineBackgroundColor(QColor(0xf3f6fa));
     setBraceMatching(SloppyBraceMatch);
-    setMatchedBraceBackgroundColor(QColor(0xd8e6ff));
-    setMatchedBraceForegroundColor(QColor(0x0550ae));
-    setUnmatchedBraceForegroundColor(QColor(0xcf222e));
-    setSelectionBackgroundColor(QColor(0xb6d7ff));
+    applyColors();
 
     defineMarkers();
     setAnnotationDisplay(AnnotationBoxed);
+}
+
+void ProgramEditor::applyColors() {
+    // The editor's colours are its own, not the palette's: a light and a dark set.
+    const bool dark = isDark(palette());
+    m_lexer->setDark(dark);
+    setMarginsBackgroundColor(QColor(dark ? 0x2b2d31 : 0xf6f8fa));
+    setMarginsForegroundColor(QColor(dark ? 0x6e7681 : 0x8c959f));
+    setCaretForegroundColor(QColor(dark ? 0xe6edf3 : 0x1f2328));
+    setCaretLineBackgroundColor(QColor(dark ? 0x26282c : 0xf3f6fa));
+    setMatchedBraceBackgroundColor(QColor(dark ? 0x3b5070 : 0xd8e6ff));
+    setMatchedBraceForegroundColor(QColor(dark ? 0x79c0ff : 0x0550ae));
+    setUnmatchedBraceForegroundColor(QColor(dark ? 0xff7b72 : 0xcf222e));
+    setSelectionBackgroundColor(QColor(dark ? 0x264f78 : 0xb6d7ff));
+    m_errorAnnotation.setColor(QColor(dark ? 0xffa198 : 0x82071e));
+    m_errorAnnotation.setPaper(QColor(dark ? 0x3d1418 : 0xffebe9));
+    m_warningAnnotation.setColor(QColor(dark ? 0xe3b341 : 0x6b4400));
+    m_warningAnnotation.setPaper(QColor(dark ? 0x3a2e0f : 0xfff8c5));
+}
+
+void ProgramEditor::changeEvent(QEvent* event) {
+    QsciScintilla::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyColors();
 }
 
 void ProgramEditor::defineMarkers() {

@@ -38,7 +38,11 @@ public:
     // leaves the undo and redo keys to the window's Edit menu.
     void setProjectUndo(bool projectUndo);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    void applyColors();
     void defineMarkers();
     void fitLineNumberMargin();
     void underline(int line, int column, int indicator);

@@ -52,6 +52,26 @@ TEST_F(GuiCommandLine, ScreenshotOfAFileOnItsTextPage) {
     EXPECT_FALSE(QImage(out("text.png")).isNull());
 }
 
+TEST_F(GuiCommandLine, ScreenshotsOfEveryPageOfAUnit) {
+    for (const QString& page : {QStringLiteral("io:0"), QStringLiteral("variables:0"),
+                                QStringLiteral("unit:0"), QStringLiteral("text:0")}) {
+        const QString picture =
+            out(QString(page).replace(QLatin1Char(':'), QLatin1Char('-')) + QStringLiteral(".png"));
+        const GuiRun run =
+            gui({kMuting, QStringLiteral("--screenshot"), picture, QStringLiteral("--page"), page,
+                 QStringLiteral("--theme"), QStringLiteral("dark")});
+        EXPECT_EQ(run.exitCode, 0) << page.toStdString() << ": " << run.err.toStdString();
+        EXPECT_EQ(QImage(picture).size(), QSize(1280, 800)) << page.toStdString();
+    }
+}
+
+TEST_F(GuiCommandLine, AnUnknownThemeIsExitTwo) {
+    const GuiRun run = gui({QStringLiteral("--screenshot"), out("a.png"), QStringLiteral("--theme"),
+                            QStringLiteral("purple")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("purple"))) << run.err.toStdString();
+}
+
 TEST_F(GuiCommandLine, AnUnreadableFileIsExitTwoAndNamed) {
     const QString missing = out("missing.sps");
     const GuiRun run = gui({missing, QStringLiteral("--screenshot"), out("shot.png")});
@@ -77,6 +97,10 @@ TEST_F(GuiCommandLine, UnknownPagesAndUnitsAreExitTwo) {
                QStringLiteral("text:7")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("no unit 7"))) << run.err.toStdString();
+    run = gui({kMuting, QStringLiteral("--screenshot"), out("c.png"), QStringLiteral("--page"),
+               QStringLiteral("io:31")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("no unit 31"))) << run.err.toStdString();
 }
 
 TEST_F(GuiCommandLine, UnknownOptionsAreExitTwo) {

@@ -1,4 +1,9 @@
 #include "ProgramEditor.h"
+#include "Theme.h"
+
+#include <QCoreApplication>
+
+#include <Qsci/qscilexer.h>
 
 #include "QtPrinting.h"
 
@@ -102,6 +107,18 @@ TEST(ProgramEditor, TextBytesComeBackExactly) {
     EXPECT_FALSE(editor.isModified());
     EXPECT_FALSE(editor.isUndoAvailable());
     EXPECT_EQ(editor.eolMode(), QsciScintilla::EolWindows);
+}
+
+TEST(ProgramEditor, ADarkPaletteGivesTheTextADarkBackground) {
+    ProgramEditor editor;
+    EXPECT_GT(editor.lexer()->paper(0).lightness(), 128);
+    rs::ui::applyTheme(rs::ui::Preferences::Theme::Dark);
+    QCoreApplication::processEvents(); // palette changes reach widgets as posted events
+    EXPECT_LT(editor.lexer()->paper(0).lightness(), 64);
+    EXPECT_GT(editor.lexer()->color(0).lightness(), 192);
+    rs::ui::applyTheme(rs::ui::Preferences::Theme::Light);
+    QCoreApplication::processEvents();
+    EXPECT_GT(editor.lexer()->paper(0).lightness(), 128);
 }
 
 } // namespace
