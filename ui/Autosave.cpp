@@ -7,7 +7,11 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLockFile>
 #include <QStandardPaths>
+
+#include <map>
+#include <memory>
 
 namespace rs::ui {
 
@@ -26,6 +30,23 @@ QString infoPath(const QString& id) {
     return QDir(Autosave::directory()).filePath(id + QStringLiteral(".json"));
 }
 
+QString lockPath(const QString& id) {
+    return QDir(Autosave::directory()).filePath(id + QStringLiteral(".lock"));
+}
+
+// The locks this process holds, by copy.
+std::map<QString, std::unique_ptr<QLockFile>>& locks() {
+    static std::map<QString, std::unique_ptr<QLockFile>> held;
+    return held;
+}
+
+// A lock that only a running process holds: never stale by age.
+std::unique_ptr<QLockFile> lockFor(const QString& id) {
+    auto lock = std::make_unique<QLockFile>(lockPath(id));
+    lock->setStaleLockTime(0);
+    return lock;
+}
+
 } // namespace
 
 QString Autosave::directory() {
@@ -42,6 +63,12 @@ void Autosave::setDirectory(const QString& directory) {
 QString Autosave::write(const ProjectDocument& document) {
     if (!QDir().mkpath(directory()))
         return QStringLiteral("cannot create %1").arg(directory());
+    const QString id = document.autosaveId();
+    if (!locks().count(id)) {
+        auto lock = lockFor(id);
+        if (lock->tryLock(0))
+            locks()[id] = std::move(lock);
+    }
     const QByteArray text = document.fileText();
     QString error = project::writeTextFile(
         textPath(document.autosaveId()),
@@ -61,6 +88,11 @@ QString Autosave::write(const ProjectDocument& document) {
 void Autosave::remove(const QString& id) {
     QFile::remove(textPath(id));
     QFile::remove(infoPath(id));
+    release(id);
+}
+
+void Autosave::release(const QString& id) {
+    locks().erase(id);
 }
 
 QList<Autosave::Copy> Autosave::copies() {
@@ -79,8 +111,14 @@ QList<Autosave::Copy> Autosave::copies() {
         copy.written =
             QDateTime::fromString(info.value(QStringLiteral("written")).toString(), Qt::ISODate);
         copy.copyPath = textPath(copy.id);
-        if (QFile::exists(copy.copyPath))
-            found.append(copy);
+        if (!QFile::exists(copy.copyPath))
+            continue;
+        // A lock that cannot be taken belongs to a Rungsmith still running.
+        auto probe = lockFor(copy.id);
+        if (locks().count(copy.id) || !probe->tryLock(0))
+            continue;
+        probe->unlock();
+        found.append(copy);
     }
     return found;
 }

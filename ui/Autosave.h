@@ -11,6 +11,8 @@ class ProjectDocument;
 // Copies of modified projects, written every few minutes to a folder of the
 // user's, so that the work survives a crash. A project's copy goes when it is
 // saved or closed; copies still there at start-up are offered for recovery.
+// While a Rungsmith holds a project open, a lock file says so, so that another
+// Rungsmith running at the same time does not take its copies for a crash's.
 class Autosave {
 public:
     struct Copy {
@@ -28,6 +30,9 @@ public:
     // Writes the document's copy; returns the error message, empty on success.
     static QString write(const ProjectDocument& document);
     static void remove(const QString& id);
+    // Leaves the copy for recovery but lets go of its lock (the window goes
+    // without its projects having been saved or closed).
+    static void release(const QString& id);
     static QList<Copy> copies();
 };
 

@@ -154,8 +154,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
 
 MainWindow::~MainWindow() {
     m_compileWatcher.waitForFinished();
-    for (ProjectDocument* document : m_documents)
+    for (ProjectDocument* document : m_documents) {
         disconnect(document, nullptr, this, nullptr);
+        Autosave::release(document->autosaveId());
+    }
 }
 
 // ----- actions and menus
