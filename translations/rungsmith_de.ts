@@ -32,20 +32,20 @@
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
-        <translation>Die Seite, die für Einheit N gezeigt wird: text:N (ihr Code), io:N (E/A-Optionen), variables:N oder unit:N.</translation>
-    </message>
-    <message>
         <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
         <translation>Dieses Mal mit heller oder dunkler Palette zeichnen oder mit der des Systems.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
-        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind text:N, io:N, variables:N und unit:N für Einheit N</translation>
-    </message>
-    <message>
         <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
         <translation>unbekanntes Design &apos;%1&apos;; verwenden Sie light, dark oder system</translation>
+    </message>
+    <message>
+        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Die Seite, die gezeigt wird: text:N (der Code von Einheit N), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind text:N, io:N, variables:N und unit:N für Einheit N sowie project</translation>
     </message>
 </context>
 <context>

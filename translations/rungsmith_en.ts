@@ -32,19 +32,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
+        <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
+        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

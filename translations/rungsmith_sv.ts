@@ -32,20 +32,20 @@
         <translation>kan inte skriva %1: %2</translation>
     </message>
     <message>
-        <source>The page to show for unit N: text:N (its code), io:N (I/O options), variables:N or unit:N.</source>
-        <translation>Sidan som ska visas för enhet N: text:N (dess kod), io:N (I/O-alternativ), variables:N eller unit:N.</translation>
-    </message>
-    <message>
         <source>Draw with the light or dark palette, or the system&apos;s, this time.</source>
         <translation>Rita med ljus eller mörk palett, eller systemets, den här gången.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är text:N, io:N, variables:N och unit:N för enhet N</translation>
-    </message>
-    <message>
         <source>unknown theme &apos;%1&apos;; use light, dark or system</source>
         <translation>okänt tema &apos;%1&apos;; använd light, dark eller system</translation>
+    </message>
+    <message>
+        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Sidan som ska visas: text:N (koden för enhet N), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är text:N, io:N, variables:N och unit:N för enhet N, samt project</translation>
     </message>
 </context>
 <context>

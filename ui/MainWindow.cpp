@@ -741,6 +741,8 @@ bool MainWindow::showPage(const PageRef& page) {
 
 bool MainWindow::showPage(PageRef::Kind kind, int station) {
     ProjectDocument* document = currentDocument();
+    if (document && kind == PageRef::Kind::Project)
+        return showPage(PageRef{kind, document});
     if (!document || !project::unitSettings(document->project(), station))
         return false;
     return showPage(PageRef{kind, document, station, 0});

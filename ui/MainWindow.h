@@ -67,7 +67,8 @@ public:
                                    bool includeSource);
 
     // Shows a page of the current project: the code (text) of a unit, its
-    // unit page, I/O options or variables. False when there is no such unit.
+    // unit page, I/O options or variables, or the project page (any station).
+    // False when there is no such unit.
     bool showUnit(int station);
     bool showPage(PageRef::Kind kind, int station);
     // Shows any page; false when the user keeps editing a text with errors.

@@ -33,9 +33,8 @@ ProjectPage::ProjectPage(QWidget* parent)
     m_description->setTabChangesFocus(true);
     m_description->setMaximumHeight(140);
     m_includeSource->setObjectName(QStringLiteral("includeSourceCheck"));
+    // A path breaks at its slashes: shown whole on one line, it stays readable.
     m_file->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_file->setWordWrap(true);
-    m_units->setWordWrap(true);
     m_units->setObjectName(QStringLiteral("projectUnitsLabel"));
     markAsError(m_nameProblem);
     m_nameProblem->hide();

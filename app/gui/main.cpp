@@ -36,8 +36,10 @@ struct Page {
 };
 
 // "text:N", "io:N", "variables:N" and "unit:N": a page of the unit with
-// station number N.
+// station number N; "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
+    if (text == QLatin1String("project"))
+        return Page{rs::ui::PageRef::Kind::Project, -1};
     static const QRegularExpression form(QStringLiteral("^(text|io|variables|unit):(\\d{1,2})$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
@@ -96,8 +98,8 @@ int main(int argc, char* argv[]) {
         QStringLiteral("OUT.png"));
     const QCommandLineOption pageOption(
         QStringLiteral("page"),
-        CommandLine::tr("The page to show for unit N: text:N (its code), io:N (I/O options), "
-                        "variables:N or unit:N."),
+        CommandLine::tr("The page to show: text:N (the code of unit N), io:N (its I/O options), "
+                        "variables:N, unit:N, or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -120,7 +122,7 @@ int main(int argc, char* argv[]) {
         page = pageOf(parser.value(pageOption));
         if (!page)
             return usageError(CommandLine::tr("unknown page '%1'; the pages are text:N, io:N, "
-                                              "variables:N and unit:N for unit N")
+                                              "variables:N and unit:N for unit N, and project")
                                   .arg(parser.value(pageOption)));
     }
     std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;

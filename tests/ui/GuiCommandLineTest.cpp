@@ -53,8 +53,9 @@ TEST_F(GuiCommandLine, ScreenshotOfAFileOnItsTextPage) {
 }
 
 TEST_F(GuiCommandLine, ScreenshotsOfEveryPageOfAUnit) {
-    for (const QString& page : {QStringLiteral("io:0"), QStringLiteral("variables:0"),
-                                QStringLiteral("unit:0"), QStringLiteral("text:0")}) {
+    for (const QString& page :
+         {QStringLiteral("io:0"), QStringLiteral("variables:0"), QStringLiteral("unit:0"),
+          QStringLiteral("text:0"), QStringLiteral("project")}) {
         const QString picture =
             out(QString(page).replace(QLatin1Char(':'), QLatin1Char('-')) + QStringLiteral(".png"));
         const GuiRun run =
