@@ -1247,6 +1247,13 @@
         <source>Change Pluto %1</source>
         <translation>Pluto %1 ändern</translation>
     </message>
+    <message numerus="yes">
+        <source>This removes %n declaration(s), name(s), description(s) or attribute(s) of the unit that the new type or instruction set cannot have. Change it?</source>
+        <translation>
+            <numerusform>Dadurch wird %n Deklaration, Name, Beschreibung oder Attribut der Einheit entfernt, die der neue Typ oder Befehlssatz nicht haben kann. Ändern?</numerusform>
+            <numerusform>Dadurch werden %n Deklarationen, Namen, Beschreibungen oder Attribute der Einheit entfernt, die der neue Typ oder Befehlssatz nicht haben kann. Ändern?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::UnitSettingsForm</name>

@@ -1247,6 +1247,13 @@
         <source>Change Pluto %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>This removes %n declaration(s), name(s), description(s) or attribute(s) of the unit that the new type or instruction set cannot have. Change it?</source>
+        <translation>
+            <numerusform>This removes %n name, declaration, description or attribute of the unit that the new type or instruction set cannot have. Change it?</numerusform>
+            <numerusform>This removes %n declarations, names, descriptions or attributes of the unit that the new type or instruction set cannot have. Change it?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::UnitSettingsForm</name>

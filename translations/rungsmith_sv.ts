@@ -1247,6 +1247,13 @@
         <source>Change Pluto %1</source>
         <translation>Ändra Pluto %1</translation>
     </message>
+    <message numerus="yes">
+        <source>This removes %n declaration(s), name(s), description(s) or attribute(s) of the unit that the new type or instruction set cannot have. Change it?</source>
+        <translation>
+            <numerusform>Detta tar bort %n deklaration, namn, beskrivning eller attribut i enheten som den nya typen eller instruktionsuppsättningen inte kan ha. Ändra den?</numerusform>
+            <numerusform>Detta tar bort %n deklarationer, namn, beskrivningar eller attribut i enheten som den nya typen eller instruktionsuppsättningen inte kan ha. Ändra den?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::UnitSettingsForm</name>

@@ -11,6 +11,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -95,6 +96,18 @@ void UnitPage::apply() {
     const auto current = project::unitSettings(m_document->project(), m_station);
     if (current && *current == settings)
         return;
+    if (const int removed = project::removedByChange(m_document->project(), settings)) {
+        const auto answer = QMessageBox::question(
+            this, tr("Change Pluto %1").arg(m_station),
+            tr("This removes %n declaration(s), name(s), description(s) or attribute(s) of the "
+               "unit that the new type or instruction set cannot have. Change it?",
+               nullptr, removed),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            refresh(); // the form shows the unit as it is again
+            return;
+        }
+    }
     m_document->edit(tr("Change Pluto %1").arg(m_station),
                      [&](project::Project& p) { project::changeUnit(p, settings); });
 }

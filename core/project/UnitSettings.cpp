@@ -304,6 +304,38 @@ std::optional<std::string> changeUnit(Project& project, const UnitSettings& requ
     return std::nullopt;
 }
 
+namespace {
+
+// Everything of one unit that a change of its type can take away.
+int unitItems(const Project& project, int station) {
+    int count = 0;
+    for (const auto& unit : project.program.units)
+        if (unit.station() == station)
+            for (const auto& line : unit.declarations)
+                count += declarationOf<lang::IoDeclaration>(line) != nullptr;
+    count += static_cast<int>(namedAddresses(project, station).size());
+    auto ofStation = [&](const auto& container) {
+        return static_cast<int>(
+            std::count_if(container.begin(), container.end(), [&](const auto& item) {
+                if constexpr (requires { item.first; })
+                    return item.first.unit == station;
+                else
+                    return item.unit == station;
+            }));
+    };
+    return count + ofStation(project.variableDescriptions) + ofStation(project.exportedVariables) +
+           ofStation(project.remanentVariables);
+}
+
+} // namespace
+
+int removedByChange(const Project& project, const UnitSettings& settings) {
+    Project changed = project;
+    if (changeUnit(changed, settings))
+        return 0;
+    return unitItems(project, settings.station) - unitItems(changed, settings.station);
+}
+
 void removeUnit(Project& project, int station) {
     forEachDeclarationList(project.program, [&](std::vector<Line>& lines) {
         std::erase_if(lines, [&](const Line& line) { return stationOf(line) == station; });

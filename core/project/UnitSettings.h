@@ -60,6 +60,10 @@ std::optional<std::string> addUnit(Project& project, const UnitSettings& setting
 // type or instruction set cannot have are removed with it.
 std::optional<std::string> changeUnit(Project& project, const UnitSettings& settings);
 
+// How many I/O declarations, names, descriptions and attributes changeUnit
+// would remove: what the user is asked about before a change of type.
+int removedByChange(const Project& project, const UnitSettings& settings);
+
 // Removes a unit with its declarations, code, global names and records.
 void removeUnit(Project& project, int station);
 

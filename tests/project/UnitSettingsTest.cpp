@@ -116,6 +116,9 @@ TEST(UnitSettings, ChangingTheTypeDropsWhatTheNewTypeCannotHave) {
     ASSERT_FALSE(project::setVariableName(p, {lang::AddressKind::DoubleRegister, 0, 4}, "Pos"));
     ASSERT_FALSE(project::setVariableName(p, {lang::AddressKind::Input, 0, 12}, "Start"));
 
+    // Q0.20's declaration, Valve and Pos go; I0.12's declaration and name stay.
+    EXPECT_EQ(project::removedByChange(p, unit(0, UnitType::A20, 2)), 3);
+    EXPECT_EQ(project::removedByChange(p, unit(0, UnitType::S46, 3)), 0);
     ASSERT_FALSE(project::changeUnit(p, unit(0, UnitType::A20, 2)));
     const std::string text = textOf(p);
     EXPECT_NE(text.find("! id_pluto:00=000000000000\n! type_pluto:00=A20,is2\n"), std::string::npos)

@@ -4,11 +4,13 @@
 #include "CsvImportDialog.h"
 #include "DialogDriver.h"
 #include "IoOptionsPage.h"
+#include "MessageBoxAnswerer.h"
 #include "ProgramEditor.h"
 #include "ProjectDocument.h"
 #include "ProjectTree.h"
 #include "RemanentDialog.h"
 #include "TextPage.h"
+#include "UnitPage.h"
 #include "VariableTableModel.h"
 #include "VariablesPage.h"
 
@@ -456,6 +458,38 @@ TEST_F(ProjectWorkflowTest, TheCodeIsEditedAsTextAndEveryPageFollows) {
     EXPECT_FALSE(editor->textBytes().contains("Q3.4"));
     QTest::keyClick(editor, Qt::Key_Y, Qt::ControlModifier);
     EXPECT_TRUE(projectText().contains("Q3.4 = EStop\n"));
+}
+
+TEST_F(ProjectWorkflowTest, TheUnitPageChangesTheTypeAfterSayingWhatGoes) {
+    showWindow();
+    createProjectWithUnit();
+    clickNode({PageRef::Kind::Variables, document(), 3});
+    showTab(QStringLiteral("Safety Outputs"));
+    editCell(QStringLiteral("Q3.4"), rs::ui::VariableTableModel::NameColumn,
+             QStringLiteral("Valve"));
+    clickNode({PageRef::Kind::Unit, document(), 3});
+    auto* type = child<QComboBox>(*window.unitPage(), QStringLiteral("typeCombo"));
+    const QByteArray before = projectText();
+    {
+        MessageBoxAnswerer no(QMessageBox::No);
+        choose(type, QStringLiteral("A20")); // an A20 has no Q3.4
+        EXPECT_TRUE(no.answered());
+        EXPECT_TRUE(no.text().contains(QStringLiteral("removes 1 name")))
+            << no.text().toStdString();
+    }
+    EXPECT_EQ(projectText(), before);
+    EXPECT_EQ(type->currentText(), QStringLiteral("B46"));
+    {
+        MessageBoxAnswerer yes(QMessageBox::Yes);
+        choose(type, QStringLiteral("A20"));
+        EXPECT_TRUE(yes.answered());
+    }
+    EXPECT_TRUE(projectText().contains("! id_pluto:03=0000ABCD1234\n"));
+    EXPECT_FALSE(projectText().contains("Valve"));
+    EXPECT_EQ(window.projectTree()->itemFor({PageRef::Kind::Unit, document(), 3})->text(0),
+              QStringLiteral("Pluto 3 — A20"));
+    undo();
+    EXPECT_EQ(projectText(), before);
 }
 
 TEST_F(ProjectWorkflowTest, SaveReopenCompare) {
