@@ -104,10 +104,6 @@ void CsvImportDialog::setPath(const QString& path) {
     preview();
 }
 
-void CsvImportDialog::setPrefix(const QString& prefix) {
-    m_prefix->setText(prefix);
-}
-
 void CsvImportDialog::preview() {
     m_changes->clear();
     m_problems->clear();

@@ -26,7 +26,6 @@ public:
     CsvImportDialog(const project::Project& project, int station, QWidget* parent = nullptr);
 
     void setPath(const QString& path);
-    void setPrefix(const QString& prefix);
     // The project with the good rows in; valid after a preview with changes.
     const project::CsvImport& result() const { return m_result; }
     QTreeWidget* changesView() const { return m_changes; }

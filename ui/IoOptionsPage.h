@@ -33,7 +33,6 @@ public:
     explicit IoOptionsPage(QWidget* parent = nullptr);
 
     void showUnit(ProjectDocument* document, int station);
-    int station() const { return m_station; }
 
     static QString signalTypeName(project::SignalType type);
     static QString signalShapeName(project::SignalShape shape);

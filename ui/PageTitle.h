@@ -13,7 +13,6 @@ public:
 
     void setTitle(const QString& title);
     void setSubtitle(const QString& subtitle);
-    QString title() const { return m_title->text(); }
 
 private:
     QLabel* m_title;

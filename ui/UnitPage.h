@@ -20,7 +20,6 @@ public:
     explicit UnitPage(QWidget* parent = nullptr);
 
     void showUnit(ProjectDocument* document, int station);
-    int station() const { return m_station; }
 
 signals:
     void remanentRequested(ProjectDocument* document, int station);

@@ -31,8 +31,6 @@ public:
 
     void show(ProjectDocument* document, int station, project::VariableGroup group);
     ProjectDocument* document() const { return m_document; }
-    int station() const { return m_station; }
-    project::VariableGroup group() const { return m_group; }
     const project::Variable* variableAt(int row) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;

@@ -37,7 +37,6 @@ public:
     // Shows the tab of the variable and selects its row.
     bool showVariable(const lang::Address& address);
 
-    int station() const { return m_station; }
     QTabBar* tabs() const { return m_tabs; }
     QTableView* table() const { return m_table; }
     VariableTableModel* model() const { return m_model; }
