@@ -186,11 +186,14 @@ std::vector<VariableGroup> variableGroups(const target::UnitTypeInfo& type, int 
         groups.push_back(VariableGroup::SafetyOutputs);
     if (!type.nonSafetyOutputs.empty())
         groups.push_back(VariableGroup::NonSafetyOutputs);
-    groups.insert(groups.end(), {VariableGroup::GlobalMemories, VariableGroup::Memories,
-                                 VariableGroup::Registers});
+    // push_back rather than insert of a list: GCC 12 at -O3 warns falsely on the latter.
+    groups.push_back(VariableGroup::GlobalMemories);
+    groups.push_back(VariableGroup::Memories);
+    groups.push_back(VariableGroup::Registers);
     if (instructionSet >= 3)
         groups.push_back(VariableGroup::DoubleRegisters);
-    groups.insert(groups.end(), {VariableGroup::SystemMemories, VariableGroup::SystemRegisters});
+    groups.push_back(VariableGroup::SystemMemories);
+    groups.push_back(VariableGroup::SystemRegisters);
     if (type.asiSlaves)
         groups.push_back(VariableGroup::AsiSlaves);
     return groups;
