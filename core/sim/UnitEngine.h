@@ -38,6 +38,9 @@ public:
     int activeStep(int sequence) const;
     bool hasSequence(int sequence) const;
     const std::vector<Conduction>& conduction() const { return m_conduction; }
+    // The state of timer occurrence `slot` (Instruction::slot of a Timer), to show its elapsed
+    // time.
+    const Timer& timer(std::size_t slot) const { return m_timers[slot]; }
 
     // The units on the bus, for SM_Pluto0_Present .. SM_Pluto31_Present.
     void setPresent(const std::array<bool, 32>& present);
