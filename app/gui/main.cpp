@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 #include "PageRef.h"
 #include "Preferences.h"
+#include "RungsmithBuildVersion.h"
 #include "Theme.h"
 #include "Translations.h"
 
@@ -78,7 +79,9 @@ int main(int argc, char* argv[]) {
     QApplication application(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Rungsmith"));
     QApplication::setApplicationName(QStringLiteral("Rungsmith"));
-    QApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
+    QApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_BUILD_VERSION));
+    // Wayland finds the window's icon and name through the desktop entry.
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.rungsmith.Rungsmith"));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/rungsmith.svg")));
     const rs::ui::Preferences preferences = rs::ui::Preferences::load();
     rs::ui::installTranslations(
@@ -111,8 +114,10 @@ int main(int argc, char* argv[]) {
         return usageError(parser.errorText());
     if (parser.isSet(helpOption))
         parser.showHelp(0);
-    if (parser.isSet(versionOption))
-        parser.showVersion();
+    if (parser.isSet(versionOption)) {
+        QTextStream(stdout) << "rungsmith " << QCoreApplication::applicationVersion() << '\n';
+        return 0;
+    }
 
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1)
