@@ -31,6 +31,7 @@ namespace rs::ui {
 
 class CompileOutput;
 class IoOptionsPage;
+class LadderPage;
 class ProblemsView;
 class ProgramEditor;
 class ProjectDocument;
@@ -101,6 +102,7 @@ public:
 
     ProgramEditor* editor() const;
     TextPage* textPage() const { return m_textPage; }
+    LadderPage* ladderPage() const { return m_ladderPage; }
     ProjectPage* projectPage() const { return m_projectPage; }
     UnitPage* unitPage() const { return m_unitPage; }
     IoOptionsPage* ioOptionsPage() const { return m_ioPage; }
@@ -162,6 +164,7 @@ private:
     IoOptionsPage* m_ioPage = nullptr;
     VariablesPage* m_variablesPage = nullptr;
     TextPage* m_textPage = nullptr;
+    LadderPage* m_ladderPage = nullptr;
     ProjectTree* m_tree = nullptr;
     ProblemsView* m_problems = nullptr;
     CompileOutput* m_output = nullptr;
@@ -194,6 +197,7 @@ private:
     QAction* m_pasteAction = nullptr;
     QAction* m_selectAllAction = nullptr;
     QAction* m_formatAction = nullptr;
+    QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
     QAction* m_newUnitAction = nullptr;
     QAction* m_newSequenceAction = nullptr;

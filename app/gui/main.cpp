@@ -36,18 +36,20 @@ struct Page {
     int station;
 };
 
-// "text:N", "io:N", "variables:N" and "unit:N": a page of the unit with
-// station number N; "project": the project's own page.
+// "ladder:N", "text:N", "io:N", "variables:N" and "unit:N": a page of the unit
+// with station number N; "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
-    static const QRegularExpression form(QStringLiteral("^(text|io|variables|unit):(\\d{1,2})$"));
+    static const QRegularExpression form(
+        QStringLiteral("^(ladder|text|io|variables|unit):(\\d{1,2})$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
     const QString kind = match.captured(1);
     using Kind = rs::ui::PageRef::Kind;
-    return Page{kind == QLatin1String("text")   ? Kind::Code
+    return Page{kind == QLatin1String("ladder") ? Kind::Ladder
+                : kind == QLatin1String("text") ? Kind::Code
                 : kind == QLatin1String("io")   ? Kind::IoOptions
                 : kind == QLatin1String("unit") ? Kind::Unit
                                                 : Kind::Variables,
@@ -101,8 +103,8 @@ int main(int argc, char* argv[]) {
         QStringLiteral("OUT.png"));
     const QCommandLineOption pageOption(
         QStringLiteral("page"),
-        CommandLine::tr("The page to show: text:N (the code of unit N), io:N (its I/O options), "
-                        "variables:N, unit:N, or project."),
+        CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
+                        "text), io:N (its I/O options), variables:N, unit:N, or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -126,8 +128,9 @@ int main(int argc, char* argv[]) {
     if (parser.isSet(pageOption)) {
         page = pageOf(parser.value(pageOption));
         if (!page)
-            return usageError(CommandLine::tr("unknown page '%1'; the pages are text:N, io:N, "
-                                              "variables:N and unit:N for unit N, and project")
+            return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
+                                              "io:N, variables:N and unit:N for unit N, and "
+                                              "project")
                                   .arg(parser.value(pageOption)));
     }
     std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;
