@@ -14,6 +14,9 @@ set(_generated ${CMAKE_BINARY_DIR}/packaging)
 set(_datadir ${CMAKE_INSTALL_DATADIR})
 set(_docdir ${CMAKE_INSTALL_DATADIR}/doc/rungsmith)
 
+# The translations are compiled into the programs (qt_add_translations in
+# ui/CMakeLists.txt embeds them under :/i18n), so there are none to install.
+
 # The IDE opens the first example itself (compiled in); these are for users to
 # copy and for rungsmith-cli.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/examples/

@@ -2,11 +2,12 @@
 # Builds the Debian package from a build tree and checks it as Debian's tools
 # and a user would: fields, file list, lintian, the desktop, AppStream and MIME
 # files, the man pages, and the unpacked programs themselves.
-#   check-package.sh BUILD_DIR CPACK
+#   check-package.sh BUILD_DIR CPACK SOURCE_DIR
 set -euo pipefail
 
 build=$1
 cpack=$2
+source=$3
 app_id=io.github.rungsmith.Rungsmith
 scratch=$build/tests/package-check
 root=$scratch/root
@@ -50,6 +51,12 @@ version=$(cat "$build/generated/version.txt")
 field() { dpkg-deb --field "$deb" "$1"; }
 [ "$(field Package)" = rungsmith ] || fail "Package is '$(field Package)'"
 [ "$(field Version)" = "$version" ] || fail "Version is '$(field Version)', the build's is '$version'"
+# A development build names its commit.
+if revision=$(git -C "$source" rev-parse --short HEAD 2>/dev/null) &&
+    ! git -C "$source" describe --exact-match --match 'v*' HEAD >/dev/null 2>&1; then
+    [[ "$version" =~ ^[0-9.]+~git[0-9]{8}\.$revision$ ]] ||
+        fail "the version $version does not name the commit $revision"
+fi
 [ "$(field Section)" = electronics ] || fail "Section is '$(field Section)'"
 [[ "$(field Maintainer)" =~ ^[^\<]+\ \<[^@]+@[^\>]+\>$ ]] || fail "Maintainer is '$(field Maintainer)'"
 # shlibdeps found the Qt libraries the programs link.
