@@ -19,6 +19,7 @@
 #include "UnitCaption.h"
 #include "UnitPage.h"
 #include "VariablesPage.h"
+#include "sim/SimulationMode.h"
 #include "compiler/ImageCodec.h"
 #include "ladder/LadderPage.h"
 #include "project/ProgramText.h"
@@ -107,6 +108,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     createDocks();
     createMenus();
     createStatusBar();
+    m_simulation = new SimulationMode(this);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 
     auto* welcome = new QVBoxLayout(m_welcomePage);
     auto* heading = new QLabel(tr("<h2>No project is open</h2>"
@@ -760,6 +763,7 @@ bool MainWindow::showPage(const PageRef& page) {
     m_tree->select(m_current);
     updateTitle();
     updateActions();
+    emit pageChanged();
     return true;
 }
 
@@ -984,6 +988,7 @@ void MainWindow::editPreferences() {
     if (themeChanged)
         applyTheme(m_preferences.theme);
     m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 }
 
 void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition) {

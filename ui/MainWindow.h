@@ -37,6 +37,7 @@ class ProgramEditor;
 class ProjectDocument;
 class ProjectPage;
 class ProjectTree;
+class SimulationMode;
 class TextPage;
 class UnitPage;
 class VariablesPage;
@@ -109,6 +110,11 @@ public:
     VariablesPage* variablesPage() const { return m_variablesPage; }
     ProjectTree* projectTree() const { return m_tree; }
     CompileOutput* compileOutput() const { return m_output; }
+    SimulationMode* simulation() const { return m_simulation; }
+
+signals:
+    // Another page is shown (or the same page of another unit or project).
+    void pageChanged();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -168,6 +174,7 @@ private:
     ProjectTree* m_tree = nullptr;
     ProblemsView* m_problems = nullptr;
     CompileOutput* m_output = nullptr;
+    SimulationMode* m_simulation = nullptr;
     QDockWidget* m_treeDock = nullptr;
     QDockWidget* m_problemsDock = nullptr;
     QDockWidget* m_outputDock = nullptr;

@@ -185,16 +185,16 @@ void SimulationSession::changed() {
 void SimulationSession::set(const lang::Address& address, std::int64_t value) {
     if (!m_simulation)
         return;
+    m_recorder.add(address, m_simulation.get());
     m_simulation->set(address, value);
-    m_recorder.add(address);
     changed();
 }
 
 void SimulationSession::force(const lang::Address& address, std::int64_t value) {
     if (!m_simulation)
         return;
+    m_recorder.add(address, m_simulation.get());
     m_simulation->force(address, value);
-    m_recorder.add(address);
     changed();
 }
 

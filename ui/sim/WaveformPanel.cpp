@@ -95,7 +95,7 @@ QString WaveformPanel::add(const QString& word) {
     QString error;
     if (!m_session->resolve(word, address, error))
         return error;
-    m_session->recorder().add(address);
+    m_session->recorder().add(address, m_session->simulation());
     m_view->recordingChanged();
     return {};
 }

@@ -8,10 +8,12 @@
 
 namespace rs::ui {
 
-bool WaveformRecorder::add(const lang::Address& address) {
+bool WaveformRecorder::add(const lang::Address& address, const sim::Simulation* simulation) {
     if (contains(address))
         return false;
     m_traces.push_back({address, {}});
+    if (simulation && m_sampled)
+        m_traces.back().changes.push_back({m_endMs, simulation->value(address)});
     return true;
 }
 

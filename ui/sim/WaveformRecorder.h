@@ -27,8 +27,9 @@ public:
         std::vector<Change> changes; // the first is the value when recording began
     };
 
-    // Records the variable from the next sample on; false when it is recorded already.
-    bool add(const lang::Address& address);
+    // Records the variable from the next sample on, or from the last one when
+    // the simulation is given; false when it is recorded already.
+    bool add(const lang::Address& address, const sim::Simulation* simulation = nullptr);
     void remove(const lang::Address& address);
     bool contains(const lang::Address& address) const;
     // Forgets what was recorded (power on again, a new run) but keeps the variables.
