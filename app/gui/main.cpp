@@ -4,6 +4,7 @@
 #include "RungsmithBuildVersion.h"
 #include "Theme.h"
 #include "Translations.h"
+#include "sim/SimulationMode.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -110,7 +111,12 @@ int main(int argc, char* argv[]) {
         QStringLiteral("theme"),
         CommandLine::tr("Draw with the light or dark palette, or the system's, this time."),
         QStringLiteral("light|dark|system"));
-    parser.addOptions({screenshotOption, pageOption, themeOption});
+    const QCommandLineOption simulateOption(
+        QStringLiteral("simulate"),
+        CommandLine::tr("Run the scenario in the simulator first, so the window shows the live "
+                        "state it ends in."),
+        QStringLiteral("SCENARIO.scn"));
+    parser.addOptions({screenshotOption, pageOption, themeOption, simulateOption});
 
     if (!parser.parse(QCoreApplication::arguments()))
         return usageError(parser.errorText());
@@ -156,6 +162,11 @@ int main(int argc, char* argv[]) {
         settle();
         if (page && !window.showPage(page->kind, page->station))
             return usageError(noSuchUnit);
+        if (parser.isSet(simulateOption)) {
+            const auto result = window.simulation()->runScenario(parser.value(simulateOption));
+            if (!result.error.isEmpty())
+                return usageError(result.error);
+        }
         settle();
         const QString out = parser.value(screenshotOption);
         QImageWriter writer(out, "png");
@@ -174,5 +185,10 @@ int main(int argc, char* argv[]) {
         window.showExample();
     if (page && !window.showPage(page->kind, page->station))
         complain(noSuchUnit);
+    if (parser.isSet(simulateOption)) {
+        const auto result = window.simulation()->runScenario(parser.value(simulateOption));
+        if (!result.error.isEmpty())
+            complain(result.error);
+    }
     return QApplication::exec();
 }
