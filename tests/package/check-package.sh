@@ -111,13 +111,33 @@ grep -q '^MimeType=text/x-pluto-project;$' "$share/applications/$app_id.desktop"
 
 # The unpacked programs run on the system's Qt, without LD_LIBRARY_PATH.
 cli=$root/usr/bin/rungsmith-cli
+mkdir -p "$scratch/files"
 check_output=$(env -u LD_LIBRARY_PATH "$cli" check "$share/rungsmith/examples/muting.sps" 2>&1) ||
     fail "rungsmith-cli check on the bundled example: $check_output"
 grep -q "0 Error(s) detected Result=OK" <<<"$check_output" || fail "check printed: $check_output"
+"$cli" compile "$share/rungsmith/examples/muting.sps" -o "$scratch/files/muting.hps" >/dev/null ||
+    fail "rungsmith-cli compile on the bundled example"
 [ "$("$cli" --version)" = "rungsmith-cli $version" ] || fail "rungsmith-cli --version: $("$cli" --version)"
 gui_version=$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/rungsmith" --version 2>/dev/null) || true
 [ "$gui_version" = "rungsmith $version" ] || fail "rungsmith --version: $gui_version"
 file "$cli" "$root/usr/bin/rungsmith" | grep -v ', stripped' && fail "unstripped programs"
+
+# A file manager (GLib's detection) sees each file as its type, and Godot's
+# scenes, which share *.scn, still as theirs.
+cp "$share/rungsmith/examples/muting.sps" "$scratch/files/"
+printf '; stop drops the output\nset I0.0 1\nrun 20ms\nexpect Q0.0 0\n' >"$scratch/files/stop.scn"
+printf '[gd_scene load_steps=2 format=3]\n' >"$scratch/files/level.scn"
+content_type() {
+    XDG_DATA_DIRS=$scratch:/usr/share gio info --attributes=standard::content-type "$1" |
+        sed -n 's/^ *standard::content-type: //p'
+}
+
+for expected in muting.sps:text/x-pluto-project muting.hps:application/x-pluto-image \
+    stop.scn:text/x-rungsmith-scenario level.scn:application/x-godot-scene; do
+    name=${expected%%:*}
+    type=$(content_type "$scratch/files/$name")
+    [ "$type" = "${expected#*:}" ] || fail "$name is seen as '$type', not ${expected#*:}"
+done
 
 # The man pages list every verb and option of the command-line contract
 # (../shared/spec/cli.md) and of the IDE.
