@@ -2,6 +2,8 @@
 # README.md, "Building and installing the package", says how to use them.
 # The install rules of the two programs are in app/CMakeLists.txt.
 
+# The AppStream id names the desktop entry, the metainfo and the icon; the IDE
+# tells Wayland the same (setDesktopFileName in app/gui/main.cpp).
 set(RUNGSMITH_APP_ID io.github.rungsmith.Rungsmith)
 set(RUNGSMITH_HOMEPAGE_URL "https://github.com/rungsmith/rungsmith"
     CACHE STRING "Project home page: the package's Homepage, AppStream's links and screenshots")
@@ -39,8 +41,9 @@ if(RUNGSMITH_BUILD_GUI)
         DESTINATION ${_datadir}/icons/hicolor/scalable/apps RENAME ${RUNGSMITH_APP_ID}.svg)
 endif()
 
-# Debian wants these two in every package; compressed without a time stamp
-# so that the package is the same whoever builds it.
+# Debian wants a copyright file and a changelog in every package; the
+# changelog is compressed without a time stamp, so that it is the same
+# whoever builds it.
 install(FILES ${_packaging}/copyright DESTINATION ${_docdir})
 add_custom_command(OUTPUT ${_generated}/changelog.gz
     COMMAND ${CMAKE_COMMAND} -E copy ${_packaging}/changelog ${_generated}/changelog
