@@ -7,6 +7,7 @@
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
 #include "sim/ForcesView.h"
+#include "sim/LiveLadder.h"
 #include "sim/ScenarioFileViewer.h"
 #include "sim/ScenarioResultsView.h"
 #include "sim/SimulationMode.h"
@@ -322,4 +323,39 @@ TEST_F(SimulationTest, EditingTheProjectEndsTheSimulation) {
     });
     EXPECT_FALSE(session()->isActive());
     EXPECT_FALSE(ladder()->isLive());
+}
+
+TEST_F(SimulationTest, LiveStateKeptUpToDateEqualsOneBuiltAfresh) {
+    begin();
+    ui::LiveLadderBuilder kept;
+    ui::LadderLiveState live;
+    kept.update(live, simulation(), 0);
+    auto same = [&] {
+        ui::LiveLadderBuilder fresh;
+        ui::LadderLiveState expected;
+        fresh.update(expected, simulation(), 0);
+        kept.update(live, simulation(), 0);
+        ASSERT_EQ(live.power.statements.size(), expected.power.statements.size());
+        for (const auto& [statement, power] : expected.power.statements) {
+            EXPECT_EQ(live.power.statements[statement].conducting, power.conducting) << statement;
+            EXPECT_EQ(live.power.statements[statement].energised, power.energised) << statement;
+        }
+        EXPECT_EQ(live.annotations, expected.annotations);
+        EXPECT_EQ(live.forced, expected.forced);
+        EXPECT_EQ(live.activeSteps, expected.activeSteps);
+    };
+    for (const char* input : {"I0.12", "I0.13", "I0.2", "I0.14"}) {
+        session()->toggle(addressOf(input));
+        singleScan();
+        same();
+    }
+    session()->force(addressOf("M0.0"), 1);
+    session()->toggle(addressOf("I0.0"));
+    session()->toggle(addressOf("I0.1"));
+    for (int i = 0; i < 3; ++i) {
+        singleScan();
+        same();
+    }
+    EXPECT_EQ(live.activeSteps.at(1), simulation().unit(0)->activeStep(1));
+    EXPECT_EQ(live.forced.count(QStringLiteral("M0.0")), 1u);
 }

@@ -2,6 +2,8 @@
 
 #include "ladder/LadderLiveState.h"
 
+#include <vector>
+
 namespace rs::sim {
 class Simulation;
 class UnitEngine;
@@ -17,13 +19,35 @@ namespace rs::ui {
 // whether the output was driven: the last instruction of an element tells.
 render::PowerSnapshot powerSnapshot(const sim::UnitEngine& unit);
 
-// Text for boxes: a timer's elapsed and preset time, the registers a
-// comparison or an arithmetic output reads and writes.
-std::map<std::pair<std::uint32_t, std::uint16_t>, QString>
-boxAnnotations(const sim::UnitEngine& unit);
+// Keeps a page's live state of station `station` up to date scan after
+// scan (power, box values, forces, active steps), touching only the
+// statements whose conduction changed and the boxes whose values did: a
+// page of thousands of networks costs little when little changes.
+class LiveLadderBuilder {
+public:
+    void update(LadderLiveState& state, const sim::Simulation& simulation, int station);
+    // The next update builds everything afresh (a new simulation began).
+    void reset() { m_unit = nullptr; }
 
-// Everything the page shows of station `station`; an empty state when the
-// simulation has no such unit.
-void fillLiveState(LadderLiveState& state, const sim::Simulation& simulation, int station);
+private:
+    struct Box {
+        std::pair<std::uint32_t, std::uint16_t> key;
+        std::vector<std::size_t> instructions; // the box's timer or operands, in code order
+        std::vector<std::int64_t> values;      // what the text shows now
+    };
+    struct Statement {
+        std::uint32_t number = 0;
+        std::size_t first = 0;
+        std::size_t count = 0;
+    };
+    void rebuild(LadderLiveState& state, const sim::UnitEngine& unit);
+    std::vector<std::int64_t> valuesOf(const sim::UnitEngine& unit, const Box& box) const;
+    QString textOf(const sim::UnitEngine& unit, const Box& box) const;
+
+    const sim::UnitEngine* m_unit = nullptr;
+    std::vector<std::uint8_t> m_conduction; // as of the last update
+    std::vector<Statement> m_statements;
+    std::vector<Box> m_boxes;
+};
 
 } // namespace rs::ui

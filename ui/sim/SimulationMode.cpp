@@ -2,7 +2,6 @@
 
 #include "BusStatusView.h"
 #include "ForcesView.h"
-#include "LiveLadder.h"
 #include "MainWindow.h"
 #include "ProjectDocument.h"
 #include "ScenarioFileViewer.h"
@@ -170,6 +169,7 @@ void SimulationMode::message(const QString& text) {
 
 void SimulationMode::stateChanged() {
     const sim::Simulation* simulation = m_session.simulation();
+    m_builder.reset();
     m_window->variablesPage()->setSimulation(simulation);
     if (!simulation && m_liveLadder) {
         m_liveLadder->setLiveState(nullptr);
@@ -189,7 +189,7 @@ void SimulationMode::refresh() {
 
     LadderPage* ladder = m_window->ladderPage();
     if (ladder && shown == ladder && simulated) {
-        fillLiveState(m_live, *simulation, ladder->station());
+        m_builder.update(m_live, *simulation, ladder->station());
         ladder->setLiveState(&m_live);
         m_liveLadder = ladder;
     } else if (m_liveLadder && (!simulated || ladder->document() != m_session.document())) {

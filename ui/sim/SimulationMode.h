@@ -3,7 +3,7 @@
 #include "SimulationSession.h"
 // Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in.
 #ifndef Q_MOC_RUN
-#include "ladder/LadderLiveState.h"
+#include "LiveLadder.h"
 #endif
 
 #include <QObject>
@@ -82,6 +82,7 @@ private:
     QDockWidget* m_waveformDock = nullptr;
     QDockWidget* m_scenariosDock = nullptr;
     LadderLiveState m_live;
+    LiveLadderBuilder m_builder;
     QPointer<LadderPage> m_liveLadder; // the page showing m_live, if any
 };
 
