@@ -149,7 +149,8 @@ for word in check compile format test 'vars export' 'vars import' ladder roundtr
     grep -qF -- "$word" <<<"$cli_page" || fail "the rungsmith-cli man page lacks '$word'"
 done
 gui_page=$(man_text rungsmith)
-for word in --screenshot --page --theme --help --version FILE.sps; do
+for word in --screenshot --page ladder:N text:N io:N variables:N --simulate --theme --help --version \
+    FILE.sps; do
     grep -qF -- "$word" <<<"$gui_page" || fail "the rungsmith man page lacks '$word'"
 done
 for program in rungsmith-cli rungsmith; do
