@@ -61,7 +61,7 @@ fi
 [[ "$(field Maintainer)" =~ ^[^\<]+\ \<[^@]+@[^\>]+\>$ ]] || fail "Maintainer is '$(field Maintainer)'"
 # shlibdeps found the Qt libraries the programs link.
 for library in libqt6core6 libqt6gui6 libqt6widgets6 libqt6svg6 libqscintilla2-qt6-15 libc6; do
-    [[ ",$(field Depends)," =~ [\ ,]$library[\ ,\(] ]] || fail "Depends lacks $library: $(field Depends)"
+    [[ ",$(field Depends)," =~ [\ ,]${library}[\ ,\(] ]] || fail "Depends lacks $library: $(field Depends)"
 done
 [ "$(field Description | wc -l)" -ge 5 ] || fail "Description has no real long part"
 
