@@ -55,7 +55,7 @@ field() { dpkg-deb --field "$deb" "$1"; }
 if revision=$(git -C "$source" rev-parse --short HEAD 2>/dev/null) &&
     ! git -C "$source" describe --exact-match --match 'v*' HEAD >/dev/null 2>&1; then
     [[ "$version" =~ ^[0-9.]+~git[0-9]{8}\.$revision$ ]] ||
-        fail "the version $version does not name the commit $revision"
+        fail "the version $version does not name the commit $revision (build again after a commit)"
 fi
 [ "$(field Section)" = electronics ] || fail "Section is '$(field Section)'"
 [[ "$(field Maintainer)" =~ ^[^\<]+\ \<[^@]+@[^\>]+\>$ ]] || fail "Maintainer is '$(field Maintainer)'"
