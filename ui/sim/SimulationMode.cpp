@@ -25,11 +25,14 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include <algorithm>
+
 namespace rs::ui {
 
 namespace {
 
 constexpr int kMessageMs = 4000;
+constexpr int kBottomDockHeight = 230;
 constexpr int kErrorCodeRegister = 11; // SR_ErrorCode
 
 // The operand as the ladder page spells it ("/I0.2" for P(/I0.2)).
@@ -61,7 +64,7 @@ SimulationMode::SimulationMode(MainWindow* window)
 
     m_forcesDock = addDock(m_forces, tr("Forces"), "forcesDock");
     m_watchDock = addDock(m_watch, tr("Watch"), "watchDock");
-    m_waveformDock = addDock(m_waveform, tr("Waveform"), "waveformDock");
+    m_waveformDock = addDock(m_waveform, tr("Waveform"), "waveformDock", false);
     m_busDock = addDock(m_bus, tr("Bus Status"), "busStatusDock");
     m_scenariosDock = addDock(m_scenarios, tr("Scenarios"), "scenariosDock");
     if (auto* view = window->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
@@ -122,12 +125,14 @@ SimulationMode::~SimulationMode() {
         m_liveLadder->setLiveState(nullptr);
 }
 
-QDockWidget* SimulationMode::addDock(QWidget* content, const QString& title, const char* name) {
+QDockWidget* SimulationMode::addDock(QWidget* content, const QString& title, const char* name,
+                                     bool withProblems) {
     auto* dock = new QDockWidget(title, m_window);
     dock->setObjectName(QString::fromLatin1(name));
     dock->setWidget(content);
-    m_window->addDockWidget(Qt::BottomDockWidgetArea, dock);
-    if (auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock")))
+    m_window->addDockWidget(Qt::BottomDockWidgetArea, dock, Qt::Horizontal);
+    auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    if (withProblems && problems)
         m_window->tabifyDockWidget(problems, dock);
     dock->hide();
     return dock;
@@ -143,6 +148,7 @@ QString SimulationMode::begin() {
     if (document->project().stations().size() > 1)
         m_busDock->show();
     m_forcesDock->raise();
+    showBottomDocks();
     message(
         tr("Simulating %1. Editing the project ends the simulation.").arg(document->displayName()));
     return {};
@@ -159,8 +165,16 @@ SimulationSession::ScenarioResult SimulationMode::runScenario(const QString& pat
     m_scenariosDock->show();
     m_scenariosDock->raise();
     m_waveformDock->show();
+    showBottomDocks();
     m_waveform->view()->zoomToFit();
     return result;
+}
+
+void SimulationMode::showBottomDocks() {
+    // Room for a few traces and list rows; the page keeps the rest.
+    const int height = std::max(m_waveformDock->height(), kBottomDockHeight);
+    m_window->resizeDocks({m_waveformDock}, {height}, Qt::Vertical);
+    m_window->resizeDocks({m_waveformDock}, {m_window->width() * 3 / 5}, Qt::Horizontal);
 }
 
 void SimulationMode::message(const QString& text) {

@@ -62,8 +62,11 @@ public:
     void refresh();
 
 private:
-    QDockWidget* addDock(QWidget* content, const QString& title, const char* name);
+    // A dock at the bottom, a tab beside Problems and Output or (the waveform) on its own.
+    QDockWidget* addDock(QWidget* content, const QString& title, const char* name,
+                         bool withProblems = true);
     void stateChanged();
+    void showBottomDocks();
     void message(const QString& text);
 
     MainWindow* m_window;

@@ -23,6 +23,7 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
       m_remove(new QToolButton(this)) {
     m_input->setObjectName(QStringLiteral("waveformInput"));
     m_input->setPlaceholderText(tr("Add a variable to plot"));
+    m_input->setMinimumWidth(160);
     m_completer->setCaseSensitivity(Qt::CaseInsensitive);
     m_completer->setFilterMode(Qt::MatchContains);
     m_completer->setModel(new QStringListModel(m_completer));
@@ -39,8 +40,9 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
     m_remove->setText(tr("Remove"));
     m_remove->setToolTip(tr("Stop plotting the chosen variable"));
     m_remove->setEnabled(false);
-    QToolButton* zoomIn = button(tr("Zoom In"), tr("Show less time (Ctrl+wheel)"));
-    QToolButton* zoomOut = button(tr("Zoom Out"), tr("Show more time (Ctrl+wheel)"));
+    QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
+    QToolButton* zoomOut =
+        button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
     QToolButton* fit = button(tr("Fit"), tr("Show the whole recording"));
     QToolButton* exportButton = button(tr("Export VCD..."), tr("Write the recording as a Value "
                                                                "Change Dump, for GTKWave"));
