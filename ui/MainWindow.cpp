@@ -19,7 +19,6 @@
 #include "UnitCaption.h"
 #include "UnitPage.h"
 #include "VariablesPage.h"
-#include "sim/SimulationMode.h"
 #include "compiler/ImageCodec.h"
 #include "ladder/LadderPage.h"
 #include "project/ProgramText.h"
@@ -28,6 +27,7 @@
 #include "project/RemanentVariables.h"
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
+#include "sim/SimulationMode.h"
 
 #include <Qsci/qsciglobal.h>
 
@@ -908,7 +908,8 @@ void MainWindow::newSequence(ProjectDocument* document, int station) {
     const int sequence = chosen.toInt();
     document->edit(tr("New Sequence %1 of Pluto %2").arg(sequence).arg(station),
                    [&](project::Project& p) { project::addSequence(p, station, sequence); });
-    showPage({PageRef::Kind::Code, document, station, sequence});
+    showPage({m_current.kind == PageRef::Kind::Ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code,
+              document, station, sequence});
 }
 
 void MainWindow::removeUnit(ProjectDocument* document, int station) {

@@ -42,6 +42,11 @@ ProjectTree::ProjectTree(QWidget* parent) : QTreeWidget(parent) {
         if (item && !m_selecting)
             emit pageRequested(pageOf(item));
     });
+    // The code's node is current while its text is shown too: a click on it shows the ladder.
+    connect(this, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
+        if (item && !m_selecting)
+            emit pageRequested(pageOf(item));
+    });
     connect(this, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
         QTreeWidgetItem* item = itemAt(at);
         emit menuRequested(item ? pageOf(item) : PageRef{}, viewport()->mapToGlobal(at));
