@@ -6,18 +6,24 @@
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
+#include "sim/BusStatusView.h"
 #include "sim/ForcesView.h"
 #include "sim/LiveLadder.h"
 #include "sim/ScenarioFileViewer.h"
 #include "sim/ScenarioResultsView.h"
+#include "sim/SimulationControls.h"
 #include "sim/SimulationMode.h"
 #include "sim/WatchView.h"
 #include "sim/WaveformPanel.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QContextMenuEvent>
+#include <QImage>
+#include <QLabel>
 #include <QMenu>
+#include <QProcess>
 #include <QPushButton>
 #include <QTabBar>
 #include <QTableView>
@@ -358,4 +364,64 @@ TEST_F(SimulationTest, LiveStateKeptUpToDateEqualsOneBuiltAfresh) {
     }
     EXPECT_EQ(live.activeSteps.at(1), simulation().unit(0)->activeStep(1));
     EXPECT_EQ(live.forced.count(QStringLiteral("M0.0")), 1u);
+}
+
+TEST_F(SimulationTest, TheClockRunsAtTheChosenSpeedAndStops) {
+    begin();
+    auto* speed = mode()->controls()->speed();
+    speed->setCurrentIndex(speed->findData(ui::SimulationSession::kAsFastAsPossible));
+    action("simulationStartAction")->trigger();
+    QTest::qWait(100);
+    action("simulationStopAction")->trigger();
+    EXPECT_EQ(session()->state(), ui::SimulationSession::State::Stopped);
+    // As fast as possible: far more than the 10 scans of 100 ms in real time.
+    const std::int64_t reached = simulation().timeMs();
+    EXPECT_GT(reached, 1000);
+    QTest::qWait(30);
+    EXPECT_EQ(simulation().timeMs(), reached);
+    EXPECT_TRUE(mode()->controls()->clock()->text().contains(
+        QString::number(static_cast<double>(reached) / 1000.0, 'f', 3)));
+    action("simulationResetAction")->trigger();
+    EXPECT_EQ(simulation().timeMs(), 0);
+}
+
+TEST_F(SimulationTest, BusStatusListsTheUnitsAndTheStatusBarTheCode) {
+    ASSERT_TRUE(
+        window.loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps"))
+            .isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    begin();
+    QTableWidget* bus = mode()->busStatusView()->table();
+    ASSERT_EQ(bus->rowCount(), 2);
+    EXPECT_EQ(bus->item(0, ui::BusStatusView::StationColumn)->text(), QStringLiteral("0"));
+    EXPECT_EQ(bus->item(1, ui::BusStatusView::StationColumn)->text(), QStringLiteral("1"));
+    EXPECT_EQ(bus->item(1, ui::BusStatusView::CodeColumn)->text(), QStringLiteral("E0=No Error"));
+    EXPECT_EQ(mode()->unitCode()->text(), QStringLiteral("Pluto 0: E0=No Error"));
+    session()->force(addressOf("SR1.11"), 26);
+    EXPECT_EQ(bus->item(1, ui::BusStatusView::CodeColumn)->text(), QStringLiteral("Er26"));
+}
+
+TEST_F(SimulationTest, CommandLineScreenshotShowsTheStateAScenarioEndsIn) {
+    const QString scenario =
+        writeFile(QStringLiteral("reset.scn"), "set I0.12 1\nset I0.13 1\nset I0.2 1\nrun 50ms\n"
+                                               "set I0.14 1\nrun 20ms\nset I0.14 0\nrun 20ms\n");
+    const QString out = directory.filePath(QStringLiteral("live.png"));
+    QProcess gui;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), directory.path());
+    gui.setProcessEnvironment(environment);
+    gui.start(QStringLiteral(RUNGSMITH_GUI),
+              {QStringLiteral("--simulate"), scenario, QStringLiteral("--screenshot"), out,
+               QStringLiteral("--page"), QStringLiteral("ladder:0")});
+    ASSERT_TRUE(gui.waitForFinished(60000));
+    EXPECT_EQ(gui.exitCode(), 0) << gui.readAllStandardError().toStdString();
+    EXPECT_FALSE(QImage(out).isNull());
+
+    gui.start(QStringLiteral(RUNGSMITH_GUI),
+              {QStringLiteral("--simulate"), directory.filePath(QStringLiteral("missing.scn")),
+               QStringLiteral("--screenshot"), out});
+    ASSERT_TRUE(gui.waitForFinished(60000));
+    EXPECT_EQ(gui.exitCode(), 2);
+    EXPECT_TRUE(gui.readAllStandardError().contains("missing.scn"));
 }
