@@ -1,9 +1,11 @@
 #include "WaveformPanel.h"
 
+#include "ProjectDocument.h"
 #include "SimulationSession.h"
 #include "StatusColors.h"
 #include "WaveformView.h"
 #include "project/ProjectFile.h"
+#include "project/VariableTable.h"
 
 #include <QCompleter>
 #include <QFileDialog>
@@ -83,6 +85,12 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
         const QString error = exportVcd();
         if (!error.isEmpty())
             QMessageBox::warning(this, tr("Export VCD"), error);
+    });
+    m_view->setNames([this](const lang::Address& address) {
+        const ProjectDocument* document = m_session->document();
+        return document
+                   ? QString::fromStdString(project::variableName(document->project(), address))
+                   : QString();
     });
     connect(m_session, &SimulationSession::updated, m_view, &WaveformView::recordingChanged);
     connect(m_session, &SimulationSession::stateChanged, this, [this] {

@@ -87,6 +87,11 @@ void WaveformView::updateScrollBars() {
         horizontal->setValue(horizontal->maximum());
 }
 
+void WaveformView::setNames(std::function<QString(const lang::Address&)> names) {
+    m_names = std::move(names);
+    viewport()->update();
+}
+
 void WaveformView::recordingChanged() {
     if (m_selected >= static_cast<int>(m_recorder->traces().size()))
         m_selected = -1;
@@ -101,22 +106,28 @@ void WaveformView::setMsPerPixel(double msPerPixel) {
 }
 
 void WaveformView::zoomIn() {
+    m_fitted = false;
     setMsPerPixel(m_msPerPixel / kZoomStep);
 }
 
 void WaveformView::zoomOut() {
+    m_fitted = false;
     setMsPerPixel(m_msPerPixel * kZoomStep);
 }
 
 void WaveformView::zoomToFit() {
     const double span = static_cast<double>(m_recorder->endMs() - m_recorder->startMs());
     m_follow = true;
+    m_fitted = true;
     setMsPerPixel(std::max(span, 1.0) / std::max(plotWidth() - 20, 1));
 }
 
 void WaveformView::resizeEvent(QResizeEvent* event) {
     QAbstractScrollArea::resizeEvent(event);
-    updateScrollBars();
+    if (m_fitted)
+        zoomToFit();
+    else
+        updateScrollBars();
 }
 
 void WaveformView::scrollContentsBy(int, int) {
@@ -194,8 +205,12 @@ void WaveformView::paintEvent(QPaintEvent*) {
                                                      : pal.color(QPalette::Window));
         painter.setPen(row == m_selected ? pal.color(QPalette::HighlightedText)
                                          : pal.color(QPalette::WindowText));
-        painter.drawText(nameRect.adjusted(6, 0, -4, 0), Qt::AlignVCenter | Qt::AlignLeft,
-                         QString::fromStdString(lang::toString(trace.address)));
+        const QString name = m_names ? m_names(trace.address) : QString();
+        const QString label = QString::fromStdString(lang::toString(trace.address)) +
+                              (name.isEmpty() ? QString() : QStringLiteral("  ") + name);
+        const QRect textRect = nameRect.adjusted(6, 0, -4, 0);
+        painter.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
+                         painter.fontMetrics().elidedText(label, Qt::ElideRight, textRect.width()));
         painter.setPen(pal.color(QPalette::Midlight));
         painter.drawLine(0, y + kRowHeight - 1, width, y + kRowHeight - 1);
 

@@ -3,6 +3,11 @@
 #include <QAbstractScrollArea>
 
 #include <cstdint>
+#include <functional>
+
+namespace rs::lang {
+struct Address;
+}
 
 namespace rs::ui {
 
@@ -20,6 +25,9 @@ public:
     static constexpr int kRowHeight = 28;
 
     explicit WaveformView(const WaveformRecorder* recorder, QWidget* parent = nullptr);
+
+    // The symbolic name shown beside a trace's address, empty for none.
+    void setNames(std::function<QString(const lang::Address&)> names);
 
     // The recording grew or changed: new extent, and the end shown when following.
     void recordingChanged();
@@ -53,8 +61,10 @@ private:
     void paintRuler(QPainter& painter, int width);
 
     const WaveformRecorder* m_recorder;
+    std::function<QString(const lang::Address&)> m_names;
     double m_msPerPixel = 1.0;
     bool m_follow = true;
+    bool m_fitted = false; // zoomToFit() was the last zoom: a resize fits again
     int m_selected = -1;
 };
 
