@@ -425,3 +425,22 @@ TEST_F(SimulationTest, CommandLineScreenshotShowsTheStateAScenarioEndsIn) {
     EXPECT_EQ(gui.exitCode(), 2);
     EXPECT_TRUE(gui.readAllStandardError().contains("missing.scn"));
 }
+
+TEST_F(SimulationTest, AnotherProjectsPagesShowNoValues) {
+    ui::ProjectDocument* muting = document();
+    ASSERT_TRUE(
+        window.loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps"))
+            .isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    begin();
+    session()->set(addressOf("I0.0"), 1);
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, muting, 0, 0}));
+    ui::VariableTableModel* model = window.variablesPage()->model();
+    ASSERT_GT(model->rowCount(), 0);
+    EXPECT_TRUE(model->index(0, ui::VariableTableModel::StatusColumn).data().toString().isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, muting, 0, 0}));
+    EXPECT_FALSE(ladder()->isLive());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, session()->document(), 0, 0}));
+    EXPECT_EQ(model->index(0, ui::VariableTableModel::StatusColumn).data().toString(),
+              QStringLiteral("1"));
+}

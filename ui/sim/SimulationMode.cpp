@@ -8,6 +8,7 @@
 #include "ScenarioResultsView.h"
 #include "SimulationControls.h"
 #include "StatusColors.h"
+#include "VariableTableModel.h"
 #include "VariablesPage.h"
 #include "WatchView.h"
 #include "WaveformPanel.h"
@@ -210,8 +211,12 @@ void SimulationMode::refresh() {
         m_liveLadder->setLiveState(nullptr);
         m_liveLadder = nullptr;
     }
-    if (shown == m_window->variablesPage())
-        m_window->variablesPage()->refreshStatus();
+    // Values of the simulated project only: another open project's page stays as it is.
+    VariablesPage* variables = m_window->variablesPage();
+    variables->setSimulation(variables->model()->document() == m_session.document() ? simulation
+                                                                                    : nullptr);
+    if (shown == variables)
+        variables->refreshStatus();
 
     const int station = m_window->currentPage().station >= 0 ? m_window->currentPage().station
                         : simulation->stations().empty()     ? 0
