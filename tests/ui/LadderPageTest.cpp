@@ -11,6 +11,7 @@
 #include "project/ProjectFile.h"
 #include "project/UnitText.h"
 
+#include <QCheckBox>
 #include <QDialog>
 #include <QFile>
 #include <QGraphicsScene>
@@ -377,6 +378,34 @@ TEST_F(LadderPageTest, DiagnosticsLandOnTheirElements) {
     EXPECT_EQ(page().problems().begin()->first, std::make_pair(std::uint32_t{1}, std::uint16_t{3}));
     ASSERT_TRUE(page().selectElement(1, 3));
     EXPECT_EQ(page().message(), QStringLiteral("I0.4 is not an input here"));
+}
+
+TEST_F(LadderPageTest, AConfigOptionIsACheckBoxThatSetsOrResetsAMemory) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    page().view()->setFocus();
+    DialogDriver driver({[](QDialog& dialog) {
+        dialog.findChild<QLineEdit*>(QStringLiteral("description"))
+            ->setText(QStringLiteral("Door switch fitted"));
+        dialog.findChild<QLineEdit*>(QStringLiteral("memory"))->setText(QStringLiteral("m0.5"));
+        dialog.findChild<QCheckBox*>(QStringLiteral("checked"))->setChecked(true);
+        dialog.accept();
+    }});
+    page().newConfigOption();
+    EXPECT_TRUE(unitText(0).startsWith(
+        "! pgm_pluto:00\nS0.0_0\n;@network comment=\"Door switch fitted\" option=\"on\"\n"
+        "S(M0.5)\n"))
+        << unitText(0).toStdString();
+    ASSERT_TRUE(page().networkItem(0, 0)->option().has_value());
+    EXPECT_EQ(page().cursor().network, 0);
+    key(Qt::Key_Space);
+    EXPECT_TRUE(unitText(0).contains("option=\"off\"\nR(M0.5)\n")) << unitText(0).toStdString();
+    EXPECT_FALSE(page().networkItem(0, 0)->option()->checked);
+    document()->undoStack()->undo();
+    EXPECT_TRUE(page().networkItem(0, 0)->option()->checked);
+    // Options are ordinary code to the compiler and read back as options.
+    const auto reread = rs::project::readProject(document()->fileText().toStdString());
+    EXPECT_TRUE(reread.ok());
 }
 
 TEST_F(LadderPageTest, ZoomsWithTheKeysAndExportsPdf) {

@@ -1,5 +1,6 @@
 #include "LadderPage.h"
 
+#include "ConfigOptionDialog.h"
 #include "ElementDialog.h"
 #include "LadderView.h"
 #include "NetworkItem.h"
@@ -720,6 +721,12 @@ void LadderPage::pressed(const QPointF& scenePosition, Qt::MouseButton button,
         toggleCollapsed(item->step(), item->index());
         return;
     }
+    if (item && button == Qt::LeftButton && item->option() &&
+        item->optionBox().adjusted(-4, -4, 4, 4).contains(item->mapFromScene(scenePosition))) {
+        setCursor({item->step(), item->index(), std::nullopt, std::nullopt, -1});
+        toggleConfigOption(item->step(), item->index());
+        return;
+    }
     const LadderCursor at = cursorAt(scenePosition);
     if (button == Qt::LeftButton && (modifiers & Qt::ControlModifier) && at.valid()) {
         const auto key = std::make_pair(at.step, at.network);
@@ -745,7 +752,9 @@ void LadderPage::doubleClicked(const QPointF& scenePosition) {
         return;
     const LadderCursor at = cursorAt(scenePosition);
     setCursor(at);
-    if (at.wholeNetwork())
+    if (item->option())
+        editConfigOption(at.step, at.network);
+    else if (at.wholeNetwork())
         editNetworkComment();
     else
         editProperties();
@@ -765,6 +774,7 @@ void LadderPage::showMenu(const QPointF& scenePosition, const QPoint& globalPosi
     menu.setObjectName(QStringLiteral("ladderMenu"));
     QMenu* newNetwork = menu.addMenu(tr("&New Network"));
     newNetwork->addAction(tr("&Basic Network"), this, [this] { this->newNetwork(); });
+    newNetwork->addAction(tr("&Config Option..."), this, [this] { newConfigOption(); });
     menu.addAction(tr("Cu&t Network(s)"), this, [this] { cutNetworks(); });
     menu.addAction(tr("&Copy Network(s)"), this, [this] { copyNetworks(); });
     menu.addAction(tr("&Paste Network(s)"), this, [this] { pasteNetworks(); });
@@ -817,7 +827,14 @@ bool LadderPage::handleKey(QKeyEvent* event) {
     switch (key) {
     case Qt::Key_Return:
     case Qt::Key_Enter:
-        editProperties();
+        if (NetworkItem* item = networkItem(m_drawing.cursor.step, m_drawing.cursor.network);
+            item && item->option())
+            editConfigOption(item->step(), item->index());
+        else
+            editProperties();
+        return true;
+    case Qt::Key_Space:
+        toggleConfigOption(m_drawing.cursor.step, m_drawing.cursor.network);
         return true;
     case Qt::Key_Delete:
     case Qt::Key_Backspace:
@@ -1114,6 +1131,61 @@ void LadderPage::newNetwork() {
     m_drawing.marked.clear();
     setCursor({m_pending->first, m_pending->second, std::nullopt, std::nullopt, -1});
     setMessage(tr("New network: insert its output first (L coil, S set, R reset, J jump ...)."));
+}
+
+void LadderPage::newConfigOption() {
+    if (!m_document || isLive())
+        return;
+    if (m_sequence != 0 || stepCount() == 0) {
+        setMessage(tr("Options stand at the start of the PLC code: open the PLC Code page."));
+        return;
+    }
+    ladder::ConfigOption option;
+    ConfigOptionDialog dialog(m_document, m_station, option, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    ladder::StepLadder ladder = m_steps[0].ladder;
+    // After the options already there, before the rest of the code.
+    int at = 0;
+    while (at < static_cast<int>(ladder.networks.size()) &&
+           ladder::configOptionOf(ladder.networks[at]))
+        ++at;
+    ladder.networks.insert(ladder.networks.begin() + at,
+                           ladder::configOptionNetwork(*dialog.option()));
+    if (m_pending && m_pending->first == 0 && m_pending->second >= at)
+        ++m_pending->second;
+    commitStep(tr("New Config Option"), 0, std::move(ladder));
+    setCursor({0, at, std::nullopt, std::nullopt, -1});
+}
+
+void LadderPage::editConfigOption(int step, int network) {
+    NetworkItem* item = networkItem(step, network);
+    if (!m_document || isLive() || !item || !item->option())
+        return;
+    ConfigOptionDialog dialog(m_document, m_station, *item->option(), this);
+    if (dialog.exec() != QDialog::Accepted || dialog.option() == item->option())
+        return;
+    const ladder::Network changed = ladder::configOptionNetwork(*dialog.option());
+    editNetwork(tr("Change Config Option"), step, network, [&](ladder::Network& n) {
+        n = changed;
+        return ladder::EditResult{};
+    });
+    setCursor({step, network, std::nullopt, std::nullopt, -1});
+}
+
+void LadderPage::toggleConfigOption(int step, int network) {
+    NetworkItem* item = networkItem(step, network);
+    if (!m_document || isLive() || !item || !item->option())
+        return;
+    ladder::ConfigOption option = *item->option();
+    option.checked = !option.checked;
+    const ladder::Network changed = ladder::configOptionNetwork(option);
+    editNetwork(option.checked ? tr("Enable Option") : tr("Disable Option"), step, network,
+                [&](ladder::Network& n) {
+                    n = changed;
+                    return ladder::EditResult{};
+                });
+    setCursor({step, network, std::nullopt, std::nullopt, -1});
 }
 
 void LadderPage::copyNetworks() {

@@ -90,6 +90,10 @@ public:
     void editProperties();
     void deleteSelection();
     void newNetwork();
+    // A Config Option network at the start of the PLC code (manual 11.6).
+    void newConfigOption();
+    void editConfigOption(int step, int network);
+    void toggleConfigOption(int step, int network);
     void copyNetworks();
     void cutNetworks();
     void pasteNetworks();

@@ -11,6 +11,7 @@ namespace rs::ui {
 namespace {
 
 constexpr qreal kSelectionPad = 3;
+constexpr qreal kOptionWidth = 150; // right of an option network: its check box
 
 bool startsWith(const std::vector<std::size_t>& path, const std::vector<std::size_t>& prefix) {
     return path.size() >= prefix.size() && std::equal(prefix.begin(), prefix.end(), path.begin());
@@ -32,6 +33,7 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
     m_firstStatement = context.firstStatement;
     m_namesVersion = namesVersion;
     m_layout = ladder::layoutNetwork(network, context);
+    m_option = ladder::configOptionOf(network);
     m_laidOut = true;
     update();
     return true;
@@ -52,7 +54,13 @@ void NetworkItem::setCollapsed(bool collapsed) {
 QRectF NetworkItem::boundingRect() const {
     const qreal height = m_collapsed ? m_layout.metrics.titleHeight + 2 * m_layout.metrics.margin
                                      : m_layout.size.height();
-    return {0, 0, kGutter + m_layout.size.width(), height};
+    return {0, 0, kGutter + m_layout.size.width() + (m_option ? kOptionWidth : 0), height};
+}
+
+QRectF NetworkItem::optionBox() const {
+    const qreal side = 16;
+    return {kGutter + m_layout.size.width() + 12,
+            m_layout.metrics.margin + (m_layout.metrics.titleHeight - side) / 2, side, side};
 }
 
 QRectF NetworkItem::collapseBox() const {
@@ -104,6 +112,24 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
             QRectF(0, 0, bounds.width(), m_layout.metrics.titleHeight + m_layout.metrics.margin),
             m_drawing->markedNetwork);
 
+    if (m_option) {
+        const QRectF box = optionBox();
+        painter->setPen(QPen(style.ink, 1.5));
+        painter->setBrush(style.background);
+        painter->drawRect(box);
+        if (m_option->checked) {
+            painter->setPen(QPen(style.powered, 2.5));
+            painter->drawPolyline(
+                QPolygonF({box.topLeft() + QPointF(3, 8), box.topLeft() + QPointF(7, 12),
+                           box.topLeft() + QPointF(13, 4)}));
+        }
+        painter->setPen(style.ink);
+        painter->setFont(style.font(style.labelPixelSize, true));
+        painter->drawText(
+            QRectF(box.right() + 6, box.top() - 2, kOptionWidth - 40, box.height() + 4),
+            Qt::AlignLeft | Qt::AlignVCenter,
+            m_option->checked ? QObject::tr("Option on") : QObject::tr("Option off"));
+    }
     // The expand/collapse box.
     painter->setPen(QPen(style.ink, 1));
     painter->setBrush(Qt::NoBrush);

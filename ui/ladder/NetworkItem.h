@@ -2,6 +2,7 @@
 
 #include "LadderDrawing.h"
 #ifndef Q_MOC_RUN
+#include "ladder/ConfigOption.h"
 #include "ladder/Layout.h"
 #include "ladder/Network.h"
 #endif
@@ -29,6 +30,9 @@ public:
     const ladder::Network& network() const { return m_network; }
     const ladder::NetworkLayout& layout() const { return m_layout; }
     std::uint32_t firstStatement() const { return m_firstStatement; }
+    // A Config Option network: drawn with its check box at the right.
+    const std::optional<ladder::ConfigOption>& option() const { return m_option; }
+    QRectF optionBox() const;
 
     void setCollapsed(bool collapsed);
     bool collapsed() const { return m_collapsed; }
@@ -57,6 +61,7 @@ private:
     int m_namesVersion = -1;
     bool m_laidOut = false;
     bool m_collapsed = false;
+    std::optional<ladder::ConfigOption> m_option;
 };
 
 } // namespace rs::ui

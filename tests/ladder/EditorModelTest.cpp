@@ -1,0 +1,103 @@
+#include "StepText.h"
+#include "ladder/ConfigOption.h"
+#include "ladder/ElementText.h"
+#include "ladder/LadderToText.h"
+#include "ladder/NetworkText.h"
+#include "ladder/TextToLadder.h"
+#include "lang/Parser.h"
+
+#include <gtest/gtest.h>
+
+// What the ladder editor reads and writes besides the editing operations:
+// elements typed in its properties dialog, networks on the clipboard, and
+// Config Option networks.
+namespace {
+
+using namespace rs::ladder;
+using rs::lang::Address;
+using rs::lang::AddressKind;
+
+rs::lang::Document documentWithNames() {
+    return rs::lang::parse("! id_pluto:00=000034AD4AE1\n"
+                           "! I0.12=EStop\n"
+                           "! pgm_pluto:00\n"
+                           "! R0.1=Count\n"
+                           "S0.0_0\n")
+        .document;
+}
+
+TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
+    const auto document = documentWithNames();
+    for (const char* text : {"EStop", "/I0.2", "P(I0.14)", "N(/I0.1)", "/P(I0.3)", "TON(2s50)",
+                             "/TPS(R0.5)", "TOF(1s50)", "(Count>=5)", "/(R0.1=R0.2)"}) {
+        const ElementReading read = readElement(document, 0, text);
+        ASSERT_TRUE(read.element) << text << ": " << read.error;
+        EXPECT_EQ(elementText(*read.element), text);
+    }
+    const ElementReading named = readElement(document, 0, "estop");
+    ASSERT_TRUE(named.element);
+    EXPECT_EQ(std::get<Contact>(*named.element).operand.address,
+              (Address{AddressKind::Input, 0, 12}));
+}
+
+TEST(ElementText, ReadsEveryOutputKind) {
+    const auto document = documentWithNames();
+    for (const char* text : {"Q0.2", "S(Q0.2)", "R(M0.1)", "T(Q0.3)", "J(+1)", "J(0)", "J(-2)",
+                             "R(S0.1)", "(Count += 2)", "(R0.1++)", "(R0.1 = R0.2 + R0.3)"}) {
+        const OutputReading read = readOutput(document, 0, text);
+        ASSERT_TRUE(read.output) << text << ": " << read.error;
+        EXPECT_EQ(outputText(*read.output), text);
+    }
+}
+
+TEST(ElementText, RefusesWhatIsNotOneElementWithAReason) {
+    const auto document = documentWithNames();
+    EXPECT_FALSE(readElement(document, 0, "I0.1 * I0.2").error.empty());
+    EXPECT_FALSE(readElement(document, 0, "NoSuchName").error.empty());
+    EXPECT_FALSE(readElement(document, 0, "").error.empty());
+    EXPECT_FALSE(readOutput(document, 0, "Q0.2 = I0.1").error.empty());
+    EXPECT_FALSE(readOutput(document, 0, "(").error.empty());
+}
+
+TEST(NetworkText, NetworksGoThroughTheClipboardWithAddressesForNames) {
+    const StepLadder step = toLadder(rs::test::stepWithCode(";@network comment=\"Start\"\n"
+                                                            "Q0.2 = I0.12 * I0.13\n"
+                                                            "Q0.3 = Q0.2\n"
+                                                            "Q0.4 = /I0.5\n"));
+    const std::string text = networksText(step.networks);
+    const NetworksReading read = readNetworksText(text);
+    ASSERT_TRUE(read.error.empty()) << read.error;
+    ASSERT_EQ(read.networks.size(), step.networks.size());
+    EXPECT_EQ(read.networks.front().comment, "Start");
+    EXPECT_EQ(rs::test::printLines(toLines(StepLadder{{}, read.networks})), text);
+    EXPECT_FALSE(readNetworksText("Q0.2 = (").error.empty());
+}
+
+TEST(ConfigOption, IsARecordAndTheStatementItStandsFor) {
+    const ConfigOption option{
+        "Door switch fitted", {{}, Address{AddressKind::Memory, 0, 5}, {}}, true};
+    const Network network = configOptionNetwork(option);
+    const std::string text = rs::test::printLines(toLines(StepLadder{{}, {network}}));
+    EXPECT_EQ(text, ";@network comment=\"Door switch fitted\" option=\"on\"\nS(M0.5)\n");
+    const StepLadder read = toLadder(rs::test::stepWithCode(text));
+    ASSERT_EQ(read.networks.size(), 1U);
+    EXPECT_EQ(configOptionOf(read.networks.front()), option);
+
+    ConfigOption off = option;
+    off.checked = false;
+    EXPECT_EQ(rs::test::printLines(toLines(StepLadder{{}, {configOptionNetwork(off)}})),
+              ";@network comment=\"Door switch fitted\" option=\"off\"\nR(M0.5)\n");
+}
+
+TEST(ConfigOption, OrdinaryNetworksAreNoOptions) {
+    for (const char* text : {"S(M0.5)\n", ";@network comment=\"x\"\nS(M0.5)\n",
+                             ";@network comment=\"x\" option=\"on\"\nR(M0.5)\n",
+                             ";@network comment=\"x\" option=\"on\"\nS(Q0.5)\n",
+                             ";@network comment=\"x\" option=\"on\"\nS(M0.5) = I0.1\n"}) {
+        const StepLadder read = toLadder(rs::test::stepWithCode(text));
+        ASSERT_FALSE(read.networks.empty());
+        EXPECT_FALSE(configOptionOf(read.networks.front())) << text;
+    }
+}
+
+} // namespace
