@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace rs::sim {
@@ -37,7 +38,14 @@ public:
     const UnitMemory& memory() const { return m_memory; }
     int activeStep(int sequence) const;
     bool hasSequence(int sequence) const;
-    const std::vector<Conduction>& conduction() const { return m_conduction; }
+    // What each instruction did in the last scan. A scan runs without marking
+    // conduction; the first call after it runs that scan again, marking, from
+    // the state the scan started with (see docs/simulator.md, "Speed").
+    const std::vector<Conduction>& conduction() const;
+    // Marks conduction while scanning instead, for callers that read it after
+    // every scan.
+    void setEagerConduction(bool eager);
+    bool eagerConduction() const { return m_eagerConduction; }
 
     // The units on the bus, for SM_Pluto0_Present .. SM_Pluto31_Present.
     void setPresent(const std::array<bool, 32>& present);
@@ -74,24 +82,73 @@ private:
         void writeWord(std::int64_t value) const;
         bool wideWord() const;
     };
+    // The unmarked form of a step's code: handlers jump to each other
+    // directly, a Rung is folded into its neighbours, and an end marker
+    // closes the step. `arg` is the operand's address or the Decoded entry.
+    struct FastOp {
+        const void* handler;
+        void* arg;
+    };
     struct StepRun {
         int sequence;
         int step;
         std::uint32_t first;
         std::uint32_t count;
+        std::uint32_t fastFirst;
     };
-    struct Sequence {
-        std::vector<int> stepIndex; // step number -> index in m_steps, -1 when absent
+    struct SequenceState {
         int active = 0;
         bool stepNew = true;
         bool resetRequested = false;
+    };
+    struct Sequence : SequenceState {
+        std::vector<int> stepIndex; // step number -> index in m_steps, -1 when absent
     };
     struct EdgeState {
         bool seen = false;
         bool last = false;
     };
+    // An edge on a byte operand, all runFast needs at hand.
+    struct ByteEdge {
+        const std::uint8_t* operand;
+        EdgeState* state;
+        std::uint8_t operandNegated;
+        std::uint8_t rising;
+        std::uint8_t negated;
+    };
+    // Everything the steps of a scan read and write besides the code: what a
+    // replay of the scan starts from.
+    struct ScanState {
+        UnitMemory memory;
+        std::vector<EdgeState> edges;
+        std::vector<Timer> timers;
+        std::array<SequenceState, 10> sequences;
+        std::uint64_t scan = 0;
+        int cycleMs = 0;
+    };
+    // Another unit's variable that this unit reads: copied from the bus at the
+    // start of each scan, so that a replay sees what the scan saw.
+    struct RemoteCopy {
+        std::uint8_t* to;
+        const std::uint8_t* from;
+        std::size_t size;
+    };
     void decode();
+    void translate();
+    void runSteps(bool marking, int cycleMs);
+    // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
+    // the handlers' addresses for translate() and runs nothing.
+    void runFast(const FastOp* op, int& pendingJump, int cycleMs,
+                 const void* const** handlerTable = nullptr);
+    unsigned edge(const Decoded& in);
+    static unsigned byteEdge(const ByteEdge& edge);
+    void save(ScanState& state) const;
+    void restore(const ScanState& state);
+    void replay();
     static std::uint8_t handlerFor(const Decoded& decoded);
+    UnitMemory& remoteCopy(int station);
+    template <typename Ref>
+    Ref readRemote(const lang::Address& address, Ref (*locate)(UnitMemory&, const lang::Address&));
     BitRef decodeBit(const lang::Address& address, bool forWriting);
     WordRef decodeWord(const lang::Address& address);
     void runStep(int index, int& pendingJump, int cycleMs);
@@ -103,13 +160,20 @@ private:
     compiler::UnitImage m_image;
     const Bus& m_bus;
     UnitMemory m_memory;
-    UnitMemory m_sink; // where writes to forced variables go
+    UnitMemory m_sink;                                    // where writes to forced variables go
+    std::array<std::unique_ptr<UnitMemory>, 32> m_remote; // other units' variables as last read
+    std::vector<RemoteCopy> m_remoteCopies;
     std::vector<Decoded> m_code;
+    std::vector<FastOp> m_fast;
+    std::vector<ByteEdge> m_byteEdges;
     std::vector<StepRun> m_steps;
     std::array<Sequence, 10> m_sequences;
     std::vector<EdgeState> m_edges;
     std::vector<Timer> m_timers;
-    std::vector<Conduction> m_conduction;
+    mutable std::vector<Conduction> m_conduction;
+    ScanState m_scanStart;            // the state the last scan's steps started from
+    mutable bool m_replayDue = false; // m_conduction is not yet that of the last scan
+    bool m_eagerConduction = false;
     std::vector<int> m_ranSteps; // steps run in the last scan, by index
     std::map<lang::Address, std::int64_t> m_forces;
     std::array<bool, 32> m_present{};
