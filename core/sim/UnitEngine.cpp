@@ -123,6 +123,7 @@ enum FastHandler : std::uint8_t {
     FSequenceReset,
     FArith,
     FArithRegister, // on a register, not a division
+    FBitStatements, // a row of BitStatements
     FEnd,
     FastHandlerCount
 };
@@ -740,6 +741,12 @@ void UnitEngine::translate() {
     // runFast points into m_byteEdges: it must not grow once filled.
     m_byteEdges.reserve(static_cast<std::size_t>(std::count_if(
         m_code.begin(), m_code.end(), [](const Decoded& d) { return d.handler == HEdge; })));
+    const std::size_t rungs = static_cast<std::size_t>(std::count_if(
+        m_code.begin(), m_code.end(), [](const Decoded& d) { return d.handler == HRung; }));
+    m_bitStatements.clear();
+    m_bitStatements.reserve(rungs);
+    m_bitStatementRows.clear();
+    m_bitStatementRows.reserve(rungs);
     std::vector<FastHandler> kinds; // of m_fast's entries
     for (StepRun& step : m_steps) {
         step.fastFirst = static_cast<std::uint32_t>(m_fast.size());
@@ -756,6 +763,25 @@ void UnitEngine::translate() {
             const bool negated = d.flags & compiler::Negated;
             void* arg = &d;
             FastHandler kind = FEnd;
+            if (d.handler == HRung) {
+                std::uint32_t end = i + 1;
+                while (end < step.first + step.count && m_code[end].handler != HRung)
+                    ++end;
+                BitStatement statement{};
+                if (toBitStatement(i, end, statement)) {
+                    m_bitStatements.push_back(statement);
+                    if (last() == FBitStatements) {
+                        m_bitStatementRows.back().end = &m_bitStatements.back() + 1;
+                    } else {
+                        m_bitStatementRows.push_back(
+                            {&m_bitStatements.back(), &m_bitStatements.back() + 1});
+                        m_fast.push_back({table[FBitStatements], &m_bitStatementRows.back()});
+                        kinds.push_back(FBitStatements);
+                    }
+                    i = end - 1;
+                    continue;
+                }
+            }
             switch (static_cast<Handler>(d.handler)) {
             case HRung:
                 // Power is 1 after a byte output when the next statement starts.
@@ -881,6 +907,59 @@ void UnitEngine::translate() {
     }
 }
 
+bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out) {
+    static const std::uint8_t one = 1;
+    static const std::uint8_t zero = 0;
+    if (end - first < 2)
+        return false;
+    const auto byteOperand = [](const Decoded& d) {
+        return d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+    };
+    out.contact[0] = out.contact[1] = &one;
+    out.edgeOperand = &zero;
+    out.edge = &m_noEdge;
+    out.edgeNegated = 1;
+    int contacts = 0;
+    bool edge = false;
+    for (std::uint32_t i = first + 1; i + 1 < end; ++i) {
+        const Decoded& d = m_code[i];
+        const auto negated = static_cast<std::uint8_t>(d.flags & compiler::Negated);
+        if (d.handler == HContactByte && contacts < 2) {
+            out.contact[contacts] = static_cast<const std::uint8_t*>(d.ref);
+            out.contactNegated[contacts++] = negated;
+        } else if (d.handler == HEdge && !edge && byteOperand(d)) {
+            edge = true;
+            out.edgeOperand = static_cast<const std::uint8_t*>(d.ref);
+            out.edge = &m_edges[d.slot];
+            out.edgeOperandNegated = (d.flags & compiler::OperandNegated) != 0;
+            out.edgeRising = (d.flags & compiler::Rising) != 0;
+            out.edgeNegated = negated;
+        } else {
+            return false;
+        }
+    }
+    const Decoded& output = m_code[end - 1];
+    out.target = static_cast<std::uint8_t*>(output.ref);
+    out.keepOff = 0xFF;
+    switch (output.handler) {
+    case HCoilByte:
+        out.flipOn = 1;
+        out.keepOff = 0;
+        return true;
+    case HSetByte:
+        out.flipOn = 1;
+        return true;
+    case HResetByte:
+        return true;
+    case HToggle:
+        out.keepOn = 1;
+        out.flipOn = 1;
+        return byteOperand(output);
+    default:
+        return false;
+    }
+}
+
 // The same instructions as runStep without the marks, in the form translate()
 // made: a scan that nobody looks at in detail costs what its logic costs.
 #pragma GCC diagnostic push
@@ -928,6 +1007,7 @@ void UnitEngine::runFast(const FastOp* op, int& pendingJump, int cycleMs,
                                            &&sequenceReset,
                                            &&arith,
                                            &&arithRegister,
+                                           &&bitStatements,
                                            &&end};
     static_assert(std::size(handlers) == FastHandlerCount);
     if (handlerTable) {
@@ -1137,6 +1217,27 @@ arithRegister:
         target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
     }
     RS_NEXT();
+bitStatements : {
+    const auto& row = *static_cast<const BitStatementRow*>(op->arg);
+    for (const BitStatement* st = row.first; st != row.end; ++st) {
+        unsigned on = (static_cast<unsigned>(*st->contact[0] != 0) ^ st->contactNegated[0]) &
+                      (static_cast<unsigned>(*st->contact[1] != 0) ^ st->contactNegated[1]);
+        const unsigned value =
+            static_cast<unsigned>(*st->edgeOperand != 0) ^ st->edgeOperandNegated;
+        const unsigned last = st->edge->last;
+        const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
+        st->edge->seen = true;
+        st->edge->last = value != 0;
+        on &= seen ^ st->edgeNegated;
+        const unsigned old = *st->target;
+        const unsigned withPower = (static_cast<unsigned>(old != 0) & st->keepOn) ^ st->flipOn;
+        const unsigned without = old & st->keepOff;
+        const unsigned select = 0u - on;
+        *st->target = static_cast<std::uint8_t>((withPower & select) | (without & ~select));
+        sm[kDitto] = static_cast<std::uint8_t>(on);
+    }
+    RS_NEXT();
+}
 end:
     return;
 #undef RS_NEGATED

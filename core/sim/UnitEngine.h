@@ -116,6 +116,27 @@ private:
         std::uint8_t rising;
         std::uint8_t negated;
     };
+    // A statement of at most two byte contacts and one byte edge in series and
+    // one output on a byte (=, S, R, T): runFast runs a row of them as a loop
+    // without a branch that depends on the program or the data. Unused
+    // contacts read a 1, an unused edge is a negated one that never fires.
+    struct BitStatement {
+        const std::uint8_t* contact[2];
+        const std::uint8_t* edgeOperand;
+        EdgeState* edge;
+        std::uint8_t* target;
+        std::uint8_t contactNegated[2];
+        std::uint8_t edgeOperandNegated;
+        std::uint8_t edgeRising;
+        std::uint8_t edgeNegated;
+        std::uint8_t keepOn; // with power: target = (target != 0 & keepOn) ^ flipOn
+        std::uint8_t flipOn;
+        std::uint8_t keepOff; // without: target &= keepOff
+    };
+    struct BitStatementRow {
+        const BitStatement* first;
+        const BitStatement* end;
+    };
     // Everything the steps of a scan read and write besides the code: what a
     // replay of the scan starts from.
     struct ScanState {
@@ -135,6 +156,7 @@ private:
     };
     void decode();
     void translate();
+    bool toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out);
     void runSteps(bool marking, int cycleMs);
     // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
     // the handlers' addresses for translate() and runs nothing.
@@ -166,6 +188,9 @@ private:
     std::vector<Decoded> m_code;
     std::vector<FastOp> m_fast;
     std::vector<ByteEdge> m_byteEdges;
+    std::vector<BitStatement> m_bitStatements;
+    std::vector<BitStatementRow> m_bitStatementRows;
+    EdgeState m_noEdge; // what an unused edge of a BitStatement works on
     std::vector<StepRun> m_steps;
     std::array<Sequence, 10> m_sequences;
     std::vector<EdgeState> m_edges;
