@@ -3,6 +3,7 @@
 #include "lang/Ast.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace rs::sim {
@@ -124,6 +125,7 @@ enum FastHandler : std::uint8_t {
     FArith,
     FArithRegister, // on a register, not a division
     FBitStatements, // a row of BitStatements
+    FBitStatementsWithoutEdges,
     FEnd,
     FastHandlerCount
 };
@@ -905,18 +907,43 @@ void UnitEngine::translate() {
         m_fast.push_back({table[FEnd], nullptr});
         kinds.push_back(FEnd);
     }
+    for (std::size_t i = 0; i < m_fast.size(); ++i) {
+        if (kinds[i] != FBitStatements)
+            continue;
+        const auto& row = *static_cast<const BitStatementRow*>(m_fast[i].arg);
+        if (std::all_of(row.first, row.end,
+                        [this](const BitStatement& st) { return st.edge == &m_noEdge; }))
+            m_fast[i].handler = table[FBitStatementsWithoutEdges];
+    }
 }
 
 bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out) {
     static const std::uint8_t one = 1;
     static const std::uint8_t zero = 0;
+    static std::uint8_t nowhere = 0; // the target of a jump
     if (end - first < 2)
         return false;
-    const auto byteOperand = [](const Decoded& d) {
-        return d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+    // The byte and mask of a bit operand (a register's bits are bytes in
+    // memory order, so this needs a little-endian machine).
+    const auto locate = [](const Decoded& d, const std::uint8_t*& byte, std::uint8_t& mask) {
+        if (d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte)) {
+            byte = static_cast<const std::uint8_t*>(d.ref);
+            mask = 0xFF;
+            return true;
+        }
+        if (d.refKind != static_cast<std::uint8_t>(BitRef::Kind::RegisterBit) ||
+            std::endian::native != std::endian::little)
+            return false;
+        byte = static_cast<const std::uint8_t*>(d.ref) + d.bit / 8;
+        mask = static_cast<std::uint8_t>(1u << (d.bit % 8));
+        return true;
     };
-    out.contact[0] = out.contact[1] = &one;
-    out.edgeOperand = &zero;
+    for (int i = 0; i < 2; ++i) {
+        out.read[i] = &one;
+        out.mask[i] = 0xFF;
+    }
+    out.read[2] = &zero;
+    out.mask[2] = 0xFF;
     out.edge = &m_noEdge;
     out.edgeNegated = 1;
     int contacts = 0;
@@ -924,14 +951,16 @@ bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitState
     for (std::uint32_t i = first + 1; i + 1 < end; ++i) {
         const Decoded& d = m_code[i];
         const auto negated = static_cast<std::uint8_t>(d.flags & compiler::Negated);
-        if (d.handler == HContactByte && contacts < 2) {
-            out.contact[contacts] = static_cast<const std::uint8_t*>(d.ref);
-            out.contactNegated[contacts++] = negated;
-        } else if (d.handler == HEdge && !edge && byteOperand(d)) {
+        if (d.op == Op::Contact && contacts < 2) {
+            if (!locate(d, out.read[contacts], out.mask[contacts]))
+                return false;
+            out.negated[contacts++] = negated;
+        } else if (d.op == Op::Edge && !edge) {
+            if (!locate(d, out.read[2], out.mask[2]))
+                return false;
             edge = true;
-            out.edgeOperand = static_cast<const std::uint8_t*>(d.ref);
             out.edge = &m_edges[d.slot];
-            out.edgeOperandNegated = (d.flags & compiler::OperandNegated) != 0;
+            out.negated[2] = (d.flags & compiler::OperandNegated) != 0;
             out.edgeRising = (d.flags & compiler::Rising) != 0;
             out.edgeNegated = negated;
         } else {
@@ -939,25 +968,70 @@ bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitState
         }
     }
     const Decoded& output = m_code[end - 1];
-    out.target = static_cast<std::uint8_t*>(output.ref);
     out.keepOff = 0xFF;
-    switch (output.handler) {
-    case HCoilByte:
+    if (output.op == Op::Jump) {
+        if (output.slot > kMaxStep)
+            return false;
+        out.target = &nowhere;
+        out.jump = 1;
+        out.jumpStep = static_cast<std::uint8_t>(output.slot);
+        return true;
+    }
+    const std::uint8_t* target = nullptr;
+    if (!locate(output, target, out.targetMask))
+        return false;
+    out.target = const_cast<std::uint8_t*>(target);
+    // A byte output is 0 or 1, a register bit its own bit.
+    out.targetOne = out.targetMask == 0xFF ? 1 : out.targetMask;
+    switch (output.op) {
+    case Op::Coil:
         out.flipOn = 1;
-        out.keepOff = 0;
+        out.keepOff = static_cast<std::uint8_t>(~out.targetMask);
         return true;
-    case HSetByte:
+    case Op::Set:
         out.flipOn = 1;
         return true;
-    case HResetByte:
+    case Op::Reset:
         return true;
-    case HToggle:
+    case Op::Toggle:
         out.keepOn = 1;
         out.flipOn = 1;
-        return byteOperand(output);
+        return true;
     default:
         return false;
     }
+}
+
+template <bool withEdges>
+inline void UnitEngine::runBitStatements(const BitStatementRow& row, std::uint8_t& ditto,
+                                         int& pendingJump) {
+    int jump = pendingJump;
+    for (const BitStatement* st = row.first; st != row.end; ++st) {
+        const auto bit = [st](int i) {
+            return static_cast<unsigned>((*st->read[i] & st->mask[i]) != 0) ^ st->negated[i];
+        };
+        unsigned on = bit(0) & bit(1);
+        if constexpr (withEdges) {
+            const unsigned value = bit(2);
+            const unsigned last = st->edge->last;
+            const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
+            st->edge->seen = true;
+            st->edge->last = value != 0;
+            on &= seen ^ st->edgeNegated;
+        }
+        const unsigned old = *st->target;
+        const unsigned output =
+            (static_cast<unsigned>((old & st->targetMask) != 0) & st->keepOn) ^ st->flipOn;
+        const unsigned withPower = (old & ~st->targetMask) | (st->targetOne & (0u - output));
+        const unsigned without = old & st->keepOff;
+        const unsigned select = 0u - on;
+        *st->target = static_cast<std::uint8_t>((withPower & select) | (without & ~select));
+        jump = (on & st->jump) ? st->jumpStep : jump;
+        const unsigned keep = 0u - static_cast<unsigned>(st->jump); // a jump leaves SM_Ditto
+        // Stored each time: the next statement may read it.
+        ditto = static_cast<std::uint8_t>((ditto & keep) | (on & ~keep));
+    }
+    pendingJump = jump;
 }
 
 // The same instructions as runStep without the marks, in the form translate()
@@ -1008,6 +1082,7 @@ void UnitEngine::runFast(const FastOp* op, int& pendingJump, int cycleMs,
                                            &&arith,
                                            &&arithRegister,
                                            &&bitStatements,
+                                           &&bitStatementsWithoutEdges,
                                            &&end};
     static_assert(std::size(handlers) == FastHandlerCount);
     if (handlerTable) {
@@ -1217,27 +1292,12 @@ arithRegister:
         target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
     }
     RS_NEXT();
-bitStatements : {
-    const auto& row = *static_cast<const BitStatementRow*>(op->arg);
-    for (const BitStatement* st = row.first; st != row.end; ++st) {
-        unsigned on = (static_cast<unsigned>(*st->contact[0] != 0) ^ st->contactNegated[0]) &
-                      (static_cast<unsigned>(*st->contact[1] != 0) ^ st->contactNegated[1]);
-        const unsigned value =
-            static_cast<unsigned>(*st->edgeOperand != 0) ^ st->edgeOperandNegated;
-        const unsigned last = st->edge->last;
-        const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
-        st->edge->seen = true;
-        st->edge->last = value != 0;
-        on &= seen ^ st->edgeNegated;
-        const unsigned old = *st->target;
-        const unsigned withPower = (static_cast<unsigned>(old != 0) & st->keepOn) ^ st->flipOn;
-        const unsigned without = old & st->keepOff;
-        const unsigned select = 0u - on;
-        *st->target = static_cast<std::uint8_t>((withPower & select) | (without & ~select));
-        sm[kDitto] = static_cast<std::uint8_t>(on);
-    }
+bitStatements:
+    runBitStatements<true>(*static_cast<const BitStatementRow*>(op->arg), sm[kDitto], pendingJump);
     RS_NEXT();
-}
+bitStatementsWithoutEdges:
+    runBitStatements<false>(*static_cast<const BitStatementRow*>(op->arg), sm[kDitto], pendingJump);
+    RS_NEXT();
 end:
     return;
 #undef RS_NEGATED

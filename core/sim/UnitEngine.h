@@ -116,22 +116,27 @@ private:
         std::uint8_t rising;
         std::uint8_t negated;
     };
-    // A statement of at most two byte contacts and one byte edge in series and
-    // one output on a byte (=, S, R, T): runFast runs a row of them as a loop
-    // without a branch that depends on the program or the data. Unused
-    // contacts read a 1, an unused edge is a negated one that never fires.
+    // A statement of at most two contacts and one edge in series, on bytes or
+    // register bits, and one output (=, S, R, T on a byte or register bit, or
+    // a jump): runFast runs a row of them as a loop without a branch that
+    // depends on the program or the data. A bit is (*read & mask) != 0;
+    // unused contacts read a 1, an unused edge is a negated one that never
+    // fires.
     struct BitStatement {
-        const std::uint8_t* contact[2];
-        const std::uint8_t* edgeOperand;
+        const std::uint8_t* read[3]; // two contacts, the edge's operand
         EdgeState* edge;
         std::uint8_t* target;
-        std::uint8_t contactNegated[2];
-        std::uint8_t edgeOperandNegated;
+        std::uint8_t mask[3];
+        std::uint8_t negated[3]; // the contacts; the edge's operand (P(/x))
         std::uint8_t edgeRising;
         std::uint8_t edgeNegated;
-        std::uint8_t keepOn; // with power: target = (target != 0 & keepOn) ^ flipOn
+        std::uint8_t targetMask; // the bits of *target that are the output
+        std::uint8_t targetOne;  // the output's 1 (1 for a byte, the bit for a register bit)
+        std::uint8_t keepOn;     // with power: output = (output & keepOn) ^ flipOn
         std::uint8_t flipOn;
-        std::uint8_t keepOff; // without: target &= keepOff
+        std::uint8_t keepOff; // without: *target &= keepOff
+        std::uint8_t jump;    // 1: a jump to jumpStep with power, no output
+        std::uint8_t jumpStep;
     };
     struct BitStatementRow {
         const BitStatement* first;
@@ -157,6 +162,8 @@ private:
     void decode();
     void translate();
     bool toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out);
+    template <bool withEdges>
+    static void runBitStatements(const BitStatementRow& row, std::uint8_t& ditto, int& jump);
     void runSteps(bool marking, int cycleMs);
     // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
     // the handlers' addresses for translate() and runs nothing.
