@@ -126,6 +126,7 @@ enum FastHandler : std::uint8_t {
     FArithRegister, // on a register, not a division
     FBitStatements, // a row of BitStatements
     FBitStatementsWithoutEdges,
+    FWordStatements, // a row of WordStatements
     FEnd,
     FastHandlerCount
 };
@@ -749,6 +750,10 @@ void UnitEngine::translate() {
     m_bitStatements.reserve(rungs);
     m_bitStatementRows.clear();
     m_bitStatementRows.reserve(rungs);
+    m_wordStatements.clear();
+    m_wordStatements.reserve(rungs);
+    m_wordStatementRows.clear();
+    m_wordStatementRows.reserve(rungs);
     std::vector<FastHandler> kinds; // of m_fast's entries
     for (StepRun& step : m_steps) {
         step.fastFirst = static_cast<std::uint32_t>(m_fast.size());
@@ -779,6 +784,20 @@ void UnitEngine::translate() {
                             {&m_bitStatements.back(), &m_bitStatements.back() + 1});
                         m_fast.push_back({table[FBitStatements], &m_bitStatementRows.back()});
                         kinds.push_back(FBitStatements);
+                    }
+                    i = end - 1;
+                    continue;
+                }
+                WordStatement word{};
+                if (toWordStatement(i, end, word)) {
+                    m_wordStatements.push_back(word);
+                    if (last() == FWordStatements) {
+                        m_wordStatementRows.back().end = &m_wordStatements.back() + 1;
+                    } else {
+                        m_wordStatementRows.push_back(
+                            {&m_wordStatements.back(), &m_wordStatements.back() + 1});
+                        m_fast.push_back({table[FWordStatements], &m_wordStatementRows.back()});
+                        kinds.push_back(FWordStatements);
                     }
                     i = end - 1;
                     continue;
@@ -910,7 +929,7 @@ void UnitEngine::translate() {
     for (std::size_t i = 0; i < m_fast.size(); ++i) {
         if (kinds[i] != FBitStatements)
             continue;
-        const auto& row = *static_cast<const BitStatementRow*>(m_fast[i].arg);
+        const auto& row = *static_cast<const Row<BitStatement>*>(m_fast[i].arg);
         if (std::all_of(row.first, row.end,
                         [this](const BitStatement& st) { return st.edge == &m_noEdge; }))
             m_fast[i].handler = table[FBitStatementsWithoutEdges];
@@ -1002,8 +1021,143 @@ bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitState
     }
 }
 
+bool UnitEngine::toWordStatement(std::uint32_t first, std::uint32_t end, WordStatement& out) {
+    static const std::uint8_t one = 1;
+    static const std::uint8_t zero = 0;
+    static const std::int32_t nothing = 0;
+    if (end - first < 2 || std::endian::native != std::endian::little)
+        return false;
+    const Decoded& output = m_code[end - 1];
+    const auto op = static_cast<ArithOp>(output.aux);
+    if (output.op != Op::Arith || output.dropWrite || op == ArithOp::Div || op == ArithOp::DivAB ||
+        output.refKind != static_cast<std::uint8_t>(WordRef::Kind::Register))
+        return false;
+    out.target = static_cast<std::int16_t*>(output.ref);
+    out.read[0] = &one;
+    out.mask[0] = 0xFF;
+    out.read[1] = &zero;
+    out.mask[1] = 0xFF;
+    out.edge = &m_noEdge;
+    out.edgeNegated = 1;
+    out.load[0] = out.load[1] = reinterpret_cast<const std::uint8_t*>(&nothing);
+    bool contact = false;
+    bool edge = false;
+    int loads = 0; // a, then b
+    for (std::uint32_t i = first + 1; i + 1 < end; ++i) {
+        const Decoded& d = m_code[i];
+        const bool byte = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+        const bool series = loads == 0;
+        if (d.op == Op::Contact && !contact && byte && series) {
+            contact = true;
+            out.read[0] = static_cast<const std::uint8_t*>(d.ref);
+            out.negated[0] = d.flags & compiler::Negated;
+        } else if (d.op == Op::Edge && !edge && byte && series) {
+            edge = true;
+            out.read[1] = static_cast<const std::uint8_t*>(d.ref);
+            out.edge = &m_edges[d.slot];
+            out.negated[1] = (d.flags & compiler::OperandNegated) != 0;
+            out.edgeRising = (d.flags & compiler::Rising) != 0;
+            out.edgeNegated = d.flags & compiler::Negated;
+        } else if ((d.op == Op::LoadA && loads == 0) || (d.op == Op::LoadB && loads < 2)) {
+            const int which = d.op == Op::LoadA ? 0 : 1;
+            loads = which + 1;
+            out.loads[which] = 1;
+            if (d.flags & compiler::ConstantOperand) {
+                out.load[which] = reinterpret_cast<const std::uint8_t*>(&d.constant);
+            } else if (d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register)) {
+                out.load[which] = static_cast<const std::uint8_t*>(d.ref);
+                out.narrow[which] = 16;
+            } else if (d.refKind != static_cast<std::uint8_t>(WordRef::Kind::None)) {
+                out.load[which] = static_cast<const std::uint8_t*>(d.ref);
+            } else {
+                return false;
+            }
+        } else {
+            return false;
+        }
+    }
+    switch (op) {
+    case ArithOp::Increment:
+        out.fromCurrent = 1;
+        out.yConstant = 1;
+        break;
+    case ArithOp::Decrement:
+        out.fromCurrent = 1;
+        out.yConstant = -1;
+        break;
+    case ArithOp::Add:
+        out.fromCurrent = 1;
+        out.yA = 1;
+        break;
+    case ArithOp::Sub:
+        out.fromCurrent = 1;
+        out.yA = -1;
+        break;
+    case ArithOp::Mul:
+        out.fromCurrent = 1;
+        out.yA = 1;
+        out.multiply = 1;
+        break;
+    case ArithOp::Copy:
+        out.fromA = 1;
+        break;
+    case ArithOp::AddAB:
+        out.fromA = 1;
+        out.yB = 1;
+        break;
+    case ArithOp::SubAB:
+        out.fromA = 1;
+        out.yB = -1;
+        break;
+    case ArithOp::MulAB:
+        out.fromA = 1;
+        out.yB = 1;
+        out.multiply = 1;
+        break;
+    case ArithOp::Div:
+    case ArithOp::DivAB:
+        return false;
+    }
+    return true;
+}
+
+void UnitEngine::runWordStatements(const Row<WordStatement>& row, std::int64_t& a,
+                                   std::int64_t& b) {
+    auto& sm = m_memory.systemMemories;
+    for (const WordStatement* st = row.first; st != row.end; ++st) {
+        const unsigned value =
+            static_cast<unsigned>((*st->read[1] & st->mask[1]) != 0) ^ st->negated[1];
+        const unsigned last = st->edge->last;
+        const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
+        st->edge->seen = true;
+        st->edge->last = value != 0;
+        const unsigned on =
+            ((static_cast<unsigned>((*st->read[0] & st->mask[0]) != 0) ^ st->negated[0]) &
+             (seen ^ st->edgeNegated));
+        const auto load = [st](int i) {
+            std::uint32_t raw = 0;
+            std::memcpy(&raw, st->load[i], sizeof raw);
+            return static_cast<std::int64_t>(static_cast<std::int32_t>(raw << st->narrow[i]) >>
+                                             st->narrow[i]);
+        };
+        const std::int64_t loadedA = load(0);
+        const std::int64_t loadedB = load(1);
+        a = st->loads[0] ? loadedA : a;
+        b = st->loads[1] ? loadedB : b;
+        const std::int64_t current = *st->target;
+        const std::int64_t x = current * st->fromCurrent + a * st->fromA;
+        const std::int64_t y = st->yConstant + a * st->yA + b * st->yB;
+        const std::int64_t result = st->multiply ? x * y : x + y;
+        const bool overflow = result < -32768 || result > 32767;
+        const auto saturated =
+            static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
+        *st->target = on ? saturated : static_cast<std::int16_t>(current);
+        sm[kOverflow] = on ? overflow : sm[kOverflow];
+    }
+}
+
 template <bool withEdges>
-inline void UnitEngine::runBitStatements(const BitStatementRow& row, std::uint8_t& ditto,
+inline void UnitEngine::runBitStatements(const Row<BitStatement>& row, std::uint8_t& ditto,
                                          int& pendingJump) {
     int jump = pendingJump;
     for (const BitStatement* st = row.first; st != row.end; ++st) {
@@ -1083,6 +1237,7 @@ void UnitEngine::runFast(const FastOp* op, int& pendingJump, int cycleMs,
                                            &&arithRegister,
                                            &&bitStatements,
                                            &&bitStatementsWithoutEdges,
+                                           &&wordStatements,
                                            &&end};
     static_assert(std::size(handlers) == FastHandlerCount);
     if (handlerTable) {
@@ -1293,10 +1448,15 @@ arithRegister:
     }
     RS_NEXT();
 bitStatements:
-    runBitStatements<true>(*static_cast<const BitStatementRow*>(op->arg), sm[kDitto], pendingJump);
+    runBitStatements<true>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
+                           pendingJump);
+    RS_NEXT();
+wordStatements:
+    runWordStatements(*static_cast<const Row<WordStatement>*>(op->arg), a, b);
     RS_NEXT();
 bitStatementsWithoutEdges:
-    runBitStatements<false>(*static_cast<const BitStatementRow*>(op->arg), sm[kDitto], pendingJump);
+    runBitStatements<false>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
+                            pendingJump);
     RS_NEXT();
 end:
     return;

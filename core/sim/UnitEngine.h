@@ -138,9 +138,34 @@ private:
         std::uint8_t jump;    // 1: a jump to jumpStep with power, no output
         std::uint8_t jumpStep;
     };
-    struct BitStatementRow {
-        const BitStatement* first;
-        const BitStatement* end;
+    // A statement of at most one contact and one edge in series, a load of a
+    // and of b, and arithmetic on a register other than a division: like a
+    // BitStatement, runFast runs a row of them without branches. The result is
+    // x + y or x * y with x = current * fromCurrent + a * fromA and
+    // y = yConstant + yA * a + yB * b. A load reads 4 bytes (a 32-bit value, a
+    // double register or a constant) and keeps the low 32 - narrow bits.
+    struct WordStatement {
+        const std::uint8_t* read[2]; // the contact, the edge's operand
+        EdgeState* edge;
+        const std::uint8_t* load[2];
+        std::int16_t* target;
+        std::uint8_t mask[2];
+        std::uint8_t negated[2];
+        std::uint8_t edgeRising;
+        std::uint8_t edgeNegated;
+        std::uint8_t loads[2]; // whether it loads a, b
+        std::uint8_t narrow[2];
+        std::int8_t fromCurrent;
+        std::int8_t fromA;
+        std::int8_t yConstant;
+        std::int8_t yA;
+        std::int8_t yB;
+        std::uint8_t multiply;
+    };
+    // Consecutive statements of one kind, run by one handler.
+    template <typename Statement> struct Row {
+        const Statement* first;
+        const Statement* end;
     };
     // Everything the steps of a scan read and write besides the code: what a
     // replay of the scan starts from.
@@ -162,8 +187,10 @@ private:
     void decode();
     void translate();
     bool toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out);
+    bool toWordStatement(std::uint32_t first, std::uint32_t end, WordStatement& out);
+    void runWordStatements(const Row<WordStatement>& row, std::int64_t& a, std::int64_t& b);
     template <bool withEdges>
-    static void runBitStatements(const BitStatementRow& row, std::uint8_t& ditto, int& jump);
+    static void runBitStatements(const Row<BitStatement>& row, std::uint8_t& ditto, int& jump);
     void runSteps(bool marking, int cycleMs);
     // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
     // the handlers' addresses for translate() and runs nothing.
@@ -196,7 +223,9 @@ private:
     std::vector<FastOp> m_fast;
     std::vector<ByteEdge> m_byteEdges;
     std::vector<BitStatement> m_bitStatements;
-    std::vector<BitStatementRow> m_bitStatementRows;
+    std::vector<Row<BitStatement>> m_bitStatementRows;
+    std::vector<WordStatement> m_wordStatements;
+    std::vector<Row<WordStatement>> m_wordStatementRows;
     EdgeState m_noEdge; // what an unused edge of a BitStatement works on
     std::vector<StepRun> m_steps;
     std::array<Sequence, 10> m_sequences;
