@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -140,7 +141,30 @@ private:
 
 } // namespace
 
+// Only scans, for counting instructions with callgrind (docs/performance.md).
+void scanOnly(bool native, int scans) {
+    rs::sim::Simulation simulation(images(), kCycleMs);
+    auto plant = std::make_unique<rs::native::Plant>();
+    for (int scan = 0; scan < scans; ++scan) {
+        for (int station : simulation.stations()) {
+            if (native)
+                driveInputs(plant->memory[station], static_cast<std::uint64_t>(scan));
+            else
+                driveInputs(simulation.unit(station)->memory(), static_cast<std::uint64_t>(scan));
+        }
+        if (native)
+            rs::native::scanPlant(*plant, static_cast<std::int64_t>(scan) * kCycleMs, kCycleMs);
+        else
+            simulation.scan();
+    }
+}
+
 int main(int argc, char** argv) {
+    if (argc == 3 &&
+        (std::strcmp(argv[1], "--scans") == 0 || std::strcmp(argv[1], "--native-scans") == 0)) {
+        scanOnly(std::strcmp(argv[1], "--native-scans") == 0, std::atoi(argv[2]));
+        return 0;
+    }
     const bool verifyOnly = argc > 1 && std::strcmp(argv[1], "--verify") == 0;
     if (!sameResults(verifyOnly ? 2000 : 300))
         return 1;

@@ -17,8 +17,8 @@ namespace rs::sim {
 enum class Conduction : std::uint8_t { NotRun = 0, Off = 1, On = 2 };
 
 // Runs one unit's compiled image, scan by scan, on virtual time. It reads
-// other units' global variables from the bus image it is given, never from
-// their live memory.
+// other units' global variables from the bus image it is given, as they were
+// at the start of the scan, never from their live memory.
 class UnitEngine {
 public:
     using Bus = std::array<UnitMemory, 32>;
@@ -40,7 +40,8 @@ public:
     bool hasSequence(int sequence) const;
     // What each instruction did in the last scan. A scan runs without marking
     // conduction; the first call after it runs that scan again, marking, from
-    // the state the scan started with (see docs/simulator.md, "Speed").
+    // the state the scan started with (docs/simulator.md, "What a scan
+    // reports"), so, like scan(), it must not run alongside another call.
     const std::vector<Conduction>& conduction() const;
     // Marks conduction while scanning instead, for callers that read it after
     // every scan.
