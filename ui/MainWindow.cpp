@@ -20,12 +20,14 @@
 #include "UnitPage.h"
 #include "VariablesPage.h"
 #include "compiler/ImageCodec.h"
+#include "ladder/LadderPage.h"
 #include "project/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectProperties.h"
 #include "project/RemanentVariables.h"
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
+#include "sim/SimulationMode.h"
 
 #include <Qsci/qsciglobal.h>
 
@@ -95,8 +97,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_ioPage = new IoOptionsPage(m_pages);
     m_variablesPage = new VariablesPage(m_pages);
     m_textPage = new TextPage(m_pages);
-    for (QWidget* page : std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage,
-                                                         m_ioPage, m_variablesPage, m_textPage})
+    m_ladderPage = new LadderPage(m_pages);
+    for (QWidget* page :
+         std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage, m_ioPage,
+                                         m_variablesPage, m_textPage, m_ladderPage})
         m_pages->addWidget(page);
 
     createActions();
@@ -104,6 +108,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     createDocks();
     createMenus();
     createStatusBar();
+    m_simulation = new SimulationMode(this);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 
     auto* welcome = new QVBoxLayout(m_welcomePage);
     auto* heading = new QLabel(tr("<h2>No project is open</h2>"
@@ -134,6 +140,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
         showFirstPageOf(document);
         showMessage(tr("The project reads without errors now; its pages are back."));
     });
+    connect(m_ladderPage, &LadderPage::textRequested, this, [this] {
+        showPage({PageRef::Kind::Code, m_ladderPage->document(), m_ladderPage->station(),
+                  m_ladderPage->sequence()});
+    });
+    connect(m_ladderPage, &LadderPage::newSequenceRequested, this,
+            [this] { newSequence(m_ladderPage->document(), m_ladderPage->station()); });
     connect(m_unitPage, &UnitPage::remanentRequested, this, &MainWindow::editRemanent);
     connect(m_variablesPage, &VariablesPage::remanentRequested, this, &MainWindow::editRemanent);
     connect(m_variablesPage, &VariablesPage::csvImportRequested, this, &MainWindow::importCsv);
@@ -247,6 +259,15 @@ void MainWindow::createActions() {
     m_formatAction->setStatusTip(tr("Rewrite the text in the canonical layout"));
     connect(m_formatAction, &QAction::triggered, this, &MainWindow::formatDocument);
 
+    m_codeViewAction = action(tr("&Ladder or Text"), "codeViewAction", QKeySequence(Qt::Key_F6));
+    m_codeViewAction->setStatusTip(tr("Show the code as ladder networks or as text"));
+    connect(m_codeViewAction, &QAction::triggered, this, [this] {
+        PageRef other = m_current;
+        other.kind =
+            m_current.kind == PageRef::Kind::Code ? PageRef::Kind::Ladder : PageRef::Kind::Code;
+        showPage(other);
+    });
+
     m_preferencesAction =
         action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
     m_preferencesAction->setIcon(icon("preferences"));
@@ -331,6 +352,8 @@ void MainWindow::createMenus() {
     viewMenu->addAction(m_problemsDock->toggleViewAction());
     viewMenu->addAction(m_outputDock->toggleViewAction());
     viewMenu->addAction(m_fileToolBar->toggleViewAction());
+    viewMenu->addSeparator();
+    viewMenu->addAction(m_codeViewAction);
 
     QMenu* projectMenu = menuBar()->addMenu(tr("&Project"));
     projectMenu->setObjectName(QStringLiteral("projectMenu"));
@@ -723,6 +746,10 @@ bool MainWindow::showPage(const PageRef& page) {
         if (page.kind == PageRef::Kind::Code)
             m_textPage->showSequence(page.sequence);
         break;
+    case PageRef::Kind::Ladder:
+        m_ladderPage->showUnit(document, page.station, page.sequence);
+        m_pages->setCurrentWidget(m_ladderPage);
+        break;
     }
     const bool onText = m_pages->currentWidget() == m_textPage;
     if (!onText) {
@@ -736,6 +763,7 @@ bool MainWindow::showPage(const PageRef& page) {
     m_tree->select(m_current);
     updateTitle();
     updateActions();
+    emit pageChanged();
     return true;
 }
 
@@ -784,6 +812,8 @@ void MainWindow::updateActions() {
     m_exportCsvAction->setEnabled(inUnit);
     m_compileAction->setEnabled(hasDocument && !isCompiling());
     m_formatAction->setEnabled(onText);
+    m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
+                                 m_current.kind == PageRef::Kind::Ladder);
     if (onText && m_textPage->station() == TextPage::kWholeProject) {
         m_undoAction->setEnabled(true);
         m_redoAction->setEnabled(true);
@@ -878,7 +908,8 @@ void MainWindow::newSequence(ProjectDocument* document, int station) {
     const int sequence = chosen.toInt();
     document->edit(tr("New Sequence %1 of Pluto %2").arg(sequence).arg(station),
                    [&](project::Project& p) { project::addSequence(p, station, sequence); });
-    showPage({PageRef::Kind::Code, document, station, sequence});
+    showPage({m_current.kind == PageRef::Kind::Ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code,
+              document, station, sequence});
 }
 
 void MainWindow::removeUnit(ProjectDocument* document, int station) {
@@ -958,6 +989,7 @@ void MainWindow::editPreferences() {
     if (themeChanged)
         applyTheme(m_preferences.theme);
     m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 }
 
 void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition) {
@@ -994,6 +1026,7 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
     case PageRef::Kind::Unit:
     case PageRef::Kind::IoOptions:
     case PageRef::Kind::Code:
+    case PageRef::Kind::Ladder:
         add(tr("New &Sequence..."),
             [this, document, page] { newSequence(document, page.station); });
         menu.addSeparator();

@@ -31,11 +31,13 @@ namespace rs::ui {
 
 class CompileOutput;
 class IoOptionsPage;
+class LadderPage;
 class ProblemsView;
 class ProgramEditor;
 class ProjectDocument;
 class ProjectPage;
 class ProjectTree;
+class SimulationMode;
 class TextPage;
 class UnitPage;
 class VariablesPage;
@@ -101,12 +103,18 @@ public:
 
     ProgramEditor* editor() const;
     TextPage* textPage() const { return m_textPage; }
+    LadderPage* ladderPage() const { return m_ladderPage; }
     ProjectPage* projectPage() const { return m_projectPage; }
     UnitPage* unitPage() const { return m_unitPage; }
     IoOptionsPage* ioOptionsPage() const { return m_ioPage; }
     VariablesPage* variablesPage() const { return m_variablesPage; }
     ProjectTree* projectTree() const { return m_tree; }
     CompileOutput* compileOutput() const { return m_output; }
+    SimulationMode* simulation() const { return m_simulation; }
+
+signals:
+    // Another page is shown (or the same page of another unit or project).
+    void pageChanged();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -162,9 +170,11 @@ private:
     IoOptionsPage* m_ioPage = nullptr;
     VariablesPage* m_variablesPage = nullptr;
     TextPage* m_textPage = nullptr;
+    LadderPage* m_ladderPage = nullptr;
     ProjectTree* m_tree = nullptr;
     ProblemsView* m_problems = nullptr;
     CompileOutput* m_output = nullptr;
+    SimulationMode* m_simulation = nullptr;
     QDockWidget* m_treeDock = nullptr;
     QDockWidget* m_problemsDock = nullptr;
     QDockWidget* m_outputDock = nullptr;
@@ -194,6 +204,7 @@ private:
     QAction* m_pasteAction = nullptr;
     QAction* m_selectAllAction = nullptr;
     QAction* m_formatAction = nullptr;
+    QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
     QAction* m_newUnitAction = nullptr;
     QAction* m_newSequenceAction = nullptr;

@@ -8,12 +8,13 @@ class ProjectDocument;
 
 // Which page the window shows: a node of the project tree.
 struct PageRef {
-    enum class Kind { None, Project, ProjectText, Unit, IoOptions, Variables, Code };
+    // Code is the unit's code as text; Ladder the same code as ladder networks.
+    enum class Kind { None, Project, ProjectText, Unit, IoOptions, Variables, Code, Ladder };
 
     Kind kind = Kind::None;
     QPointer<ProjectDocument> document;
     int station = -1;
-    int sequence = 0; // Code: 0 is the unit's PLC code, 1-9 its sequences
+    int sequence = 0; // Code, Ladder: 0 is the unit's PLC code, 1-9 its sequences
 
     bool operator==(const PageRef& other) const;
 };

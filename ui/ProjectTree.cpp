@@ -19,10 +19,12 @@ constexpr int kDocumentRole = Qt::UserRole + 1;
 constexpr int kStationRole = Qt::UserRole + 2;
 constexpr int kSequenceRole = Qt::UserRole + 3;
 
-// What identifies a node across rebuilds.
+// What identifies a node across rebuilds. The code's node stands for its
+// ladder and its text alike.
 QString keyOf(const PageRef& page) {
+    const PageRef::Kind kind = page.kind == PageRef::Kind::Code ? PageRef::Kind::Ladder : page.kind;
     return QStringLiteral("%1/%2/%3/%4")
-        .arg(static_cast<int>(page.kind))
+        .arg(static_cast<int>(kind))
         .arg(reinterpret_cast<quintptr>(page.document.data()))
         .arg(page.station)
         .arg(page.sequence);
@@ -37,6 +39,11 @@ ProjectTree::ProjectTree(QWidget* parent) : QTreeWidget(parent) {
     setContextMenuPolicy(Qt::CustomContextMenu);
     setExpandsOnDoubleClick(true);
     connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        if (item && !m_selecting)
+            emit pageRequested(pageOf(item));
+    });
+    // The code's node is current while its text is shown too: a click on it shows the ladder.
+    connect(this, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
         if (item && !m_selecting)
             emit pageRequested(pageOf(item));
     });
@@ -116,10 +123,10 @@ void ProjectTree::setDocuments(const std::vector<ProjectDocument*>& documents) {
             add(unitItem, tr("Variables"), QStringLiteral("variables"),
                 {PageRef::Kind::Variables, document, station});
             add(unitItem, tr("PLC Code"), QStringLiteral("code"),
-                {PageRef::Kind::Code, document, station, 0});
+                {PageRef::Kind::Ladder, document, station, 0});
             for (int sequence : project::sequencesOf(p, station))
                 add(unitItem, tr("Sequence %1").arg(sequence), QStringLiteral("sequence"),
-                    {PageRef::Kind::Code, document, station, sequence});
+                    {PageRef::Kind::Ladder, document, station, sequence});
         }
         updateProjectItem(document);
     }

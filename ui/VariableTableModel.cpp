@@ -2,6 +2,7 @@
 
 #include "ProjectDocument.h"
 #include "StatusColors.h"
+#include "sim/Simulation.h"
 
 #include <QApplication>
 #include <QFont>
@@ -101,6 +102,8 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
     const QPalette palette = QApplication::palette();
     switch (index.column()) {
     case StatusColumn:
+        if (m_simulation)
+            return liveStatus(*variable, role);
         if (role == Qt::DecorationRole && variable->used)
             return QIcon(QStringLiteral(":/icons/in-use.svg"));
         if (role == Qt::ToolTipRole && variable->used)
@@ -156,6 +159,49 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
         if (role == Qt::ForegroundRole && variable->description.empty())
             return palette.color(QPalette::PlaceholderText);
         return {};
+    default:
+        return {};
+    }
+}
+
+void VariableTableModel::setSimulation(const sim::Simulation* simulation) {
+    if (simulation == m_simulation)
+        return;
+    m_simulation = simulation;
+    refreshStatus();
+}
+
+void VariableTableModel::refreshStatus() {
+    if (!m_rows.empty())
+        emit dataChanged(index(0, StatusColumn), index(rowCount() - 1, StatusColumn));
+}
+
+QVariant VariableTableModel::liveStatus(const project::Variable& variable, int role) const {
+    const std::int64_t value = m_simulation->value(variable.address);
+    const sim::UnitEngine* unit = m_simulation->unit(variable.address.unit);
+    const bool isForced = unit && unit->forces().count(variable.address) != 0;
+    switch (role) {
+    case Qt::DisplayRole:
+        return isForced ? tr("%1 F", "a forced value").arg(value) : QString::number(value);
+    case Qt::TextAlignmentRole:
+        return QVariant(Qt::AlignCenter);
+    case Qt::ForegroundRole:
+        return isForced ? QVariant(errorTextColor(QApplication::palette())) : QVariant();
+    case Qt::FontRole:
+        if (isForced) {
+            QFont bold;
+            bold.setBold(true);
+            return bold;
+        }
+        return {};
+    case Qt::BackgroundRole:
+        // A bit that is on, in the green of a powered ladder line, faint enough for the text.
+        return variable.address.isBit() && value != 0 ? QVariant(QColor(0, 176, 0, 70))
+                                                      : QVariant();
+    case Qt::ToolTipRole:
+        return isForced
+                   ? tr("Forced to %1 in the simulation; release it in the Forces list.").arg(value)
+                   : tr("The value after the last scan of the simulation");
     default:
         return {};
     }

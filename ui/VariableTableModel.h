@@ -11,6 +11,10 @@
 
 #include <vector>
 
+namespace rs::sim {
+class Simulation;
+}
+
 namespace rs::ui {
 
 class ProjectDocument;
@@ -42,17 +46,25 @@ public:
 
     static QString groupName(project::VariableGroup group);
 
+    // While a simulation runs, the Status column shows every variable's value
+    // and marks the forced ones; without one, it marks the variables in use.
+    void setSimulation(const sim::Simulation* simulation);
+    // The simulation scanned: the Status column shows the new values.
+    void refreshStatus();
+
 signals:
     // An edit was refused; the message says why.
     void refused(const QString& message);
 
 private:
     void reload();
+    QVariant liveStatus(const project::Variable& variable, int role) const;
 
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
     project::VariableGroup m_group = project::VariableGroup::SafetyInputs;
     std::vector<project::Variable> m_rows;
+    const sim::Simulation* m_simulation = nullptr;
 };
 
 } // namespace rs::ui

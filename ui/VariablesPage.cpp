@@ -166,6 +166,17 @@ void VariablesPage::showGroup(int tab) {
     m_model->show(m_document, m_station, m_groups[static_cast<std::size_t>(tab)]);
 }
 
+void VariablesPage::setSimulation(const sim::Simulation* simulation) {
+    m_model->setSimulation(simulation);
+    // Room for a value and its force mark while simulating; the icon needs less.
+    m_table->horizontalHeader()->resizeSection(VariableTableModel::StatusColumn,
+                                               simulation ? 80 : 56);
+}
+
+void VariablesPage::refreshStatus() {
+    m_model->refreshStatus();
+}
+
 bool VariablesPage::showVariable(const lang::Address& address) {
     if (!m_document)
         return false;

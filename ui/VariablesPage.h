@@ -18,6 +18,10 @@ class QSortFilterProxyModel;
 class QTabBar;
 class QTableView;
 
+namespace rs::sim {
+class Simulation;
+}
+
 namespace rs::ui {
 
 class PageTitle;
@@ -41,6 +45,10 @@ public:
     QTableView* table() const { return m_table; }
     VariableTableModel* model() const { return m_model; }
     QString message() const;
+
+    // The Status column's live values (VariableTableModel::setSimulation).
+    void setSimulation(const sim::Simulation* simulation);
+    void refreshStatus();
 
     // Marks or unmarks the variable as exported; the reason when refused.
     QString setExported(const lang::Address& address, bool exported);

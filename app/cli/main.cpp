@@ -1,5 +1,6 @@
 #include "Invocation.h"
 #include "LadderVerbs.h"
+#include "RungsmithBuildVersion.h"
 #include "TestVerb.h"
 #include "VarsVerbs.h"
 #include "Verbs.h"
@@ -78,7 +79,7 @@ const rs::cli::Verb kVerbs[] = {
 int main(int argc, char* argv[]) {
     const auto app = rs::cli::makeApplication(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("rungsmith-cli"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
+    QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_BUILD_VERSION));
 
     QString description =
         QStringLiteral("Rungsmith command line for Pluto safety PLC projects.\n\nVerbs:\n");
@@ -117,7 +118,7 @@ int main(int argc, char* argv[]) {
         return rs::cli::Ok;
     }
     if (parser.isSet(version)) {
-        std::printf("rungsmith-cli %s\n", RUNGSMITH_VERSION);
+        std::printf("rungsmith-cli %s\n", RUNGSMITH_BUILD_VERSION);
         return rs::cli::Ok;
     }
     QStringList arguments = parser.positionalArguments();

@@ -1,8 +1,10 @@
 #include "MainWindow.h"
 #include "PageRef.h"
 #include "Preferences.h"
+#include "RungsmithBuildVersion.h"
 #include "Theme.h"
 #include "Translations.h"
+#include "sim/SimulationMode.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -35,18 +37,20 @@ struct Page {
     int station;
 };
 
-// "text:N", "io:N", "variables:N" and "unit:N": a page of the unit with
-// station number N; "project": the project's own page.
+// "ladder:N", "text:N", "io:N", "variables:N" and "unit:N": a page of the unit
+// with station number N; "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
-    static const QRegularExpression form(QStringLiteral("^(text|io|variables|unit):(\\d{1,2})$"));
+    static const QRegularExpression form(
+        QStringLiteral("^(ladder|text|io|variables|unit):(\\d{1,2})$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
     const QString kind = match.captured(1);
     using Kind = rs::ui::PageRef::Kind;
-    return Page{kind == QLatin1String("text")   ? Kind::Code
+    return Page{kind == QLatin1String("ladder") ? Kind::Ladder
+                : kind == QLatin1String("text") ? Kind::Code
                 : kind == QLatin1String("io")   ? Kind::IoOptions
                 : kind == QLatin1String("unit") ? Kind::Unit
                                                 : Kind::Variables,
@@ -78,7 +82,9 @@ int main(int argc, char* argv[]) {
     QApplication application(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Rungsmith"));
     QApplication::setApplicationName(QStringLiteral("Rungsmith"));
-    QApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_VERSION));
+    QApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_BUILD_VERSION));
+    // Wayland finds the window's icon and name through the desktop entry.
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.rungsmith.Rungsmith"));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/rungsmith.svg")));
     const rs::ui::Preferences preferences = rs::ui::Preferences::load();
     rs::ui::installTranslations(
@@ -98,21 +104,28 @@ int main(int argc, char* argv[]) {
         QStringLiteral("OUT.png"));
     const QCommandLineOption pageOption(
         QStringLiteral("page"),
-        CommandLine::tr("The page to show: text:N (the code of unit N), io:N (its I/O options), "
-                        "variables:N, unit:N, or project."),
+        CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
+                        "text), io:N (its I/O options), variables:N, unit:N, or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
         CommandLine::tr("Draw with the light or dark palette, or the system's, this time."),
         QStringLiteral("light|dark|system"));
-    parser.addOptions({screenshotOption, pageOption, themeOption});
+    const QCommandLineOption simulateOption(
+        QStringLiteral("simulate"),
+        CommandLine::tr("Run the scenario in the simulator first, so the window shows the live "
+                        "state it ends in."),
+        QStringLiteral("SCENARIO.scn"));
+    parser.addOptions({screenshotOption, pageOption, themeOption, simulateOption});
 
     if (!parser.parse(QCoreApplication::arguments()))
         return usageError(parser.errorText());
     if (parser.isSet(helpOption))
         parser.showHelp(0);
-    if (parser.isSet(versionOption))
-        parser.showVersion();
+    if (parser.isSet(versionOption)) {
+        QTextStream(stdout) << "rungsmith " << QCoreApplication::applicationVersion() << '\n';
+        return 0;
+    }
 
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1)
@@ -121,8 +134,9 @@ int main(int argc, char* argv[]) {
     if (parser.isSet(pageOption)) {
         page = pageOf(parser.value(pageOption));
         if (!page)
-            return usageError(CommandLine::tr("unknown page '%1'; the pages are text:N, io:N, "
-                                              "variables:N and unit:N for unit N, and project")
+            return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
+                                              "io:N, variables:N and unit:N for unit N, and "
+                                              "project")
                                   .arg(parser.value(pageOption)));
     }
     std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;
@@ -148,6 +162,11 @@ int main(int argc, char* argv[]) {
         settle();
         if (page && !window.showPage(page->kind, page->station))
             return usageError(noSuchUnit);
+        if (parser.isSet(simulateOption)) {
+            const auto result = window.simulation()->runScenario(parser.value(simulateOption));
+            if (!result.error.isEmpty())
+                return usageError(result.error);
+        }
         settle();
         const QString out = parser.value(screenshotOption);
         QImageWriter writer(out, "png");
@@ -166,5 +185,10 @@ int main(int argc, char* argv[]) {
         window.showExample();
     if (page && !window.showPage(page->kind, page->station))
         complain(noSuchUnit);
+    if (parser.isSet(simulateOption)) {
+        const auto result = window.simulation()->runScenario(parser.value(simulateOption));
+        if (!result.error.isEmpty())
+            complain(result.error);
+    }
     return QApplication::exec();
 }

@@ -1,6 +1,7 @@
 #include "Compiler.h"
 
 #include "CodeGenerator.h"
+#include "ExportCheck.h"
 #include "ImageCodec.h"
 #include "project/ProjectFile.h"
 
@@ -22,6 +23,7 @@ void sortByPlace(lang::Diagnostics& diagnostics) {
 CompileResult compile(const project::Project& project, const CheckOptions& options) {
     CompileResult result;
     UnitSetups units = collectUnits(project.program, result.diagnostics);
+    collectExports(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
     result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
     sortByPlace(result.diagnostics);

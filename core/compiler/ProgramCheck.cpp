@@ -39,6 +39,11 @@ Address storage(Address a) {
     return a;
 }
 
+// A register bit or a half of a double register is readable when its register is exported.
+bool isExported(const UnitSetup& unit, const Address& a) {
+    return unit.exported.contains(storage(a));
+}
+
 bool isDoubleWord(const Address& a) {
     return a.kind == AddressKind::DoubleRegister;
 }
@@ -428,9 +433,9 @@ private:
                               "; a unit writes only its own variables");
                 return false;
             }
-            if (!target::isGlobal(*unit.type, a)) {
+            if (!target::isGlobal(*unit.type, a) && !isExported(unit, a)) {
                 error(at, name + " is local to unit " + std::to_string(a.unit) +
-                              "; other units cannot read it");
+                              " and not exported; other units cannot read it");
                 return false;
             }
         }

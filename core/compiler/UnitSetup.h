@@ -5,6 +5,7 @@
 #include "target/UnitType.h"
 
 #include <map>
+#include <set>
 #include <vector>
 
 namespace rs::compiler {
@@ -29,6 +30,9 @@ struct UnitSetup {
     std::map<int, TerminalDeclaration> terminals;
     std::map<int, TerminalDeclaration> safetyOutputs;
     std::map<int, TerminalDeclaration> analogTerminals;
+    // Local variables the project exports to the other units on the bus
+    // (manual Part 1, 10.2.1); they read them as if they were global.
+    std::set<lang::Address> exported;
 };
 
 using UnitSetups = std::map<int, UnitSetup>; // by station

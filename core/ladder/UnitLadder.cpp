@@ -1,5 +1,6 @@
 #include "UnitLadder.h"
 
+#include "LadderToText.h"
 #include "TextToLadder.h"
 
 namespace rs::ladder {
@@ -16,6 +17,17 @@ std::vector<StepPage> unitLadder(const lang::UnitProgram& unit) {
         pages.push_back(std::move(page));
     }
     return pages;
+}
+
+bool setStepLadder(lang::UnitProgram& unit, const lang::StepAddress& address,
+                   const StepLadder& ladder) {
+    for (auto& step : unit.steps) {
+        if (step.address == address) {
+            step.lines = toLines(ladder);
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace rs::ladder

@@ -19,4 +19,9 @@ struct StepPage {
 // Every step of the unit's code in file order.
 std::vector<StepPage> unitLadder(const lang::UnitProgram& unit);
 
+// Writes a step's ladder back as the step's lines. False when the unit has no
+// step at that address.
+bool setStepLadder(lang::UnitProgram& unit, const lang::StepAddress& address,
+                   const StepLadder& ladder);
+
 } // namespace rs::ladder

@@ -20,7 +20,7 @@ int pairsFor(int booleans, int registers, int doubleRegisters) {
     return doubleRegisters + (bits + kBitsPerTelegramPair - 1) / kBitsPerTelegramPair;
 }
 
-int pairsWith(const Project& project, int station, const lang::Address* added) {
+int pairsWith(const std::set<lang::Address>& exported, int station, const lang::Address* added) {
     int booleans = 0;
     int registers = 0;
     int doubleRegisters = 0;
@@ -34,7 +34,7 @@ int pairsWith(const Project& project, int station, const lang::Address* added) {
         else
             ++booleans;
     };
-    for (const auto& address : project.exportedVariables)
+    for (const auto& address : exported)
         count(address);
     if (added)
         count(*added);
@@ -67,7 +67,11 @@ std::optional<std::string> checkExportable(const Project& project, const lang::A
 }
 
 int telegramPairs(const Project& project, int station) {
-    return pairsWith(project, station, nullptr);
+    return pairsWith(project.exportedVariables, station, nullptr);
+}
+
+int telegramPairs(const std::set<lang::Address>& exported, int station) {
+    return pairsWith(exported, station, nullptr);
 }
 
 int telegramPairs(const Project& project) {
@@ -90,7 +94,7 @@ std::optional<std::string> setExported(Project& project, const lang::Address& ad
         return std::nullopt;
     if (auto problem = checkExportable(project, address))
         return problem;
-    const int unitPairs = pairsWith(project, address.unit, &address);
+    const int unitPairs = pairsWith(project.exportedVariables, address.unit, &address);
     if (unitPairs > kTelegramPairsPerUnit)
         return "exporting " + lang::toString(address) + " would need " + std::to_string(unitPairs) +
                " extra telegram pairs; a unit may add " + std::to_string(kTelegramPairsPerUnit);

@@ -3,6 +3,7 @@
 #include "Project.h"
 
 #include <optional>
+#include <set>
 #include <string>
 
 // Export variables (manual Part 1, 10.2.1): local variables of a unit with
@@ -21,6 +22,8 @@ std::optional<std::string> checkExportable(const Project& project, const lang::A
 // Extra telegram pairs the unit's exported variables need, and the project's.
 int telegramPairs(const Project& project, int station);
 int telegramPairs(const Project& project);
+// The same for a set of exported variables of any units.
+int telegramPairs(const std::set<lang::Address>& exported, int station);
 
 // Marks or unmarks a variable as exported; refuses (changing nothing) when it
 // cannot be exported or the telegram limits would be exceeded.

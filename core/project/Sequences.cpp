@@ -54,4 +54,22 @@ std::optional<std::string> addSequence(Project& project, int station, int sequen
     return std::nullopt;
 }
 
+AddedStep addStep(Project& project, int station, int sequence) {
+    if (sequence < 0 || sequence > kLastSequence)
+        return {-1, "a sequence is numbered 0-9"};
+    auto& steps = programOf(project, station).steps;
+    auto last = std::find_if(steps.rbegin(), steps.rend(), [&](const lang::Step& step) {
+        return step.address.sequence == sequence;
+    });
+    if (last == steps.rend()) {
+        if (auto refusal = addSequence(project, station, sequence))
+            return {-1, *refusal};
+        return {0, {}};
+    }
+    const int number = last->address.step + 1;
+    steps.insert(last.base(), lang::Step{{station, sequence, number}, std::nullopt, {}, {}});
+    tidyBlankLines(project.program);
+    return {number, {}};
+}
+
 } // namespace rs::project

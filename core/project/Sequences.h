@@ -23,4 +23,12 @@ std::vector<int> freeSequences(const Project& project, int station);
 // before it. Refuses a number outside 1-9 or one the unit already has.
 std::optional<std::string> addSequence(Project& project, int station, int sequence);
 
+// Adds the next step of a sequence after its last one (Su.s_0 when the
+// sequence has none); returns the step's number, or the refusal.
+struct AddedStep {
+    int step = -1;
+    std::string refusal;
+};
+AddedStep addStep(Project& project, int station, int sequence);
+
 } // namespace rs::project

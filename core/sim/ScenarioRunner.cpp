@@ -25,7 +25,7 @@ std::vector<lang::Address> touchedBy(const Scenario& scenario) {
 }
 
 ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario,
-                           Simulation& simulation, VcdTrace* trace) {
+                           Simulation& simulation, VcdTrace* trace, const ScanObserver& observer) {
     ScenarioReport report;
     if (!scenario.diagnostics.empty()) {
         for (const auto& diagnostic : scenario.diagnostics)
@@ -34,12 +34,16 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
         return report;
     }
     simulation.restart();
-    if (trace)
-        trace->sample(simulation);
-    auto scan = [&] {
-        simulation.scan();
+    auto sample = [&] {
         if (trace)
             trace->sample(simulation);
+        if (observer)
+            observer(simulation);
+    };
+    sample();
+    auto scan = [&] {
+        simulation.scan();
+        sample();
     };
     for (const auto& step : scenario.steps) {
         switch (step.kind) {
@@ -74,6 +78,7 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
                 break;
             }
             ++report.failed;
+            report.failureLines.push_back(step.line);
             report.failures.push_back(fileName + ":" + std::to_string(step.line) + ": " +
                                       step.text +
                                       " failed: " + (step.durationMs ? "still " : "got ") +

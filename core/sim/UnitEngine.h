@@ -47,6 +47,9 @@ public:
     // every scan.
     void setEagerConduction(bool eager);
     bool eagerConduction() const { return m_eagerConduction; }
+    // The state of timer occurrence `slot` (Instruction::slot of a Timer), to show its elapsed
+    // time.
+    const Timer& timer(std::size_t slot) const { return m_timers[slot]; }
 
     // The units on the bus, for SM_Pluto0_Present .. SM_Pluto31_Present.
     void setPresent(const std::array<bool, 32>& present);

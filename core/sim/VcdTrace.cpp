@@ -51,9 +51,17 @@ VcdTrace::VcdTrace(std::vector<lang::Address> variables) : m_signals(std::move(v
 }
 
 void VcdTrace::sample(const Simulation& simulation) {
+    std::vector<std::int64_t> values;
+    values.reserve(m_signals.size());
+    for (const auto& signal : m_signals)
+        values.push_back(simulation.value(signal));
+    sample(simulation.timeMs(), values);
+}
+
+void VcdTrace::sample(std::int64_t timeMs, const std::vector<std::int64_t>& values) {
     std::string changes;
     for (std::size_t i = 0; i < m_signals.size(); ++i) {
-        const std::int64_t value = simulation.value(m_signals[i]);
+        const std::int64_t value = values[i];
         if (m_sampled && value == m_last[i])
             continue;
         m_last[i] = value;
@@ -63,10 +71,10 @@ void VcdTrace::sample(const Simulation& simulation) {
             changes += "b" + binary(value) + " " + m_ids[i] + "\n";
     }
     if (!m_sampled) {
-        m_changes += "#0\n$dumpvars\n" + changes + "$end\n";
+        m_changes += "#" + std::to_string(timeMs) + "\n$dumpvars\n" + changes + "$end\n";
         m_sampled = true;
     } else if (!changes.empty()) {
-        m_changes += "#" + std::to_string(simulation.timeMs()) + "\n" + changes;
+        m_changes += "#" + std::to_string(timeMs) + "\n" + changes;
     }
 }
 

@@ -17,6 +17,9 @@ public:
     explicit VcdTrace(std::vector<lang::Address> variables);
 
     void sample(const Simulation& simulation);
+    // A sample taken elsewhere (the IDE's waveform replays its recording):
+    // the value of every variable, in the order given to the constructor.
+    void sample(std::int64_t timeMs, const std::vector<std::int64_t>& values);
     std::string text(const std::string& title) const;
 
 private:

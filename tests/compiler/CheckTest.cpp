@@ -855,7 +855,7 @@ TEST(AccessCheck, ReadingAnotherUnitsVariables) {
     EXPECT_EQ(
         check(twoUnits({"S0.0_0", "M0.0 = I1.0 * Q1.2 * GM1.3 * I1.17 * IQ1.10 * Q1.0"}), kQuiet),
         Lines{});
-    const std::string local = "; other units cannot read it";
+    const std::string local = " and not exported; other units cannot read it";
     EXPECT_EQ(check(twoUnits({"S0.0_0", "M0.1 = M1.0", "M0.2 = Q1.10", "M0.3 = (R1.0 > 1)",
                               "M0.4 = SM1.9", "M0.5 = (SR1.10 > 0)"}),
                     kQuiet),
@@ -871,14 +871,55 @@ TEST(AccessCheck, ReadingAnotherUnitsVariables) {
               (Lines{"6:8: error: 'Remote' (M1.5) is local to unit 1" + local}));
 }
 
+TEST(AccessCheck, ReadingExportedVariablesOfAnotherUnit) {
+    // Unit 1 (instruction set 3) exports a memory, a register and a double
+    // register; unit 0 reads them, a register's bit and a half included.
+    const Lines program{"! id_pluto:00=000000000000",
+                        ";@var M1.3 export=\"yes\"",
+                        ";@var R1.7 export=\"yes\"",
+                        ";@var DR1.4 export=\"yes\"",
+                        "! id_pluto:01=000000000001",
+                        "! type_pluto:00=A20,is3",
+                        "! type_pluto:01=A20,is3",
+                        "! pgm_pluto:00",
+                        "S0.0_0",
+                        "M0.0 = M1.3 * R1.7.2",
+                        "M0.1 = (R1.7 > 5) * (DR1.4 > 70000) * (DR1.4.Lo > 1)",
+                        "M0.2 = M1.4",
+                        "! pgm_pluto:01",
+                        "S1.0_0",
+                        "M1.3 = I1.0"};
+    EXPECT_EQ(check(program, kQuiet),
+              (Lines{"12:8: error: M1.4 is local to unit 1 and not exported; other units cannot "
+                     "read it"}));
+}
+
+TEST(AccessCheck, ExportsTheOriginalToolWouldRefuse) {
+    // A file edited by hand: a unit with instruction set 2 cannot export, a
+    // global variable needs no export, and a unit adds at most 4 telegram pairs
+    // (here 5 double registers, one pair each).
+    EXPECT_EQ(check({"! id_pluto:00=000000000000", ";@var M0.3 export=\"yes\"",
+                     "! id_pluto:01=000000000001", ";@var Q1.2 export=\"yes\"",
+                     ";@var DR1.0 export=\"yes\"", ";@var DR1.2 export=\"yes\"",
+                     ";@var DR1.4 export=\"yes\"", ";@var DR1.6 export=\"yes\"",
+                     ";@var DR1.8 export=\"yes\"", "! type_pluto:01=A20,is3", "! pgm_pluto:00",
+                     "S0.0_0", "! pgm_pluto:01", "S1.0_0"},
+                    kQuiet),
+              (Lines{"1:1: error: M0.3 cannot be exported: export variables need instruction set 3",
+                     "3:1: error: Q1.2 is global: the other units see it already",
+                     "3:1: error: unit 1 exports variables for 5 extra telegram pairs; a unit "
+                     "may add 4"}));
+}
+
 TEST(AccessCheck, ReadingTheLocalInputsOfAnotherFamily) {
     // A B46's I20.. and Q4/Q5 are local; an A20 reads its I0..I17 and Q0..Q3.
     EXPECT_EQ(
         check({"! id_pluto:00=000000000000", "! id_pluto_Double:01=000000000001", "! pgm_pluto:00",
                "S0.0_0", "M0.0 = I1.17 * Q1.3 * I1.20 * Q1.4", "! pgm_pluto:01", "S1.0_0"},
               kQuiet),
-        (Lines{"5:23: error: I1.20 is local to unit 1; other units cannot read it",
-               "5:31: error: Q1.4 is local to unit 1; other units cannot read it"}));
+        (Lines{
+            "5:23: error: I1.20 is local to unit 1 and not exported; other units cannot read it",
+            "5:31: error: Q1.4 is local to unit 1 and not exported; other units cannot read it"}));
 }
 
 TEST(AccessCheck, WritingAnInput) {

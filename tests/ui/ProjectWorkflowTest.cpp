@@ -428,7 +428,8 @@ TEST_F(ProjectWorkflowTest, TheCodeIsEditedAsTextAndEveryPageFollows) {
     editCell(QStringLiteral("I3.0"), rs::ui::VariableTableModel::NameColumn,
              QStringLiteral("EStop"));
 
-    clickNode({PageRef::Kind::Code, document(), 3, 0});
+    clickNode({PageRef::Kind::Ladder, document(), 3, 0});
+    action("codeViewAction")->trigger(); // the code's text
     rs::ui::ProgramEditor* editor = window.editor();
     EXPECT_TRUE(editor->textBytes().startsWith("! pgm_pluto:03\n"));
     editor->setFocus();
@@ -445,7 +446,8 @@ TEST_F(ProjectWorkflowTest, TheCodeIsEditedAsTextAndEveryPageFollows) {
     // A rename on the variables page shows in the code.
     editCell(QStringLiteral("I3.0"), rs::ui::VariableTableModel::NameColumn,
              QStringLiteral("Stop"));
-    clickNode({PageRef::Kind::Code, document(), 3, 0});
+    clickNode({PageRef::Kind::Ladder, document(), 3, 0});
+    action("codeViewAction")->trigger(); // the code's text
     EXPECT_TRUE(editor->textBytes().contains("Q3.4 = Stop\n")) << editor->textBytes().toStdString();
 
     // Ctrl+Z in the editor is the project's undo: the rename, then the typing.

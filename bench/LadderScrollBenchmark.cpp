@@ -1,0 +1,133 @@
+#include "ProjectGenerator.h"
+
+#include "ProjectDocument.h"
+#include "ladder/LadderPage.h"
+#include "ladder/LadderView.h"
+#include "project/ProjectFile.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QScrollBar>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+// The ladder editor's page on a unit of 2,000 networks, offscreen: opening it
+// up to its first painted frame, and scrolling through it frame by frame.
+namespace {
+
+constexpr int kNetworks = 2000;
+
+// One unit whose PLC code has at least 2,000 networks: the generator's main
+// code holds 85 % of a unit's statements, most of them grouped under comments
+// (about eleven statements a network).
+const rs::project::Project& plant() {
+    static const rs::project::Project project = [] {
+        rs::bench::GeneratorOptions options;
+        options.units = 1;
+        options.statementsPerUnit = 27000;
+        return rs::project::readProject(rs::bench::generateProject(options)).project;
+    }();
+    return project;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct OpenPage {
+    std::unique_ptr<rs::ui::ProjectDocument> document;
+    std::unique_ptr<rs::ui::LadderPage> page;
+    QImage frame{1280, 800, QImage::Format_ARGB32_Premultiplied};
+
+    OpenPage() : document(std::make_unique<rs::ui::ProjectDocument>(plant())) {
+        page = std::make_unique<rs::ui::LadderPage>();
+        page->resize(1280, 900);
+        page->setAttribute(Qt::WA_DontShowOnScreen);
+        page->show();
+        page->showUnit(document.get(), 0, 0);
+    }
+
+    // Paints what the view shows now, as a screen update would.
+    void paintFrame() {
+        QWidget* viewport = page->view()->viewport();
+        if (frame.size() != viewport->size())
+            frame = QImage(viewport->size(), QImage::Format_ARGB32_Premultiplied);
+        viewport->render(&frame);
+    }
+};
+
+void BM_OpenToFirstPaint(benchmark::State& state) {
+    int networks = 0;
+    for (auto _ : state) {
+        OpenPage open;
+        open.paintFrame();
+        networks = open.page->networkCount(0);
+    }
+    state.counters["networks"] = networks;
+}
+BENCHMARK(BM_OpenToFirstPaint)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+// Scrolls from top to bottom in steps of 120 pixels (one wheel notch), each
+// step one frame; reports the mean and the worst frame.
+void BM_ScrollFrames(benchmark::State& state) {
+    OpenPage open;
+    QScrollBar* bar = open.page->view()->verticalScrollBar();
+    double worst = 0;
+    double total = 0;
+    int frames = 0;
+    for (auto _ : state) {
+        bar->setValue(0);
+        while (bar->value() < bar->maximum()) {
+            const auto start = Clock::now();
+            bar->setValue(bar->value() + 120);
+            open.paintFrame();
+            const double ms = millisecondsSince(start);
+            worst = std::max(worst, ms);
+            total += ms;
+            ++frames;
+        }
+    }
+    state.counters["frames"] = frames;
+    state.counters["mean_frame_ms"] = frames ? total / frames : 0;
+    state.counters["worst_frame_ms"] = worst;
+    state.counters["networks"] = open.page->networkCount(0);
+}
+BENCHMARK(BM_ScrollFrames)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// A new live state on every network: what the simulator's screen updates cost.
+void BM_LiveRepaint(benchmark::State& state) {
+    OpenPage open;
+    rs::ui::LadderLiveState live;
+    for (std::uint32_t statement = 0; statement < 4000; ++statement)
+        live.power.statements[statement].energised = statement % 2 == 0;
+    for (auto _ : state) {
+        open.page->setLiveState(&live);
+        open.paintFrame();
+    }
+}
+BENCHMARK(BM_LiveRepaint)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+// Widgets need a QApplication; offscreen, no display is needed.
+int main(int argc, char* argv[]) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    if (const int networks = OpenPage().page->networkCount(0); networks < kNetworks) {
+        std::fprintf(stderr, "the generated unit has only %d networks\n", networks);
+        return 1;
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,102 @@
+#include "ElementText.h"
+
+#include "LadderToText.h"
+#include "TextToLadder.h"
+#include "lang/NameResolver.h"
+#include "lang/Parser.h"
+#include "lang/Printer.h"
+
+namespace rs::ladder {
+
+namespace {
+
+// The unit's names around one statement: the project's preamble and the
+// unit's declarations, then a step holding `statement` alone.
+struct StatementReading {
+    std::optional<lang::Statement> statement;
+    std::string error;
+};
+
+StatementReading readStatement(const lang::Document& document, int station,
+                               const std::string& statement) {
+    lang::Document names;
+    names.preamble = document.preamble;
+    lang::UnitProgram unit;
+    for (const auto& existing : document.units)
+        if (existing.station() == station)
+            unit = existing;
+    unit.header.body = lang::Declaration{lang::ProgramDeclaration{station}, {}};
+    unit.header.comment.reset();
+    unit.steps.clear();
+    names.units.push_back(unit);
+    const std::string text = lang::print(names) + lang::toString(lang::StepAddress{station, 0, 0}) +
+                             "\n" + statement + "\n";
+    lang::ParseResult parsed = lang::parse(text);
+    lang::Diagnostics diagnostics = parsed.diagnostics;
+    if (lang::errorCount(diagnostics) == 0) {
+        const lang::Diagnostics resolved = lang::resolveNames(parsed.document);
+        diagnostics.insert(diagnostics.end(), resolved.begin(), resolved.end());
+    }
+    for (const auto& diagnostic : diagnostics)
+        if (diagnostic.severity == lang::Severity::Error)
+            return {std::nullopt, diagnostic.message};
+    const auto& units = parsed.document.units;
+    if (units.empty() || units.back().steps.empty())
+        return {std::nullopt, "not a statement"};
+    for (const auto& line : units.back().steps.back().lines)
+        if (const auto* read = std::get_if<lang::Statement>(&line.body))
+            return {*read, {}};
+    return {std::nullopt, "nothing to read"};
+}
+
+std::string trimmed(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos)
+        return {};
+    const auto last = text.find_last_not_of(" \t");
+    return std::string(text.substr(first, last - first + 1));
+}
+
+} // namespace
+
+ElementReading readElement(const lang::Document& document, int station, std::string_view text) {
+    const std::string element = trimmed(text);
+    if (element.empty())
+        return {std::nullopt, "the element is empty"};
+    const std::string coil = lang::toString(lang::Address{lang::AddressKind::Memory, station, 0});
+    StatementReading read = readStatement(document, station, coil + " = " + element);
+    if (!read.statement)
+        return {std::nullopt, read.error};
+    if (!read.statement->condition)
+        return {std::nullopt, "not an element"};
+    Circuit circuit = toCircuit(*read.statement->condition);
+    if (!circuit.isElement())
+        return {std::nullopt, "write one element, not a condition of several"};
+    return {circuit.element, {}};
+}
+
+OutputReading readOutput(const lang::Document& document, int station, std::string_view text) {
+    const std::string output = trimmed(text);
+    if (output.empty())
+        return {std::nullopt, "the output is empty"};
+    StatementReading read = readStatement(document, station, output);
+    if (!read.statement)
+        return {std::nullopt, read.error};
+    if (read.statement->condition)
+        return {std::nullopt, "write the output alone, without its condition"};
+    return {toOutput(*read.statement, std::nullopt), {}};
+}
+
+std::string elementText(const Element& element) {
+    return lang::printExpression(toExpr(Circuit::of(element)));
+}
+
+std::string outputText(const Output& output) {
+    Rung rung;
+    rung.outputs.push_back(output);
+    rung.outputs.back().comment.reset();
+    const std::vector<lang::Line> lines = toLines(rung);
+    return lang::printStatement(std::get<lang::Statement>(lines.front().body));
+}
+
+} // namespace rs::ladder

@@ -1,0 +1,90 @@
+#include "NetworkText.h"
+
+#include "LadderToText.h"
+#include "TextToLadder.h"
+#include "lang/Parser.h"
+#include "lang/Printer.h"
+#include "project/Annotation.h"
+
+namespace rs::ladder {
+
+namespace {
+
+void unname(lang::Operand& operand) {
+    operand.name.clear();
+}
+
+void unname(lang::Value& value) {
+    if (value.operand)
+        unname(*value.operand);
+}
+
+void unname(lang::Expr& expr) {
+    unname(expr.operand);
+    unname(expr.right);
+    if (expr.preset.registerOperand)
+        unname(*expr.preset.registerOperand);
+    for (auto& child : expr.children)
+        unname(child);
+}
+
+void unname(lang::Statement& statement) {
+    unname(statement.target);
+    unname(statement.assignment.target);
+    unname(statement.assignment.left);
+    unname(statement.assignment.right);
+    if (statement.condition)
+        unname(*statement.condition);
+}
+
+constexpr int kStation = 0;
+
+std::string stepHeader() {
+    return "! pgm_pluto:00\n" + lang::toString(lang::StepAddress{kStation, 0, 0}) + "\n";
+}
+
+} // namespace
+
+std::string networksText(const std::vector<Network>& networks) {
+    lang::Document document;
+    lang::UnitProgram unit;
+    unit.header.body = lang::Declaration{lang::ProgramDeclaration{kStation}, {}};
+    lang::Step step;
+    step.address = {kStation, 0, 0};
+    StepLadder ladder;
+    ladder.networks = networks;
+    // A record on every network keeps them apart, whatever they hold.
+    for (auto& network : ladder.networks)
+        if (!network.record)
+            network.record = lang::CommentLine{
+                project::formatAnnotation({"network", {}, {{"comment", network.comment}}}), false};
+    step.lines = toLines(ladder);
+    for (auto& line : step.lines)
+        if (auto* statement = std::get_if<lang::Statement>(&line.body))
+            unname(*statement);
+    unit.steps.push_back(std::move(step));
+    document.units.push_back(std::move(unit));
+    const std::string text = lang::print(document);
+    return text.substr(stepHeader().size());
+}
+
+NetworksReading readNetworksText(std::string_view text) {
+    const lang::ParseResult parsed = lang::parse(stepHeader() + std::string(text) + "\n");
+    for (const auto& diagnostic : parsed.diagnostics)
+        if (diagnostic.severity == lang::Severity::Error)
+            return {{}, "line " + std::to_string(diagnostic.line - 2) + ": " + diagnostic.message};
+    if (parsed.document.units.size() != 1 || parsed.document.units.front().steps.size() != 1)
+        return {{}, "the text holds more than networks"};
+    for (const auto& line : parsed.document.units.front().steps.front().lines)
+        if (const auto* statement = std::get_if<lang::Statement>(&line.body))
+            for (const lang::Operand* operand : {&statement->target, &statement->assignment.target})
+                if (operand->isName())
+                    return {{},
+                            "the text uses the name " + operand->name +
+                                "; networks on the "
+                                "clipboard use addresses"};
+    StepLadder ladder = toLadder(parsed.document.units.front().steps.front());
+    return {std::move(ladder.networks), {}};
+}
+
+} // namespace rs::ladder

@@ -1,0 +1,28 @@
+#include "LadderDrawing.h"
+
+#include <QPalette>
+
+namespace rs::ui {
+
+LadderDrawing drawingFor(const QPalette& palette) {
+    LadderDrawing drawing;
+    render::LadderStyle& style = drawing.style;
+    style.background = palette.color(QPalette::Base);
+    style.ink = palette.color(QPalette::Text);
+    const bool dark = style.background.lightness() < 128;
+    if (dark) {
+        style.powered = QColor(70, 210, 110);
+        style.poweredFill = QColor(30, 80, 45);
+        style.nameInk = QColor(140, 180, 255);
+        style.addressInk = QColor(190, 190, 190);
+        style.commentInk = QColor(170, 170, 170);
+    }
+    drawing.selection = palette.color(QPalette::Highlight);
+    drawing.markedNetwork = palette.color(QPalette::Highlight);
+    drawing.markedNetwork.setAlpha(60);
+    drawing.problem = dark ? QColor(255, 90, 90) : QColor(210, 0, 0);
+    drawing.editing = dark ? QColor(255, 170, 60) : QColor(220, 120, 0);
+    return drawing;
+}
+
+} // namespace rs::ui

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "LadderCursor.h"
+#include "LadderLiveState.h"
+#ifndef Q_MOC_RUN
+#include "LadderStyle.h"
+#endif
+
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+
+namespace rs::ui {
+
+// What every network item of a ladder page draws besides its network: the
+// page's colours, the simulator's state, the selection and the problems.
+struct LadderDrawing {
+    render::LadderStyle style;
+    QColor selection;     // the frame around what is selected
+    QColor markedNetwork; // behind the title of a network chosen for Cut or Copy
+    QColor problem;       // the frame around an element a diagnostic concerns
+    QColor editing;       // the frame of the network in edit mode
+    const LadderLiveState* live = nullptr;
+    LadderCursor cursor;
+    std::set<std::pair<int, int>> marked; // (step, network) chosen for Cut, Copy, Delete
+    std::optional<std::pair<int, int>> editingNetwork;
+    // Diagnostics by (statement in unit, element), element 0 for the statement as a whole.
+    std::map<std::pair<std::uint32_t, std::uint16_t>, QString> problems;
+};
+
+// Colours of the drawing that follow the window's palette (light or dark).
+LadderDrawing drawingFor(const QPalette& palette);
+
+} // namespace rs::ui

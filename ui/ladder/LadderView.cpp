@@ -1,0 +1,124 @@
+#include "LadderView.h"
+
+#include <QApplication>
+#include <QContextMenuEvent>
+#include <QMimeData>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr qreal kZoomStep = 1.25;
+
+} // namespace
+
+LadderView::LadderView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(scene, parent) {
+    setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    setFocusPolicy(Qt::StrongFocus);
+    setAcceptDrops(true);
+    // Items paint opaque backgrounds and restore the painter themselves.
+    setOptimizationFlags(QGraphicsView::DontSavePainterState);
+    setViewportUpdateMode(QGraphicsView::MinimalViewportUpdate);
+    setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
+}
+
+void LadderView::setZoom(qreal zoom) {
+    zoom = std::clamp(zoom, kMinimumZoom, kMaximumZoom);
+    if (std::abs(zoom - m_zoom) < 1e-6)
+        return;
+    m_zoom = zoom;
+    setTransform(QTransform::fromScale(zoom, zoom));
+    emit zoomChanged(zoom);
+}
+
+void LadderView::zoomIn() {
+    setZoom(m_zoom * kZoomStep);
+}
+
+void LadderView::zoomOut() {
+    setZoom(m_zoom / kZoomStep);
+}
+
+void LadderView::wheelEvent(QWheelEvent* event) {
+    if (event->modifiers() & Qt::ControlModifier) {
+        const QPointF under = mapToScene(event->position().toPoint());
+        if (event->angleDelta().y() > 0)
+            zoomIn();
+        else if (event->angleDelta().y() < 0)
+            zoomOut();
+        // Keep the point under the mouse where it was.
+        const QPointF now = mapToScene(event->position().toPoint());
+        const QPointF shift = (now - under) * m_zoom;
+        horizontalScrollBar()->setValue(horizontalScrollBar()->value() - qRound(shift.x()));
+        verticalScrollBar()->setValue(verticalScrollBar()->value() - qRound(shift.y()));
+        event->accept();
+        return;
+    }
+    QGraphicsView::wheelEvent(event);
+}
+
+void LadderView::keyPressEvent(QKeyEvent* event) {
+    if (keyHandler && keyHandler(event)) {
+        event->accept();
+        return;
+    }
+    QGraphicsView::keyPressEvent(event);
+}
+
+void LadderView::mousePressEvent(QMouseEvent* event) {
+    setFocus(Qt::MouseFocusReason);
+    m_pressAt = event->position().toPoint();
+    m_mayDrag = event->button() == Qt::LeftButton;
+    emit pressed(mapToScene(m_pressAt), event->button(), event->modifiers());
+    event->accept();
+}
+
+void LadderView::mouseMoveEvent(QMouseEvent* event) {
+    if (m_mayDrag && (event->buttons() & Qt::LeftButton) &&
+        (event->position().toPoint() - m_pressAt).manhattanLength() >=
+            QApplication::startDragDistance()) {
+        m_mayDrag = false;
+        emit dragStarted(mapToScene(m_pressAt));
+    }
+    event->accept();
+}
+
+void LadderView::mouseReleaseEvent(QMouseEvent* event) {
+    m_mayDrag = false;
+    event->accept();
+}
+
+void LadderView::mouseDoubleClickEvent(QMouseEvent* event) {
+    emit doubleClicked(mapToScene(event->position().toPoint()));
+    event->accept();
+}
+
+void LadderView::contextMenuEvent(QContextMenuEvent* event) {
+    emit menuRequested(mapToScene(event->pos()), event->globalPos());
+    event->accept();
+}
+
+void LadderView::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
+        event->acceptProposedAction();
+}
+
+void LadderView::dragMoveEvent(QDragMoveEvent* event) {
+    if (event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
+        event->acceptProposedAction();
+}
+
+void LadderView::dropEvent(QDropEvent* event) {
+    if (!event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
+        return;
+    emit dropped(mapToScene(event->position().toPoint()),
+                 event->mimeData()->data(QLatin1String(kElementMimeType)));
+    event->acceptProposedAction();
+}
+
+} // namespace rs::ui

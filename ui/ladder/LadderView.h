@@ -1,0 +1,65 @@
+#pragma once
+
+#include <QGraphicsView>
+
+#include <functional>
+
+namespace rs::ui {
+
+// The scrolling view of a ladder page's scene. It zooms with Ctrl+wheel and
+// hands clicks, double clicks, context menus, drags and keys to the page,
+// which knows what the items stand for.
+class LadderView : public QGraphicsView {
+    Q_OBJECT
+public:
+    static constexpr qreal kMinimumZoom = 0.25;
+    static constexpr qreal kMaximumZoom = 4;
+
+    explicit LadderView(QGraphicsScene* scene, QWidget* parent = nullptr);
+
+    qreal zoom() const { return m_zoom; }
+    void setZoom(qreal zoom);
+    void zoomIn();
+    void zoomOut();
+
+    std::function<bool(QKeyEvent*)> keyHandler;
+
+public slots:
+    // The window's Edit > Cut, Copy and Paste act on the widget with the focus.
+    void cut() { emit clipboardRequested(Qt::Key_X); }
+    void copy() { emit clipboardRequested(Qt::Key_C); }
+    void paste() { emit clipboardRequested(Qt::Key_V); }
+
+signals:
+    void pressed(const QPointF& scenePosition, Qt::MouseButton button,
+                 Qt::KeyboardModifiers modifiers);
+    void doubleClicked(const QPointF& scenePosition);
+    void menuRequested(const QPointF& scenePosition, const QPoint& globalPosition);
+    // The left button went down at `from` and the mouse moved far enough to drag.
+    void dragStarted(const QPointF& from);
+    void dropped(const QPointF& scenePosition, const QByteArray& payload);
+    void zoomChanged(qreal zoom);
+    void clipboardRequested(int key); // Qt::Key_X cut, Key_C copy, Key_V paste
+
+protected:
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    qreal m_zoom = 1;
+    QPoint m_pressAt;
+    bool m_mayDrag = false;
+};
+
+// The MIME type of an element dragged within or between ladder pages.
+inline constexpr const char* kElementMimeType = "application/x-rungsmith-ladder-element";
+
+} // namespace rs::ui

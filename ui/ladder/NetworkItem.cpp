@@ -1,0 +1,188 @@
+#include "NetworkItem.h"
+
+#include "NetworkPainter.h"
+
+#include <QPainter>
+
+#include <algorithm>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr qreal kSelectionPad = 3;
+
+bool startsWith(const std::vector<std::size_t>& path, const std::vector<std::size_t>& prefix) {
+    return path.size() >= prefix.size() && std::equal(prefix.begin(), prefix.end(), path.begin());
+}
+
+} // namespace
+
+NetworkItem::NetworkItem(const LadderDrawing* drawing, int step, int index)
+    : m_drawing(drawing), m_step(step), m_index(index) {}
+
+bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::LayoutContext& context,
+                             int namesVersion) {
+    if (m_laidOut && network == m_network && context.number == m_number &&
+        context.firstStatement == m_firstStatement && namesVersion == m_namesVersion)
+        return false;
+    prepareGeometryChange();
+    m_network = network;
+    m_number = context.number;
+    m_firstStatement = context.firstStatement;
+    m_namesVersion = namesVersion;
+    m_layout = ladder::layoutNetwork(network, context);
+    m_laidOut = true;
+    update();
+    return true;
+}
+
+void NetworkItem::setIndex(int step, int index) {
+    m_step = step;
+    m_index = index;
+}
+
+void NetworkItem::setCollapsed(bool collapsed) {
+    if (collapsed == m_collapsed)
+        return;
+    prepareGeometryChange();
+    m_collapsed = collapsed;
+}
+
+QRectF NetworkItem::boundingRect() const {
+    const qreal height = m_collapsed ? m_layout.metrics.titleHeight + 2 * m_layout.metrics.margin
+                                     : m_layout.size.height();
+    return {0, 0, kGutter + m_layout.size.width(), height};
+}
+
+QRectF NetworkItem::collapseBox() const {
+    const qreal side = 11;
+    return {(kGutter - side) / 2,
+            m_layout.metrics.margin + (m_layout.metrics.titleHeight - side) / 2, side, side};
+}
+
+bool NetworkItem::inCollapseBox(const QPointF& point) const {
+    return collapseBox().adjusted(-4, -4, 4, 4).contains(point);
+}
+
+int NetworkItem::elementAt(const QPointF& point) const {
+    if (m_collapsed)
+        return -1;
+    const QPointF local = point - QPointF(kGutter, 0);
+    for (std::size_t i = 0; i < m_layout.elements.size(); ++i)
+        if (m_layout.elements[i].cell.contains(local))
+            return static_cast<int>(i);
+    return -1;
+}
+
+QRectF NetworkItem::elementRect(const ladder::ElementLayout& element) const {
+    return element.cell.translated(kGutter, 0);
+}
+
+QRectF NetworkItem::groupRect(const ladder::ElementPath& path) const {
+    QRectF rect;
+    for (const auto& element : m_layout.elements)
+        if (element.output < 0 && element.path.item == path.item &&
+            startsWith(element.path.node, path.node))
+            rect = rect.united(elementRect(element));
+    return rect;
+}
+
+void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+    const render::LadderStyle& style = m_drawing->style;
+    const QRectF bounds = boundingRect();
+    painter->fillRect(bounds, style.background);
+    painter->save();
+    painter->translate(kGutter, 0);
+    if (m_collapsed)
+        painter->setClipRect(QRectF(0, 0, m_layout.size.width(), bounds.height()));
+    render::paintNetwork(*painter, m_layout, style,
+                         m_drawing->live ? &m_drawing->live->power : nullptr);
+    painter->restore();
+    if (m_drawing->marked.count({m_step, m_index}) > 0)
+        painter->fillRect(
+            QRectF(0, 0, bounds.width(), m_layout.metrics.titleHeight + m_layout.metrics.margin),
+            m_drawing->markedNetwork);
+
+    // The expand/collapse box.
+    painter->setPen(QPen(style.ink, 1));
+    painter->setBrush(Qt::NoBrush);
+    const QRectF box = collapseBox();
+    painter->drawRect(box);
+    painter->drawLine(QPointF(box.left() + 2, box.center().y()),
+                      QPointF(box.right() - 2, box.center().y()));
+    if (m_collapsed)
+        painter->drawLine(QPointF(box.center().x(), box.top() + 2),
+                          QPointF(box.center().x(), box.bottom() - 2));
+    // A line under each network separates it from the next.
+    painter->setPen(QPen(style.commentInk, 0.5));
+    painter->drawLine(bounds.bottomLeft(), bounds.bottomRight());
+    paintOverlay(*painter);
+}
+
+void NetworkItem::paintOverlay(QPainter& painter) const {
+    const LadderDrawing& drawing = *m_drawing;
+    const QRectF bounds = boundingRect();
+    if (drawing.editingNetwork == std::make_pair(m_step, m_index)) {
+        painter.setPen(QPen(drawing.editing, 2.5));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(bounds.adjusted(1.5, 1.5, -1.5, -1.5));
+    }
+    const LadderCursor& cursor = drawing.cursor;
+    if (cursor.sameNetwork(m_step, m_index)) {
+        QRectF selected;
+        if (cursor.wholeNetwork()) {
+            selected = bounds.adjusted(kGutter - 2, 1, -1, -1);
+        } else if (cursor.node) {
+            selected = groupRect(*cursor.node);
+        } else {
+            for (const auto& element : m_layout.elements)
+                if (element.output == cursor.outputIndex &&
+                    element.path.item == cursor.output->item)
+                    selected = elementRect(element);
+        }
+        if (!selected.isNull()) {
+            QPen pen(drawing.selection, 2);
+            if (cursor.wholeNetwork())
+                pen.setStyle(Qt::DashLine);
+            painter.setPen(pen);
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRoundedRect(selected.adjusted(-kSelectionPad + 4, 2, kSelectionPad - 4, -2),
+                                    4, 4);
+        }
+    }
+    if (m_collapsed)
+        return;
+    QFont small = drawing.style.font(drawing.style.labelPixelSize, true);
+    painter.setFont(small);
+    for (const auto& element : m_layout.elements) {
+        const auto key = std::make_pair(element.statement, element.element);
+        const QRectF cell = elementRect(element);
+        const bool problem =
+            drawing.problems.count(key) > 0 ||
+            (element.output >= 0 && drawing.problems.count({element.statement, 0}) > 0);
+        if (problem) {
+            painter.setPen(QPen(drawing.problem, 2, Qt::DotLine));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRect(cell.adjusted(4, 3, -4, -3));
+        }
+        if (!drawing.live)
+            continue;
+        if (const auto note = drawing.live->annotations.find(key);
+            note != drawing.live->annotations.end()) {
+            painter.setPen(drawing.style.powered);
+            painter.drawText(cell.adjusted(0, 0, 0, 12), Qt::AlignHCenter | Qt::AlignBottom,
+                             note->second);
+        }
+        if (!element.address.isEmpty() && drawing.live->forced.count(element.address) > 0) {
+            const QRectF badge(cell.right() - 18, cell.top() + 2, 14, 14);
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(drawing.problem);
+            painter.drawRect(badge);
+            painter.setPen(Qt::white);
+            painter.drawText(badge, Qt::AlignCenter, QStringLiteral("F"));
+        }
+    }
+}
+
+} // namespace rs::ui

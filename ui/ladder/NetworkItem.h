@@ -1,0 +1,62 @@
+#pragma once
+
+#include "LadderDrawing.h"
+#ifndef Q_MOC_RUN
+#include "ladder/Layout.h"
+#include "ladder/Network.h"
+#endif
+
+#include <QGraphicsItem>
+
+namespace rs::ui {
+
+// One network of a ladder page. It keeps the network's layout and lays it out
+// again only when the network, its number, its first statement or the names
+// change; painting draws the cached layout with the renderer, so a page of
+// thousands of networks costs only what is on screen.
+class NetworkItem : public QGraphicsItem {
+public:
+    static constexpr qreal kGutter = 24; // left of the network: the expand/collapse box
+
+    NetworkItem(const LadderDrawing* drawing, int step, int index);
+
+    // Lays the network out unless it is the one laid out already. Returns whether it did.
+    bool setNetwork(const ladder::Network& network, const ladder::LayoutContext& context,
+                    int namesVersion);
+    void setIndex(int step, int index);
+    int step() const { return m_step; }
+    int index() const { return m_index; }
+    const ladder::Network& network() const { return m_network; }
+    const ladder::NetworkLayout& layout() const { return m_layout; }
+    std::uint32_t firstStatement() const { return m_firstStatement; }
+
+    void setCollapsed(bool collapsed);
+    bool collapsed() const { return m_collapsed; }
+
+    // The element at a point in item coordinates, or -1.
+    int elementAt(const QPointF& point) const;
+    bool inCollapseBox(const QPointF& point) const;
+    // Where an element, or a group's elements together, stand in item coordinates.
+    QRectF elementRect(const ladder::ElementLayout& element) const;
+    QRectF groupRect(const ladder::ElementPath& path) const;
+
+    QRectF boundingRect() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    void paintOverlay(QPainter& painter) const;
+    QRectF collapseBox() const;
+
+    const LadderDrawing* m_drawing;
+    int m_step;
+    int m_index;
+    ladder::Network m_network;
+    ladder::NetworkLayout m_layout;
+    int m_number = 0;
+    std::uint32_t m_firstStatement = 0;
+    int m_namesVersion = -1;
+    bool m_laidOut = false;
+    bool m_collapsed = false;
+};
+
+} // namespace rs::ui

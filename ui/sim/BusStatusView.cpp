@@ -1,0 +1,73 @@
+#include "BusStatusView.h"
+
+#include "ProjectDocument.h"
+#include "SimulationSession.h"
+#include "StatusColors.h"
+#include "UnitCaption.h"
+
+#include <QHeaderView>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr int kErrorCodeRegister = 11; // SR_ErrorCode
+
+} // namespace
+
+QString unitCodeText(int station, int code) {
+    return code == 0 ? BusStatusView::tr("Pluto %1: E0=No Error").arg(station)
+                     : BusStatusView::tr("Pluto %1: Er%2").arg(station).arg(code);
+}
+
+BusStatusView::BusStatusView(SimulationSession* session, QWidget* parent)
+    : QWidget(parent), m_session(session), m_table(new QTableWidget(0, 4, this)) {
+    m_table->setObjectName(QStringLiteral("busStatusTable"));
+    m_table->setHorizontalHeaderLabels({tr("Station"), tr("Pluto"), tr("State"), tr("Code")});
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_table);
+    connect(m_session, &SimulationSession::updated, this, &BusStatusView::refresh);
+    connect(m_session, &SimulationSession::stateChanged, this, &BusStatusView::refresh);
+}
+
+void BusStatusView::refresh() {
+    const sim::Simulation* simulation = m_session->simulation();
+    const ProjectDocument* document = m_session->document();
+    const std::vector<int> stations =
+        simulation && document ? document->project().stations() : std::vector<int>{};
+    m_table->setRowCount(static_cast<int>(stations.size()));
+    const bool running = m_session->state() == SimulationSession::State::Running;
+    for (int row = 0; row < static_cast<int>(stations.size()); ++row) {
+        const int station = stations[static_cast<std::size_t>(row)];
+        const bool present = simulation->unit(station) != nullptr;
+        const int code =
+            present ? static_cast<int>(simulation->value(
+                          {lang::AddressKind::SystemRegister, station, kErrorCodeRegister}))
+                    : 0;
+        const QStringList cells{QString::number(station), unitCaption(document->project(), station),
+                                !present  ? tr("Missing")
+                                : running ? tr("Ok, running")
+                                          : tr("Ok, stopped"),
+                                present ? (code == 0 ? tr("E0=No Error") : tr("Er%1").arg(code))
+                                        : QString()};
+        for (int column = 0; column < cells.size(); ++column) {
+            QTableWidgetItem* item = m_table->item(row, column);
+            if (!item) {
+                item = new QTableWidgetItem;
+                m_table->setItem(row, column, item);
+            }
+            item->setText(cells[column]);
+            if (column == CodeColumn || column == StateColumn)
+                item->setForeground(code != 0 || !present ? errorTextColor(palette())
+                                                          : palette().color(QPalette::Text));
+        }
+    }
+}
+
+} // namespace rs::ui

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <QString>
+#include <QWidget>
+
+class QTableWidget;
+
+namespace rs::ui {
+
+class SimulationSession;
+
+// Pluto's error code as the manual's tool bar shows it, "E0=No Error"; from
+// SR_ErrorCode, which only a force changes in the simulator.
+QString unitCodeText(int station, int code);
+
+// The Bus Status dock (manual Part 1, 15.6): every unit of the project with
+// its state in the simulation and its error code.
+class BusStatusView : public QWidget {
+    Q_OBJECT
+public:
+    enum Column { StationColumn, UnitColumn, StateColumn, CodeColumn };
+
+    explicit BusStatusView(SimulationSession* session, QWidget* parent = nullptr);
+
+    QTableWidget* table() const { return m_table; }
+    void refresh();
+
+private:
+    SimulationSession* m_session;
+    QTableWidget* m_table;
+};
+
+} // namespace rs::ui

@@ -1,0 +1,182 @@
+#include "LiveLadder.h"
+
+#include "sim/Simulation.h"
+
+#include <QStringList>
+
+#include <cstring>
+
+namespace rs::ui {
+
+namespace {
+
+QString seconds(std::int64_t ms) {
+    return QStringLiteral("%1 s").arg(static_cast<double>(ms) / 1000.0, 0, 'f', 2);
+}
+
+// The power of one statement from its instructions [first, first + count);
+// false when none of them ran.
+bool statementPower(const sim::UnitEngine& unit, std::size_t first, std::size_t count,
+                    render::StatementPower& power) {
+    const auto& code = unit.image().code;
+    const auto& conduction = unit.conduction();
+    power = {};
+    bool ran = false;
+    for (std::size_t i = first; i < first + count; ++i) {
+        if (conduction[i] == sim::Conduction::NotRun)
+            continue;
+        ran = true;
+        const bool on = conduction[i] == sim::Conduction::On;
+        const std::uint16_t element = code[i].element;
+        if (element == 0)
+            power.energised = on; // the rung's start and its output; the output comes last
+        else if (on)
+            power.conducting.insert(element);
+        else
+            power.conducting.erase(element);
+    }
+    return ran;
+}
+
+} // namespace
+
+render::PowerSnapshot powerSnapshot(const sim::UnitEngine& unit) {
+    render::PowerSnapshot snapshot;
+    const auto& code = unit.image().code;
+    const auto& conduction = unit.conduction();
+    render::StatementPower* current = nullptr;
+    std::uint32_t currentStatement = 0;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        if (conduction[i] == sim::Conduction::NotRun)
+            continue;
+        const compiler::Instruction& in = code[i];
+        if (!current || currentStatement != in.statement) {
+            current = &snapshot.statements[in.statement];
+            currentStatement = in.statement;
+        }
+        const bool on = conduction[i] == sim::Conduction::On;
+        if (in.element == 0) {
+            // The rung's start and its output both carry element 0; the output comes last.
+            current->energised = on;
+        } else if (on) {
+            current->conducting.insert(in.element);
+        } else {
+            current->conducting.erase(in.element);
+        }
+    }
+    return snapshot;
+}
+
+void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& unit) {
+    m_unit = &unit;
+    const auto& code = unit.image().code;
+    m_statements.clear();
+    m_boxes.clear();
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const compiler::Instruction& in = code[i];
+        if (m_statements.empty() || m_statements.back().number != in.statement ||
+            m_statements.back().first + m_statements.back().count != i)
+            m_statements.push_back({in.statement, i, 0});
+        ++m_statements.back().count;
+        const bool timer = in.op == compiler::Op::Timer;
+        const bool operand = (in.op == compiler::Op::LoadA || in.op == compiler::Op::LoadB ||
+                              in.op == compiler::Op::Arith) &&
+                             !(in.flags & compiler::ConstantOperand) && in.operand.valid();
+        if (!timer && !operand)
+            continue;
+        const auto key = std::make_pair(in.statement, in.element);
+        if (m_boxes.empty() || m_boxes.back().key != key)
+            m_boxes.push_back({key, {}, {}});
+        m_boxes.back().instructions.push_back(i);
+    }
+    state.power = powerSnapshot(unit);
+    state.annotations.clear();
+    for (Box& box : m_boxes) {
+        box.values = valuesOf(unit, box);
+        state.annotations[box.key] = textOf(unit, box);
+    }
+    const auto& conduction = unit.conduction();
+    m_conduction.resize(conduction.size());
+    std::memcpy(m_conduction.data(), conduction.data(), conduction.size());
+}
+
+std::vector<std::int64_t> LiveLadderBuilder::valuesOf(const sim::UnitEngine& unit,
+                                                      const Box& box) const {
+    std::vector<std::int64_t> values;
+    const auto& code = unit.image().code;
+    for (std::size_t index : box.instructions) {
+        const compiler::Instruction& in = code[index];
+        if (in.op == compiler::Op::Timer) {
+            const std::int64_t preset =
+                10 * ((in.flags & compiler::ConstantOperand) ? in.constant : unit.read(in.operand));
+            values.push_back(std::min(unit.timer(in.slot).elapsedMs, preset));
+            values.push_back(preset);
+        } else {
+            values.push_back(unit.read(in.operand));
+        }
+    }
+    return values;
+}
+
+QString LiveLadderBuilder::textOf(const sim::UnitEngine& unit, const Box& box) const {
+    const auto& code = unit.image().code;
+    const compiler::Instruction& first = code[box.instructions.front()];
+    if (first.op == compiler::Op::Timer)
+        return seconds(box.values[0]) + QStringLiteral(" / ") + seconds(box.values[1]);
+    QStringList parts;
+    for (std::size_t i = 0; i < box.instructions.size(); ++i) {
+        const QString part =
+            QStringLiteral("%1 = %2")
+                .arg(QString::fromStdString(lang::toString(code[box.instructions[i]].operand)))
+                .arg(box.values[i]);
+        if (!parts.contains(part))
+            parts << part;
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
+void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& simulation,
+                               int station) {
+    const sim::UnitEngine* unit = simulation.unit(station);
+    if (!unit) {
+        state = LadderLiveState{};
+        m_unit = nullptr;
+        return;
+    }
+    if (unit != m_unit || m_conduction.size() != unit->conduction().size()) {
+        rebuild(state, *unit);
+    } else {
+        const auto* now = reinterpret_cast<const std::uint8_t*>(unit->conduction().data());
+        for (const Statement& statement : m_statements) {
+            if (std::memcmp(m_conduction.data() + statement.first, now + statement.first,
+                            statement.count) == 0)
+                continue;
+            std::memcpy(m_conduction.data() + statement.first, now + statement.first,
+                        statement.count);
+            render::StatementPower power;
+            if (statementPower(*unit, statement.first, statement.count, power))
+                state.power.statements[statement.number] = std::move(power);
+            else
+                state.power.statements.erase(statement.number);
+        }
+        for (Box& box : m_boxes) {
+            std::vector<std::int64_t> values = valuesOf(*unit, box);
+            if (values == box.values)
+                continue;
+            box.values = std::move(values);
+            state.annotations[box.key] = textOf(*unit, box);
+        }
+    }
+    state.forced.clear();
+    for (const auto& [address, value] : unit->forces()) {
+        const QString text = QString::fromStdString(lang::toString(address));
+        state.forced.insert(text);
+        state.forced.insert(QLatin1Char('/') + text);
+    }
+    state.activeSteps.clear();
+    for (int sequence = 1; sequence <= 9; ++sequence)
+        if (unit->hasSequence(sequence))
+            state.activeSteps[sequence] = unit->activeStep(sequence);
+}
+
+} // namespace rs::ui

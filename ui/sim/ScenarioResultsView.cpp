@@ -1,0 +1,63 @@
+#include "ScenarioResultsView.h"
+
+#include "StatusColors.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr int kPathRole = Qt::UserRole;
+constexpr int kLineRole = Qt::UserRole + 1;
+
+QColor passColor(const QPalette& palette) {
+    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 128, 0);
+}
+
+} // namespace
+
+ScenarioResultsView::ScenarioResultsView(QWidget* parent)
+    : QWidget(parent), m_tree(new QTreeWidget(this)) {
+    m_tree->setObjectName(QStringLiteral("scenarioResults"));
+    m_tree->setHeaderHidden(true);
+    m_tree->setRootIsDecorated(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_tree);
+    connect(m_tree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+        const int line = item->data(0, kLineRole).toInt();
+        if (line > 0)
+            emit lineActivated(item->data(0, kPathRole).toString(), line);
+    });
+}
+
+void ScenarioResultsView::addResult(const SimulationSession::ScenarioResult& result) {
+    auto* run = new QTreeWidgetItem;
+    const QString file = QFileInfo(result.path).fileName();
+    run->setToolTip(0, QDir::toNativeSeparators(result.path));
+    if (!result.error.isEmpty()) {
+        run->setText(0, tr("%1: %2").arg(file, result.error));
+        run->setForeground(0, errorTextColor(palette()));
+    } else {
+        run->setText(
+            0, tr("%1: %2 passed, %3 failed").arg(file).arg(result.passed).arg(result.failed));
+        run->setForeground(0, result.failed ? errorTextColor(palette()) : passColor(palette()));
+    }
+    for (const auto& failure : result.failures) {
+        auto* line = new QTreeWidgetItem(run);
+        line->setText(0, failure.text);
+        line->setData(0, kPathRole, result.path);
+        line->setData(0, kLineRole, failure.line);
+        line->setToolTip(0, tr("Double-click to show line %1 of %2").arg(failure.line).arg(file));
+    }
+    m_tree->insertTopLevelItem(0, run);
+    run->setExpanded(true);
+    m_tree->setCurrentItem(run);
+}
+
+} // namespace rs::ui

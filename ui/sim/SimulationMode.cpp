@@ -1,0 +1,273 @@
+#include "SimulationMode.h"
+
+#include "BusStatusView.h"
+#include "ForcesView.h"
+#include "MainWindow.h"
+#include "ProjectDocument.h"
+#include "ScenarioFileViewer.h"
+#include "ScenarioResultsView.h"
+#include "SimulationControls.h"
+#include "StatusColors.h"
+#include "VariablesPage.h"
+#include "WatchView.h"
+#include "WaveformPanel.h"
+#include "WaveformView.h"
+#include "ladder/LadderPage.h"
+
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include <algorithm>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr int kMessageMs = 4000;
+constexpr int kBottomDockHeight = 230;
+constexpr int kErrorCodeRegister = 11; // SR_ErrorCode
+
+// The operand as the ladder page spells it ("/I0.2" for P(/I0.2)).
+lang::Address addressOf(const QString& spelled) {
+    QString word = spelled.trimmed();
+    if (word.startsWith(QLatin1Char('/')))
+        word.remove(0, 1);
+    const lang::AddressWord read = lang::readAddressWord(word.toStdString());
+    return read.shape == lang::AddressWord::Shape::Variable ? read.address : lang::Address{};
+}
+
+QColor okColor(const QPalette& palette) {
+    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 128, 0);
+}
+
+} // namespace
+
+SimulationMode::SimulationMode(MainWindow* window)
+    : QObject(window), m_window(window), m_controls(new SimulationControls(&m_session, window)),
+      m_forces(new ForcesView(&m_session, window)), m_watch(new WatchView(&m_session, window)),
+      m_bus(new BusStatusView(&m_session, window)),
+      m_waveform(new WaveformPanel(&m_session, window)),
+      m_scenarios(new ScenarioResultsView(window)), m_viewer(new ScenarioFileViewer(window)),
+      m_unitCode(new QLabel(window)) {
+    QMenuBar* menuBar = window->menuBar();
+    auto* help = window->findChild<QMenu*>(QStringLiteral("helpMenu"));
+    menuBar->insertMenu(help ? help->menuAction() : nullptr, m_controls->menu());
+    window->addToolBar(m_controls->toolBar());
+
+    m_forcesDock = addDock(m_forces, tr("Forces"), "forcesDock");
+    m_watchDock = addDock(m_watch, tr("Watch"), "watchDock");
+    m_waveformDock = addDock(m_waveform, tr("Waveform"), "waveformDock", false);
+    m_busDock = addDock(m_bus, tr("Bus Status"), "busStatusDock");
+    m_scenariosDock = addDock(m_scenarios, tr("Scenarios"), "scenariosDock");
+    if (auto* view = window->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
+        view->addSeparator();
+        for (QDockWidget* dock :
+             {m_forcesDock, m_watchDock, m_waveformDock, m_busDock, m_scenariosDock})
+            view->addAction(dock->toggleViewAction());
+        view->addAction(m_controls->toolBar()->toggleViewAction());
+    }
+
+    m_unitCode->setObjectName(QStringLiteral("unitCodeLabel"));
+    m_unitCode->setContentsMargins(8, 0, 8, 0);
+    m_unitCode->hide();
+    window->statusBar()->addPermanentWidget(m_unitCode);
+
+    connect(m_controls, &SimulationControls::simulateToggled, this, [this](bool on) {
+        if (!on) {
+            end();
+            return;
+        }
+        const QString error = begin();
+        if (!error.isEmpty())
+            QMessageBox::warning(m_window, tr("Simulation"), error);
+    });
+    connect(m_controls, &SimulationControls::scenarioRequested, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(m_window, tr("Run Scenario"), QString(),
+                                                          tr("Scenarios (*.scn);;All files (*)"));
+        if (!path.isEmpty())
+            runScenario(path);
+    });
+    connect(m_scenarios, &ScenarioResultsView::lineActivated, this,
+            [this](const QString& path, int line) {
+                const QString error = m_viewer->showLine(path, line);
+                if (!error.isEmpty()) {
+                    message(error);
+                    return;
+                }
+                m_viewer->show();
+                m_viewer->raise();
+            });
+    connect(&m_session, &SimulationSession::stateChanged, this, &SimulationMode::stateChanged);
+    connect(&m_session, &SimulationSession::updated, this, &SimulationMode::refresh);
+    connect(&m_session, &SimulationSession::endedBecause, this, &SimulationMode::message);
+    connect(window, &MainWindow::pageChanged, this, [this] {
+        m_controls->setProjectAvailable(m_window->currentDocument() != nullptr);
+        refresh();
+    });
+    if (LadderPage* ladder = window->ladderPage()) {
+        connect(ladder, &LadderPage::operandClicked, this, &SimulationMode::operandClicked);
+        connect(ladder, &LadderPage::operandMenuRequested, this, &SimulationMode::showOperandMenu);
+    }
+    m_controls->setProjectAvailable(window->currentDocument() != nullptr);
+}
+
+SimulationMode::~SimulationMode() {
+    // The pages outlive nothing here, but must not keep a pointer to m_live.
+    if (m_liveLadder)
+        m_liveLadder->setLiveState(nullptr);
+}
+
+QDockWidget* SimulationMode::addDock(QWidget* content, const QString& title, const char* name,
+                                     bool withProblems) {
+    auto* dock = new QDockWidget(title, m_window);
+    dock->setObjectName(QString::fromLatin1(name));
+    dock->setWidget(content);
+    m_window->addDockWidget(Qt::BottomDockWidgetArea, dock, Qt::Horizontal);
+    auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    if (withProblems && problems)
+        m_window->tabifyDockWidget(problems, dock);
+    dock->hide();
+    return dock;
+}
+
+QString SimulationMode::begin() {
+    ProjectDocument* document = m_window->currentDocument();
+    const QString error = m_session.begin(document);
+    if (!error.isEmpty())
+        return error;
+    for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock})
+        dock->show();
+    if (document->project().stations().size() > 1)
+        m_busDock->show();
+    m_forcesDock->raise();
+    showBottomDocks();
+    message(
+        tr("Simulating %1. Editing the project ends the simulation.").arg(document->displayName()));
+    return {};
+}
+
+void SimulationMode::end() {
+    m_session.end();
+}
+
+SimulationSession::ScenarioResult SimulationMode::runScenario(const QString& path) {
+    const SimulationSession::ScenarioResult result =
+        m_session.runScenario(m_window->currentDocument(), path);
+    m_scenarios->addResult(result);
+    m_scenariosDock->show();
+    m_scenariosDock->raise();
+    m_waveformDock->show();
+    showBottomDocks();
+    m_waveform->view()->zoomToFit();
+    return result;
+}
+
+void SimulationMode::showBottomDocks() {
+    // Room for a few traces and list rows; the page keeps the rest.
+    const int height = std::max(m_waveformDock->height(), kBottomDockHeight);
+    m_window->resizeDocks({m_waveformDock}, {height}, Qt::Vertical);
+    m_window->resizeDocks({m_waveformDock}, {m_window->width() * 3 / 5}, Qt::Horizontal);
+}
+
+void SimulationMode::message(const QString& text) {
+    m_window->statusBar()->showMessage(text, kMessageMs);
+}
+
+void SimulationMode::stateChanged() {
+    const sim::Simulation* simulation = m_session.simulation();
+    m_builder.reset();
+    m_window->variablesPage()->setSimulation(simulation);
+    if (!simulation && m_liveLadder) {
+        m_liveLadder->setLiveState(nullptr);
+        m_liveLadder = nullptr;
+    }
+    m_unitCode->setVisible(simulation != nullptr);
+    refresh();
+}
+
+void SimulationMode::refresh() {
+    const sim::Simulation* simulation = m_session.simulation();
+    if (!simulation)
+        return;
+    const bool simulated = m_window->currentDocument() == m_session.document();
+    auto* pages = m_window->findChild<QStackedWidget*>(QStringLiteral("pages"));
+    QWidget* shown = pages ? pages->currentWidget() : nullptr;
+
+    LadderPage* ladder = m_window->ladderPage();
+    if (ladder && shown == ladder && simulated) {
+        m_builder.update(m_live, *simulation, ladder->station());
+        ladder->setLiveState(&m_live);
+        m_liveLadder = ladder;
+    } else if (m_liveLadder && (!simulated || ladder->document() != m_session.document())) {
+        m_liveLadder->setLiveState(nullptr);
+        m_liveLadder = nullptr;
+    }
+    if (shown == m_window->variablesPage())
+        m_window->variablesPage()->refreshStatus();
+
+    const int station = m_window->currentPage().station >= 0 ? m_window->currentPage().station
+                        : simulation->stations().empty()     ? 0
+                                                             : simulation->stations().front();
+    if (simulation->unit(station)) {
+        const auto code =
+            simulation->value({lang::AddressKind::SystemRegister, station, kErrorCodeRegister});
+        m_unitCode->setText(unitCodeText(station, static_cast<int>(code)));
+        QPalette palette = m_unitCode->palette();
+        palette.setColor(QPalette::WindowText,
+                         code == 0 ? okColor(palette) : errorTextColor(palette));
+        m_unitCode->setPalette(palette);
+    }
+}
+
+void SimulationMode::operandClicked(const QString& spelled) {
+    const lang::Address address = addressOf(spelled);
+    if (!address.valid() || !m_session.isActive())
+        return;
+    if (!m_session.toggle(address))
+        message(tr("%1 is not an input: right-click it to force it.").arg(spelled));
+}
+
+void SimulationMode::showOperandMenu(const QString& spelled, const QPoint& globalPosition) {
+    const lang::Address address = addressOf(spelled);
+    if (!address.valid() || !m_session.isActive())
+        return;
+    const QString name = QString::fromStdString(lang::toString(address));
+    QMenu menu(m_window);
+    menu.setObjectName(QStringLiteral("forceMenu"));
+    if (address.isBit()) {
+        connect(menu.addAction(tr("Force %1 to &0").arg(name)), &QAction::triggered, this,
+                [this, address] { m_session.force(address, 0); });
+        connect(menu.addAction(tr("Force %1 to &1").arg(name)), &QAction::triggered, this,
+                [this, address] { m_session.force(address, 1); });
+    }
+    connect(menu.addAction(tr("Force %1 to a &Value...").arg(name)), &QAction::triggered, this,
+            [this, address, name] {
+                bool ok = false;
+                const int value =
+                    QInputDialog::getInt(m_window, tr("Force"), tr("Value of %1:").arg(name),
+                                         static_cast<int>(m_session.simulation()->value(address)),
+                                         -2147483647, 2147483647, 1, &ok);
+                if (ok)
+                    m_session.force(address, value);
+            });
+    QAction* release = menu.addAction(tr("&Release %1").arg(name));
+    release->setEnabled(m_session.isForced(address));
+    connect(release, &QAction::triggered, this, [this, address] { m_session.release(address); });
+    menu.addSeparator();
+    connect(menu.addAction(tr("&Watch %1").arg(name)), &QAction::triggered, this, [this, name] {
+        m_watch->add(name);
+        m_watchDock->show();
+        m_watchDock->raise();
+    });
+    menu.exec(globalPosition);
+}
+
+} // namespace rs::ui

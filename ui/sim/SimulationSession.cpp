@@ -1,0 +1,311 @@
+#include "SimulationSession.h"
+
+#include "ProjectDocument.h"
+#include "compiler/Compiler.h"
+#include "project/ProjectFile.h"
+#include "project/RemanentVariables.h"
+#include "project/VariableTable.h"
+#include "sim/Scenario.h"
+
+#include <QFileInfo>
+
+#include <set>
+
+namespace rs::ui {
+
+namespace {
+
+// The clock's timer: often enough for real time at a 10 ms cycle.
+constexpr int kTickMs = 5;
+// Scans run on the window's thread, so a tick may take only this long,
+// leaving the rest of the time to painting and the user.
+constexpr std::int64_t kTickBudgetMs = 4;
+constexpr int kMaxScansPerTick = 2000;
+
+std::unique_ptr<sim::Simulation> powerOn(const std::vector<compiler::UnitImage>& images,
+                                         const project::Project& project) {
+    auto simulation = std::make_unique<sim::Simulation>(images);
+    for (int station : simulation->stations()) {
+        const std::set<lang::Address> remanent = project::remanentOf(project, station);
+        simulation->setRemanent(station, {remanent.begin(), remanent.end()});
+    }
+    simulation->restart();
+    return simulation;
+}
+
+} // namespace
+
+SimulationSession::SimulationSession(QObject* parent) : QObject(parent) {
+    m_ticks.setInterval(kTickMs);
+    m_ticks.setTimerType(Qt::PreciseTimer);
+    connect(&m_ticks, &QTimer::timeout, this, &SimulationSession::tick);
+    m_wall.start();
+}
+
+SimulationSession::~SimulationSession() = default;
+
+QString SimulationSession::compile(ProjectDocument* document) {
+    if (!document)
+        return tr("No project is open.");
+    if (document->isDamaged())
+        return tr("The project's text has errors; fix them before simulating.");
+    compiler::CompileResult result = compiler::compile(document->project());
+    if (result.errors())
+        return tr("The project has %n error(s); compile it (F7) to see them.", nullptr,
+                  result.errors());
+    if (result.images.empty())
+        return tr("The project has no Pluto to simulate.");
+    if (m_document != document) {
+        if (m_document)
+            disconnect(m_document, nullptr, this, nullptr);
+        m_document = document;
+        connect(document, &ProjectDocument::changed, this, [this] {
+            end();
+            emit endedBecause(tr("The project changed, so the simulation ended. Start it again "
+                                 "to simulate the new version."));
+        });
+        connect(document, &QObject::destroyed, this, [this] {
+            end();
+            emit endedBecause(tr("The project was closed, so the simulation ended."));
+        });
+    }
+    m_images = std::move(result.images);
+    return {};
+}
+
+QString SimulationSession::begin(ProjectDocument* document) {
+    if (isActive() && document == m_document)
+        return {};
+    end();
+    if (QString error = compile(document); !error.isEmpty())
+        return error;
+    m_simulation = powerOn(m_images, document->project());
+    m_recorder.clear();
+    m_recorder.sample(*m_simulation);
+    emit stateChanged();
+    emit forcesChanged();
+    emit updated();
+    return {};
+}
+
+void SimulationSession::end() {
+    m_ticks.stop();
+    if (m_document)
+        disconnect(m_document, nullptr, this, nullptr);
+    m_document = nullptr;
+    if (!m_simulation)
+        return;
+    m_simulation.reset();
+    m_images.clear();
+    emit stateChanged();
+    emit forcesChanged();
+    emit updated();
+}
+
+ProjectDocument* SimulationSession::document() const {
+    return m_document;
+}
+
+SimulationSession::State SimulationSession::state() const {
+    if (!m_simulation)
+        return State::Off;
+    return m_ticks.isActive() ? State::Running : State::Stopped;
+}
+
+void SimulationSession::start() {
+    if (!m_simulation || m_ticks.isActive())
+        return;
+    m_pacer.start(wallMs(), m_simulation->timeMs());
+    m_lastUpdateMs = wallMs();
+    m_ticks.start();
+    emit stateChanged();
+}
+
+void SimulationSession::stop() {
+    if (!m_ticks.isActive())
+        return;
+    m_ticks.stop();
+    emit stateChanged();
+    emit updated();
+}
+
+void SimulationSession::singleScan() {
+    if (!m_simulation)
+        return;
+    stop();
+    scanOnce();
+    emit updated();
+}
+
+void SimulationSession::reset() {
+    if (!m_simulation)
+        return;
+    m_simulation->restart();
+    m_pacer.start(wallMs(), 0);
+    m_recorder.clear();
+    m_recorder.sample(*m_simulation);
+    emit updated();
+}
+
+void SimulationSession::setSpeed(double speed) {
+    m_pacer.setSpeed(speed, wallMs(), m_simulation ? m_simulation->timeMs() : 0);
+}
+
+void SimulationSession::setUpdateInterval(int ms) {
+    m_updateMs = std::max(ms, 1);
+}
+
+void SimulationSession::scanOnce() {
+    m_simulation->scan();
+    m_recorder.sample(*m_simulation);
+}
+
+void SimulationSession::tick() {
+    const std::int64_t begun = wallMs();
+    const int due =
+        m_pacer.scansDue(begun, m_simulation->timeMs(), m_simulation->cycleMs(), kMaxScansPerTick);
+    for (int i = 0; i < due; ++i) {
+        scanOnce();
+        // Behind the clock (or as fast as possible): the pacer drops what is left over.
+        if (wallMs() - begun >= kTickBudgetMs)
+            break;
+    }
+    const std::int64_t now = wallMs();
+    if (now - m_lastUpdateMs >= m_updateMs) {
+        m_lastUpdateMs = now;
+        emit updated();
+    }
+}
+
+void SimulationSession::changed() {
+    emit forcesChanged();
+    emit updated();
+}
+
+void SimulationSession::set(const lang::Address& address, std::int64_t value) {
+    if (!m_simulation)
+        return;
+    m_recorder.add(address, m_simulation.get());
+    m_simulation->set(address, value);
+    changed();
+}
+
+void SimulationSession::force(const lang::Address& address, std::int64_t value) {
+    if (!m_simulation)
+        return;
+    m_recorder.add(address, m_simulation.get());
+    m_simulation->force(address, value);
+    changed();
+}
+
+void SimulationSession::release(const lang::Address& address) {
+    if (!m_simulation)
+        return;
+    m_simulation->release(address);
+    changed();
+}
+
+void SimulationSession::releaseAll() {
+    for (const auto& [address, value] : forces())
+        m_simulation->release(address);
+    changed();
+}
+
+bool SimulationSession::toggle(const lang::Address& address) {
+    if (!m_simulation || !address.isBit())
+        return false;
+    const std::int64_t flipped = m_simulation->value(address) ? 0 : 1;
+    if (isForced(address))
+        force(address, flipped);
+    else if (sim::isOutsideValue(address))
+        set(address, flipped);
+    else
+        return false;
+    return true;
+}
+
+bool SimulationSession::isForced(const lang::Address& address) const {
+    const sim::UnitEngine* unit = m_simulation ? m_simulation->unit(address.unit) : nullptr;
+    return unit && unit->forces().count(address) != 0;
+}
+
+std::vector<std::pair<lang::Address, std::int64_t>> SimulationSession::forces() const {
+    std::vector<std::pair<lang::Address, std::int64_t>> all;
+    if (!m_simulation)
+        return all;
+    for (int station : m_simulation->stations())
+        for (const auto& force : m_simulation->unit(station)->forces())
+            all.push_back(force);
+    return all;
+}
+
+bool SimulationSession::resolve(const QString& word, lang::Address& address, QString& error) const {
+    if (!m_document) {
+        error = tr("The simulation is not running.");
+        return false;
+    }
+    std::string message;
+    if (sim::OperandNames(m_document->project())
+            .resolve(word.trimmed().toStdString(), address, message))
+        return true;
+    error = QString::fromStdString(message);
+    return false;
+}
+
+QStringList SimulationSession::operandWords() const {
+    std::set<QString> words;
+    if (m_document) {
+        const project::Project& project = m_document->project();
+        for (int station : project.stations())
+            for (const lang::Address& address : project::namedAddresses(project, station))
+                words.insert(QString::fromStdString(project::variableName(project, address)));
+    }
+    for (const auto& image : m_images)
+        for (const auto& instruction : image.code)
+            if (instruction.operand.valid())
+                words.insert(QString::fromStdString(lang::toString(instruction.operand)));
+    return {words.begin(), words.end()};
+}
+
+SimulationSession::ScenarioResult SimulationSession::runScenario(ProjectDocument* document,
+                                                                 const QString& path) {
+    ScenarioResult result;
+    result.path = path;
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        result.error = file.error;
+        return result;
+    }
+    if (!isActive() || document != m_document) {
+        if (QString error = begin(document); !error.isEmpty()) {
+            result.error = error;
+            return result;
+        }
+    }
+    stop();
+    const sim::Scenario scenario =
+        sim::parseScenario(file.text, sim::OperandNames(document->project()));
+    m_simulation = powerOn(m_images, document->project());
+    for (const lang::Address& address : sim::traceSignals(m_images, sim::touchedBy(scenario)))
+        m_recorder.add(address);
+    m_recorder.clear();
+    const std::string name = QFileInfo(path).fileName().toStdString();
+    const sim::ScenarioReport report = sim::runScenario(
+        name, scenario, *m_simulation, nullptr,
+        [this](const sim::Simulation& simulation) { m_recorder.sample(simulation); });
+    result.passed = report.passed;
+    result.failed = report.failed;
+    for (std::size_t i = 0; i < report.diagnostics.size() && i < scenario.diagnostics.size(); ++i)
+        result.failures.push_back(
+            {scenario.diagnostics[i].line, QString::fromStdString(report.diagnostics[i])});
+    for (std::size_t i = 0; i < report.failures.size(); ++i)
+        result.failures.push_back(
+            {report.failureLines[i], QString::fromStdString(report.failures[i])});
+    m_pacer.start(wallMs(), m_simulation->timeMs());
+    emit stateChanged();
+    emit forcesChanged();
+    emit updated();
+    return result;
+}
+
+} // namespace rs::ui

@@ -1,0 +1,137 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "WaveformRecorder.h"
+#include "compiler/Image.h"
+#include "sim/RealTimePacer.h"
+#include "sim/ScenarioRunner.h"
+#include "sim/Simulation.h"
+#endif
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QStringList>
+#include <QTimer>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace rs::ui {
+
+class ProjectDocument;
+
+// The project's units running in the simulator behind the window. It compiles
+// the project, runs the scans on a timer paced to the wall clock (real time,
+// faster, or as fast as the machine goes), and tells the views when to show
+// the state: at the preference's screen update interval while running, and
+// at once after a user's single scan, reset, set or force.
+//
+// The simulation is of the project as it was compiled: a change of the
+// project ends it (the views go back to editing), and nothing here ever
+// changes the project. Forces live in the simulation only.
+class SimulationSession : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Off, Stopped, Running };
+    // RealTimePacer's speed factors.
+    static constexpr double kRealTime = 1.0;
+    static constexpr double kTenTimes = 10.0;
+    static constexpr double kAsFastAsPossible = 0.0;
+
+    explicit SimulationSession(QObject* parent = nullptr);
+    ~SimulationSession() override;
+
+    // Compiles the project and powers its units on, stopped. Returns why it
+    // cannot (the project has errors), empty when the simulation began.
+    QString begin(ProjectDocument* document);
+    // Back to editing: the simulation and its forces are dropped.
+    void end();
+
+    void start();
+    void stop();
+    void singleScan();
+    // Power on again at time 0; forces stay.
+    void reset();
+
+    void setSpeed(double speed);
+    double speed() const { return m_pacer.speed(); }
+    void setUpdateInterval(int ms);
+    int updateInterval() const { return m_updateMs; }
+
+    State state() const;
+    bool isActive() const { return m_simulation != nullptr; }
+    ProjectDocument* document() const;
+    const sim::Simulation* simulation() const { return m_simulation.get(); }
+    const std::vector<compiler::UnitImage>& images() const { return m_images; }
+
+    // As Simulation::set: an input takes the value as from the outside world,
+    // anything else is forced.
+    void set(const lang::Address& address, std::int64_t value);
+    void force(const lang::Address& address, std::int64_t value);
+    void release(const lang::Address& address);
+    void releaseAll();
+    // A click on a contact: an input or a forced variable changes between 0
+    // and 1; false for anything else (it needs a force first).
+    bool toggle(const lang::Address& address);
+    bool isForced(const lang::Address& address) const;
+    // Every force of every unit, by address.
+    std::vector<std::pair<lang::Address, std::int64_t>> forces() const;
+
+    // Resolves a symbolic name or an address as a scenario does; the message
+    // when it cannot.
+    bool resolve(const QString& word, lang::Address& address, QString& error) const;
+    // The project's symbolic names and every operand of the compiled code, for completion.
+    QStringList operandWords() const;
+
+    // What the waveform shows.
+    WaveformRecorder& recorder() { return m_recorder; }
+    const WaveformRecorder& recorder() const { return m_recorder; }
+
+    struct ScenarioResult {
+        struct Line {
+            int line = 0;
+            QString text; // the failure or diagnostic as the command line prints it
+        };
+        QString path;
+        int passed = 0;
+        int failed = 0;
+        std::vector<Line> failures; // failures and syntax errors, in file order
+        QString error;              // the file cannot be read, or the project does not compile
+    };
+    // Runs a scenario file from power on in a fresh simulation of the
+    // project, which then shows the state the scenario ends in (stopped).
+    // The waveform records the run: everything the scenario touches and the
+    // program writes.
+    ScenarioResult runScenario(ProjectDocument* document, const QString& path);
+
+signals:
+    void stateChanged();
+    // Time to show the state again.
+    void updated();
+    void forcesChanged();
+    // The simulation ended without the user asking (the project changed or closed).
+    void endedBecause(const QString& reason);
+
+private:
+    QString compile(ProjectDocument* document);
+    void tick();
+    void scanOnce();
+    void changed();
+    std::int64_t wallMs() const { return m_wall.elapsed(); }
+
+    QPointer<ProjectDocument> m_document;
+    std::vector<compiler::UnitImage> m_images;
+    std::unique_ptr<sim::Simulation> m_simulation;
+    sim::RealTimePacer m_pacer;
+    WaveformRecorder m_recorder;
+    QElapsedTimer m_wall;
+    QTimer m_ticks;
+    std::int64_t m_lastUpdateMs = 0;
+    int m_updateMs = 100;
+};
+
+} // namespace rs::ui

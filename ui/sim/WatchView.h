@@ -1,0 +1,56 @@
+#pragma once
+
+// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
+// it needs only the names.
+#ifndef Q_MOC_RUN
+#include "lang/Address.h"
+#endif
+
+#include <QWidget>
+
+#include <vector>
+
+class QCompleter;
+class QLabel;
+class QLineEdit;
+class QTableWidget;
+class QTableWidgetItem;
+
+namespace rs::ui {
+
+class SimulationSession;
+
+// The Watch dock: variables the user chose, by symbolic name or address
+// (completed from the project), with their live values. Typing a value in
+// the Value column sets an input or forces any other variable.
+class WatchView : public QWidget {
+    Q_OBJECT
+public:
+    enum Column { VariableColumn, NameColumn, ValueColumn };
+
+    explicit WatchView(SimulationSession* session, QWidget* parent = nullptr);
+
+    // Adds the variable by name or address; the reason when it cannot.
+    QString add(const QString& word);
+    void remove(const lang::Address& address);
+    const std::vector<lang::Address>& variables() const { return m_variables; }
+
+    QLineEdit* input() const { return m_input; }
+    QTableWidget* table() const { return m_table; }
+    void refresh();
+
+private:
+    void rebuild();
+    void valueEdited(QTableWidgetItem* item);
+    void showMenu(const QPoint& at);
+
+    SimulationSession* m_session;
+    QLineEdit* m_input;
+    QCompleter* m_completer;
+    QLabel* m_message;
+    QTableWidget* m_table;
+    std::vector<lang::Address> m_variables;
+    bool m_refreshing = false;
+};
+
+} // namespace rs::ui

@@ -1,0 +1,118 @@
+#include "WaveformPanel.h"
+
+#include "SimulationSession.h"
+#include "StatusColors.h"
+#include "WaveformView.h"
+#include "project/ProjectFile.h"
+
+#include <QCompleter>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QStringListModel>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
+    : QWidget(parent), m_session(session), m_view(new WaveformView(&session->recorder(), this)),
+      m_input(new QLineEdit(this)), m_completer(new QCompleter(this)), m_message(new QLabel(this)),
+      m_remove(new QToolButton(this)) {
+    m_input->setObjectName(QStringLiteral("waveformInput"));
+    m_input->setPlaceholderText(tr("Add a variable to plot"));
+    m_input->setMinimumWidth(160);
+    m_completer->setCaseSensitivity(Qt::CaseInsensitive);
+    m_completer->setFilterMode(Qt::MatchContains);
+    m_completer->setModel(new QStringListModel(m_completer));
+    m_input->setCompleter(m_completer);
+    markAsError(m_message);
+    m_message->hide();
+
+    auto button = [this](const QString& text, const QString& tip) {
+        auto* created = new QToolButton(this);
+        created->setText(text);
+        created->setToolTip(tip);
+        return created;
+    };
+    m_remove->setText(tr("Remove"));
+    m_remove->setToolTip(tr("Stop plotting the chosen variable"));
+    m_remove->setEnabled(false);
+    QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
+    QToolButton* zoomOut =
+        button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
+    QToolButton* fit = button(tr("Fit"), tr("Show the whole recording"));
+    QToolButton* exportButton = button(tr("Export VCD..."), tr("Write the recording as a Value "
+                                                               "Change Dump, for GTKWave"));
+    exportButton->setObjectName(QStringLiteral("exportVcdButton"));
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_input, 1);
+    for (QToolButton* b : {m_remove, zoomIn, zoomOut, fit, exportButton})
+        top->addWidget(b);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(top);
+    layout->addWidget(m_message);
+    layout->addWidget(m_view, 1);
+
+    connect(m_input, &QLineEdit::returnPressed, this, [this] {
+        const QString error = add(m_input->text());
+        m_message->setText(error);
+        m_message->setVisible(!error.isEmpty());
+        if (error.isEmpty())
+            m_input->clear();
+    });
+    connect(m_remove, &QToolButton::clicked, this, [this] {
+        const int row = m_view->selectedRow();
+        const auto& traces = m_session->recorder().traces();
+        if (row < 0 || row >= static_cast<int>(traces.size()))
+            return;
+        m_session->recorder().remove(traces[static_cast<std::size_t>(row)].address);
+        m_view->recordingChanged();
+        m_remove->setEnabled(false);
+    });
+    connect(m_view, &WaveformView::selectionChanged, this,
+            [this](int row) { m_remove->setEnabled(row >= 0); });
+    connect(zoomIn, &QToolButton::clicked, m_view, &WaveformView::zoomIn);
+    connect(zoomOut, &QToolButton::clicked, m_view, &WaveformView::zoomOut);
+    connect(fit, &QToolButton::clicked, m_view, &WaveformView::zoomToFit);
+    connect(exportButton, &QToolButton::clicked, this, [this] {
+        const QString error = exportVcd();
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Export VCD"), error);
+    });
+    connect(m_session, &SimulationSession::updated, m_view, &WaveformView::recordingChanged);
+    connect(m_session, &SimulationSession::stateChanged, this, [this] {
+        static_cast<QStringListModel*>(m_completer->model())
+            ->setStringList(m_session->operandWords());
+        m_view->recordingChanged();
+    });
+}
+
+QString WaveformPanel::add(const QString& word) {
+    lang::Address address;
+    QString error;
+    if (!m_session->resolve(word, address, error))
+        return error;
+    m_session->recorder().add(address, m_session->simulation());
+    m_view->recordingChanged();
+    return {};
+}
+
+QString WaveformPanel::exportVcd(const QString& requested) {
+    if (m_session->recorder().isEmpty())
+        return tr("Nothing is recorded yet: start the simulation or run a scenario.");
+    QString path = requested;
+    if (path.isEmpty()) {
+        path = QFileDialog::getSaveFileName(this, tr("Export VCD"), QStringLiteral("waveform.vcd"),
+                                            tr("Value Change Dumps (*.vcd);;All files (*)"));
+        if (path.isEmpty())
+            return {};
+    }
+    return project::writeTextFile(path, m_session->recorder().vcd("Rungsmith simulation"));
+}
+
+} // namespace rs::ui
