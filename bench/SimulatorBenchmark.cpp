@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -68,18 +69,25 @@ void BM_NativeScan(benchmark::State& state) {
 }
 BENCHMARK(BM_NativeScan)->Unit(benchmark::kMicrosecond);
 
-// Both sides must compute the same thing, or the ratio means nothing.
+// Both sides must compute the same thing, or the ratio means nothing. A third
+// simulation marks conduction while scanning: the measured one replays its
+// scans for conduction(), which must give the same marks.
 bool sameResults(int scans) {
     rs::sim::Simulation simulation(images(), kCycleMs);
+    rs::sim::Simulation marking(images(), kCycleMs);
+    for (int station : marking.stations())
+        marking.unit(station)->setEagerConduction(true);
     auto plant = std::make_unique<rs::native::Plant>();
     for (const auto& image : images())
         plant->memory[image.station].systemRegisters[40] = 240;
     for (int scan = 0; scan < scans; ++scan) {
         for (int station : simulation.stations()) {
             driveInputs(simulation.unit(station)->memory(), static_cast<std::uint64_t>(scan));
+            driveInputs(marking.unit(station)->memory(), static_cast<std::uint64_t>(scan));
             driveInputs(plant->memory[station], static_cast<std::uint64_t>(scan));
         }
         simulation.scan();
+        marking.scan();
         rs::native::scanPlant(*plant, static_cast<std::int64_t>(scan) * kCycleMs, kCycleMs);
         for (int station : simulation.stations()) {
             const auto& vm = simulation.unit(station)->memory();
@@ -90,6 +98,15 @@ bool sameResults(int scans) {
                             sizeof vm.globalMemories) ||
                 std::memcmp(vm.registers.data(), native.registers.data(), sizeof vm.registers)) {
                 std::fprintf(stderr, "simulator and native code differ: unit %d after scan %d\n",
+                             station, scan);
+                return false;
+            }
+            const auto* marked = marking.unit(station);
+            if (std::memcmp(&vm, &marked->memory(), sizeof vm) ||
+                simulation.unit(station)->conduction() != marked->conduction()) {
+                std::fprintf(stderr,
+                             "conduction on demand differs from marking while scanning: unit %d "
+                             "after scan %d\n",
                              station, scan);
                 return false;
             }
@@ -124,12 +141,36 @@ private:
 
 } // namespace
 
+// Only scans, for counting instructions with callgrind (docs/performance.md).
+void scanOnly(bool native, int scans) {
+    rs::sim::Simulation simulation(images(), kCycleMs);
+    auto plant = std::make_unique<rs::native::Plant>();
+    for (int scan = 0; scan < scans; ++scan) {
+        for (int station : simulation.stations()) {
+            if (native)
+                driveInputs(plant->memory[station], static_cast<std::uint64_t>(scan));
+            else
+                driveInputs(simulation.unit(station)->memory(), static_cast<std::uint64_t>(scan));
+        }
+        if (native)
+            rs::native::scanPlant(*plant, static_cast<std::int64_t>(scan) * kCycleMs, kCycleMs);
+        else
+            simulation.scan();
+    }
+}
+
 int main(int argc, char** argv) {
+    if (argc == 3 &&
+        (std::strcmp(argv[1], "--scans") == 0 || std::strcmp(argv[1], "--native-scans") == 0)) {
+        scanOnly(std::strcmp(argv[1], "--native-scans") == 0, std::atoi(argv[2]));
+        return 0;
+    }
     const bool verifyOnly = argc > 1 && std::strcmp(argv[1], "--verify") == 0;
     if (!sameResults(verifyOnly ? 2000 : 300))
         return 1;
     if (verifyOnly) {
-        std::printf("simulator and native code agree on %zu units over 2000 scans\n",
+        std::printf("simulator and native code agree on %zu units over 2000 scans, and so do "
+                    "conduction on demand and marked while scanning\n",
                     images().size());
         return 0;
     }

@@ -3,6 +3,7 @@
 #include "lang/Ast.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace rs::sim {
@@ -80,6 +81,56 @@ enum Handler : std::uint8_t {
     HandlerCount
 };
 
+// runFast's handlers.
+enum FastHandler : std::uint8_t {
+    FRung,
+    FStart, // a rung and a contact on a byte
+    FStartNot,
+    FAnd, // a contact on a byte
+    FAndNot,
+    FContact,
+    FEdge,
+    FEdgeStart, // a rung and an edge
+    FByteEdge,
+    FByteEdgeStart,
+    FContactRegisterBit,
+    FTimer,
+    FLoadA,
+    FLoadAWord,
+    FLoadAConstant,
+    FLoadB,
+    FLoadBWord,
+    FLoadBConstant,
+    FEqual,
+    FGreater,
+    FLess,
+    FGreaterEqual,
+    FLessEqual,
+    FBranchOpen,
+    FBranchNext,
+    FBranchClose,
+    FCoilByte,
+    FCoilByteRung, // a coil on a byte and the next statement's rung
+    FCoil,
+    FCoilRegisterBit,
+    FSetByte,
+    FSetByteRung,
+    FSet,
+    FResetByte,
+    FResetByteRung,
+    FReset,
+    FToggle,
+    FJump,
+    FSequenceReset,
+    FArith,
+    FArithRegister, // on a register, not a division
+    FBitStatements, // a row of BitStatements
+    FBitStatementsWithoutEdges,
+    FWordStatements, // a row of WordStatements
+    FEnd,
+    FastHandlerCount
+};
+
 bool isWordKind(AddressKind kind) {
     switch (kind) {
     case AddressKind::Register:
@@ -102,7 +153,7 @@ UnitEngine::UnitEngine(compiler::UnitImage image, const Bus& published)
         if (sequence.stepIndex.empty())
             sequence.stepIndex.assign(kMaxStep + 1, -1);
         sequence.stepIndex[step.step] = static_cast<int>(m_steps.size());
-        m_steps.push_back({step.sequence, step.step, step.first, step.count});
+        m_steps.push_back({step.sequence, step.step, step.first, step.count, 0});
     }
     m_edges.resize(m_image.edges);
     m_timers.resize(m_image.timers);
@@ -120,12 +171,77 @@ int UnitEngine::activeStep(int sequence) const {
     return hasSequence(sequence) ? m_sequences[sequence].active : -1;
 }
 
-BitRef UnitEngine::decodeBit(const lang::Address& address, bool forWriting) {
-    if (address.unit != m_image.station) {
-        // Another unit's global variable, as it published it.
-        auto& remote = const_cast<UnitMemory&>(m_bus[static_cast<std::size_t>(address.unit) % 32]);
-        return bitRef(remote, address, false);
+namespace {
+
+// The bytes behind a reference, for copying another unit's variable.
+std::size_t sizeOf(const BitRef& ref) {
+    switch (ref.kind) {
+    case BitRef::Kind::Byte:
+        return 1;
+    case BitRef::Kind::RegisterBit:
+        return 2;
+    case BitRef::Kind::Analog:
+        return 4;
+    case BitRef::Kind::None:
+        break;
     }
+    return 0;
+}
+
+std::size_t sizeOf(const WordRef& ref) {
+    switch (ref.kind) {
+    case WordRef::Kind::Register:
+        return 2;
+    case WordRef::Kind::Double:
+    case WordRef::Kind::Wide:
+        return 4;
+    case WordRef::Kind::None:
+        break;
+    }
+    return 0;
+}
+
+const void* placeOf(const BitRef& ref) {
+    return ref.kind == BitRef::Kind::Byte          ? static_cast<const void*>(ref.byte)
+           : ref.kind == BitRef::Kind::RegisterBit ? static_cast<const void*>(ref.word)
+                                                   : static_cast<const void*>(ref.wide);
+}
+
+const void* placeOf(const WordRef& ref) {
+    return ref.kind == WordRef::Kind::Wide ? static_cast<const void*>(ref.wide)
+                                           : static_cast<const void*>(ref.word);
+}
+
+} // namespace
+
+UnitMemory& UnitEngine::remoteCopy(int station) {
+    auto& copy = m_remote[static_cast<std::size_t>(station) % 32];
+    if (!copy)
+        copy = std::make_unique<UnitMemory>();
+    return *copy;
+}
+
+template <typename Ref>
+Ref UnitEngine::readRemote(const lang::Address& address,
+                           Ref (*locate)(UnitMemory&, const lang::Address&)) {
+    const auto station = static_cast<std::size_t>(address.unit) % 32;
+    UnitMemory& copy = remoteCopy(address.unit);
+    const Ref ref = locate(copy, address);
+    if (const std::size_t size = sizeOf(ref)) {
+        const auto offset = static_cast<const std::uint8_t*>(placeOf(ref)) -
+                            reinterpret_cast<const std::uint8_t*>(&copy);
+        m_remoteCopies.push_back({reinterpret_cast<std::uint8_t*>(&copy) + offset,
+                                  reinterpret_cast<const std::uint8_t*>(&m_bus[station]) + offset,
+                                  size});
+    }
+    return ref;
+}
+
+BitRef UnitEngine::decodeBit(const lang::Address& address, bool forWriting) {
+    if (address.unit != m_image.station) // the compiler lets a unit only read others' variables
+        return readRemote<BitRef>(address, [](UnitMemory& memory, const lang::Address& a) {
+            return bitRef(memory, a, false);
+        });
     if (forWriting && m_forces.count(address))
         return bitRef(m_sink, address, true);
     return bitRef(m_memory, address, forWriting);
@@ -133,8 +249,7 @@ BitRef UnitEngine::decodeBit(const lang::Address& address, bool forWriting) {
 
 WordRef UnitEngine::decodeWord(const lang::Address& address) {
     if (address.unit != m_image.station)
-        return wordRef(const_cast<UnitMemory&>(m_bus[static_cast<std::size_t>(address.unit) % 32]),
-                       address);
+        return readRemote<WordRef>(address, wordRef);
     return wordRef(m_memory, address);
 }
 
@@ -238,6 +353,7 @@ std::uint8_t UnitEngine::handlerFor(const Decoded& d) {
 }
 
 void UnitEngine::decode() {
+    m_remoteCopies.clear();
     m_code.clear();
     m_code.reserve(m_image.code.size());
     for (const auto& in : m_image.code) {
@@ -269,6 +385,14 @@ void UnitEngine::decode() {
         d.handler = handlerFor(d);
         m_code.push_back(d);
     }
+    std::sort(m_remoteCopies.begin(), m_remoteCopies.end(),
+              [](const RemoteCopy& x, const RemoteCopy& y) { return x.to < y.to; });
+    m_remoteCopies.erase(std::unique(m_remoteCopies.begin(), m_remoteCopies.end(),
+                                     [](const RemoteCopy& x, const RemoteCopy& y) {
+                                         return x.to == y.to && x.size == y.size;
+                                     }),
+                         m_remoteCopies.end());
+    translate();
 }
 
 void UnitEngine::powerOn(const std::vector<lang::Address>& keep) {
@@ -287,6 +411,8 @@ void UnitEngine::powerOn(const std::vector<lang::Address>& keep) {
     std::fill(m_edges.begin(), m_edges.end(), EdgeState{});
     std::fill(m_timers.begin(), m_timers.end(), Timer{});
     std::fill(m_conduction.begin(), m_conduction.end(), Conduction::NotRun);
+    m_ranSteps.clear();
+    m_replayDue = false;
     m_scan = 0;
     applyForces();
 }
@@ -302,12 +428,16 @@ void UnitEngine::applyForces() {
 }
 
 void UnitEngine::force(const lang::Address& address, std::int64_t value) {
+    if (m_replayDue) // the last scan ran with the forces as they were
+        replay();
     m_forces[address] = value;
     write(address, value);
     decode();
 }
 
 void UnitEngine::release(const lang::Address& address) {
+    if (m_replayDue)
+        replay();
     if (m_forces.erase(address))
         decode();
 }
@@ -343,13 +473,28 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         sm[memory] = flashing(memory, timeMs);
     for (int station = 0; station < 32; ++station)
         sm[static_cast<std::size_t>(100 + station)] = m_present[static_cast<std::size_t>(station)];
-    // Only the steps that ran last time have marks to clear.
-    for (int index : m_ranSteps) {
-        const StepRun& step = m_steps[static_cast<std::size_t>(index)];
-        std::fill_n(m_conduction.begin() + step.first, step.count, Conduction::NotRun);
+    for (const RemoteCopy& copy : m_remoteCopies)
+        std::memcpy(copy.to, copy.from, copy.size);
+    if (m_eagerConduction) {
+        runSteps(true, cycleMs);
+        return;
     }
-    m_ranSteps.clear();
+    save(m_scanStart);
+    m_scanStart.cycleMs = cycleMs;
+    m_replayDue = true;
+    runSteps(false, cycleMs);
+}
 
+void UnitEngine::runSteps(bool marking, int cycleMs) {
+    if (marking) {
+        // Only the steps that ran last time have marks to clear.
+        for (int index : m_ranSteps) {
+            const StepRun& step = m_steps[static_cast<std::size_t>(index)];
+            std::fill_n(m_conduction.begin() + step.first, step.count, Conduction::NotRun);
+        }
+        m_ranSteps.clear();
+    }
+    auto& sm = m_memory.systemMemories;
     for (int number = 0; number < 10; ++number) {
         Sequence& sequence = m_sequences[static_cast<std::size_t>(number)];
         if (sequence.stepIndex.empty())
@@ -365,8 +510,13 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         sm[kStepNew] = sequence.stepNew;
         sequence.stepNew = false;
         const int stepIndex = sequence.stepIndex[static_cast<std::size_t>(sequence.active)];
-        runStep(stepIndex, pendingJump, cycleMs);
-        m_ranSteps.push_back(stepIndex);
+        if (marking) {
+            runStep(stepIndex, pendingJump, cycleMs);
+            m_ranSteps.push_back(stepIndex);
+        } else {
+            runFast(m_fast.data() + m_steps[static_cast<std::size_t>(stepIndex)].fastFirst,
+                    pendingJump, cycleMs);
+        }
         if (pendingJump >= 0 && !held) {
             leaveStep(sequence.stepIndex[sequence.active]);
             sequence.active = pendingJump;
@@ -375,11 +525,77 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
     }
 }
 
+void UnitEngine::save(ScanState& state) const {
+    state.memory = m_memory;
+    state.edges = m_edges;
+    state.timers = m_timers;
+    for (std::size_t i = 0; i < m_sequences.size(); ++i)
+        state.sequences[i] = m_sequences[i];
+    state.scan = m_scan;
+}
+
+void UnitEngine::restore(const ScanState& state) {
+    m_memory = state.memory;
+    m_edges = state.edges;
+    m_timers = state.timers;
+    for (std::size_t i = 0; i < m_sequences.size(); ++i)
+        static_cast<SequenceState&>(m_sequences[i]) = state.sequences[i];
+    m_scan = state.scan;
+}
+
+// The engine is deterministic, so running the last scan's steps again from the
+// state they started with, marking this time, gives exactly what they did.
+// Other units' variables come from m_remote, which only the next scan refreshes.
+void UnitEngine::replay() {
+    ScanState now;
+    save(now);
+    restore(m_scanStart);
+    runSteps(true, m_scanStart.cycleMs);
+    restore(now);
+    m_replayDue = false;
+}
+
+const std::vector<Conduction>& UnitEngine::conduction() const {
+    if (m_replayDue) // engines are only ever created non-const (Simulation owns them)
+        const_cast<UnitEngine*>(this)->replay();
+    return m_conduction;
+}
+
+void UnitEngine::setEagerConduction(bool eager) {
+    if (m_replayDue)
+        replay();
+    m_eagerConduction = eager;
+}
+
 void UnitEngine::leaveStep(int index) {
     const StepRun& step = m_steps[static_cast<std::size_t>(index)];
     for (std::uint32_t i = step.first; i < step.first + step.count; ++i)
         if (m_code[i].op == Op::Coil)
             m_code[i].writeBit(false);
+}
+
+// The power an edge occurrence passes: whether it sees its edge, negated if asked.
+unsigned UnitEngine::edge(const Decoded& in) {
+    EdgeState& state = m_edges[in.slot];
+    const bool value = in.readBit() != bool(in.flags & compiler::OperandNegated);
+    bool seen = false;
+    if (state.seen)
+        seen = (in.flags & compiler::Rising) ? (value && !state.last) : (!value && state.last);
+    state.seen = true;
+    state.last = value;
+    return static_cast<unsigned>(seen) ^ (in.flags & compiler::Negated);
+}
+
+// edge() for a byte operand, without branches on the data.
+unsigned UnitEngine::byteEdge(const ByteEdge& e) {
+    const unsigned value = static_cast<unsigned>(*e.operand != 0) ^ e.operandNegated;
+    const unsigned last = e.state->last;
+    // Rising: the value is 1 and was 0; falling: it was 1 and is 0.
+    const unsigned toward = e.rising ? value : last;
+    const unsigned seen = e.state->seen & (value ^ last) & toward;
+    e.state->seen = true;
+    e.state->last = value != 0;
+    return seen ^ e.negated;
 }
 
 // Threaded dispatch (GCC's labels as values): each handler jumps straight to
@@ -433,17 +649,9 @@ contactByte:
 contact:
     power &= static_cast<unsigned>(in->readBit()) ^ RS_NEGATED;
     RS_NEXT();
-edge : {
-    EdgeState& state = m_edges[in->slot];
-    const bool value = in->readBit() != bool(in->flags & compiler::OperandNegated);
-    bool seen = false;
-    if (state.seen)
-        seen = (in->flags & compiler::Rising) ? (value && !state.last) : (!value && state.last);
-    state.seen = true;
-    state.last = value;
-    power &= static_cast<unsigned>(seen) ^ RS_NEGATED;
+edge:
+    power &= edge(*in);
     RS_NEXT();
-}
 timer:
     power = timer(*in, power != 0, cycleMs);
     RS_NEXT();
@@ -523,6 +731,738 @@ arith:
     RS_NEXT();
 #undef RS_BYTE
 #undef RS_NEGATED
+#undef RS_NEXT
+}
+#pragma GCC diagnostic pop
+
+void UnitEngine::translate() {
+    const void* const* table = nullptr;
+    int unused = 0;
+    runFast(nullptr, unused, 0, &table);
+    m_fast.clear();
+    m_byteEdges.clear();
+    // runFast points into m_byteEdges: it must not grow once filled.
+    m_byteEdges.reserve(static_cast<std::size_t>(std::count_if(
+        m_code.begin(), m_code.end(), [](const Decoded& d) { return d.handler == HEdge; })));
+    const std::size_t rungs = static_cast<std::size_t>(std::count_if(
+        m_code.begin(), m_code.end(), [](const Decoded& d) { return d.handler == HRung; }));
+    m_bitStatements.clear();
+    m_bitStatements.reserve(rungs);
+    m_bitStatementRows.clear();
+    m_bitStatementRows.reserve(rungs);
+    m_wordStatements.clear();
+    m_wordStatements.reserve(rungs);
+    m_wordStatementRows.clear();
+    m_wordStatementRows.reserve(rungs);
+    std::vector<FastHandler> kinds; // of m_fast's entries
+    for (StepRun& step : m_steps) {
+        step.fastFirst = static_cast<std::uint32_t>(m_fast.size());
+        const std::size_t begin = m_fast.size();
+        const auto last = [&] {
+            return m_fast.size() > begin ? kinds.back() : FEnd;
+        };
+        const auto replaceLast = [&](FastHandler kind) {
+            kinds.back() = kind;
+            m_fast.back().handler = table[kind];
+        };
+        for (std::uint32_t i = step.first; i < step.first + step.count; ++i) {
+            Decoded& d = m_code[i];
+            const bool negated = d.flags & compiler::Negated;
+            void* arg = &d;
+            FastHandler kind = FEnd;
+            if (d.handler == HRung) {
+                std::uint32_t end = i + 1;
+                while (end < step.first + step.count && m_code[end].handler != HRung)
+                    ++end;
+                BitStatement statement{};
+                if (toBitStatement(i, end, statement)) {
+                    m_bitStatements.push_back(statement);
+                    if (last() == FBitStatements) {
+                        m_bitStatementRows.back().end = &m_bitStatements.back() + 1;
+                    } else {
+                        m_bitStatementRows.push_back(
+                            {&m_bitStatements.back(), &m_bitStatements.back() + 1});
+                        m_fast.push_back({table[FBitStatements], &m_bitStatementRows.back()});
+                        kinds.push_back(FBitStatements);
+                    }
+                    i = end - 1;
+                    continue;
+                }
+                WordStatement word{};
+                if (toWordStatement(i, end, word)) {
+                    m_wordStatements.push_back(word);
+                    if (last() == FWordStatements) {
+                        m_wordStatementRows.back().end = &m_wordStatements.back() + 1;
+                    } else {
+                        m_wordStatementRows.push_back(
+                            {&m_wordStatements.back(), &m_wordStatements.back() + 1});
+                        m_fast.push_back({table[FWordStatements], &m_wordStatementRows.back()});
+                        kinds.push_back(FWordStatements);
+                    }
+                    i = end - 1;
+                    continue;
+                }
+            }
+            switch (static_cast<Handler>(d.handler)) {
+            case HRung:
+                // Power is 1 after a byte output when the next statement starts.
+                if (last() == FCoilByte || last() == FSetByte || last() == FResetByte) {
+                    replaceLast(static_cast<FastHandler>(last() + 1));
+                    continue;
+                }
+                kind = FRung;
+                break;
+            case HContactByte:
+                arg = d.ref;
+                kind = negated ? FAndNot : FAnd;
+                if (last() == FRung) {
+                    m_fast.pop_back();
+                    kinds.pop_back();
+                    kind = negated ? FStartNot : FStart;
+                }
+                break;
+            case HContact:
+                kind = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::RegisterBit)
+                           ? FContactRegisterBit
+                           : FContact;
+                break;
+            case HEdge: {
+                const bool byte = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+                if (byte) {
+                    m_byteEdges.push_back(
+                        {static_cast<const std::uint8_t*>(d.ref), &m_edges[d.slot],
+                         static_cast<std::uint8_t>((d.flags & compiler::OperandNegated) != 0),
+                         static_cast<std::uint8_t>((d.flags & compiler::Rising) != 0),
+                         static_cast<std::uint8_t>(negated)});
+                    arg = &m_byteEdges.back();
+                }
+                kind = byte ? FByteEdge : FEdge;
+                if (last() == FRung) {
+                    m_fast.pop_back();
+                    kinds.pop_back();
+                    kind = byte ? FByteEdgeStart : FEdgeStart;
+                }
+                break;
+            }
+            case HTimer:
+                kind = FTimer;
+                break;
+            case HLoadA:
+            case HLoadB: {
+                const bool isA = d.handler == HLoadA;
+                if (d.flags & compiler::ConstantOperand) {
+                    arg = &d.constant;
+                    kind = isA ? FLoadAConstant : FLoadBConstant;
+                } else if (d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register)) {
+                    arg = d.ref;
+                    kind = isA ? FLoadAWord : FLoadBWord;
+                } else {
+                    kind = isA ? FLoadA : FLoadB;
+                }
+                break;
+            }
+            case HEqual:
+            case HGreater:
+            case HLess:
+            case HGreaterEqual:
+            case HLessEqual:
+                kind = static_cast<FastHandler>(FEqual + (d.handler - HEqual));
+                break;
+            case HBranchOpen:
+                kind = FBranchOpen;
+                break;
+            case HBranchNext:
+                kind = FBranchNext;
+                break;
+            case HBranchClose:
+                kind = FBranchClose;
+                break;
+            case HCoilByte:
+                arg = d.ref;
+                kind = FCoilByte;
+                break;
+            case HCoil:
+                kind = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::RegisterBit)
+                           ? FCoilRegisterBit
+                           : FCoil;
+                break;
+            case HSetByte:
+                arg = d.ref;
+                kind = FSetByte;
+                break;
+            case HSet:
+                kind = FSet;
+                break;
+            case HResetByte:
+                arg = d.ref;
+                kind = FResetByte;
+                break;
+            case HReset:
+                kind = FReset;
+                break;
+            case HToggle:
+                kind = FToggle;
+                break;
+            case HJump:
+                kind = FJump;
+                break;
+            case HSequenceReset:
+                kind = FSequenceReset;
+                break;
+            case HArith: {
+                const auto op = static_cast<ArithOp>(d.aux);
+                const bool plain =
+                    d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register) &&
+                    !d.dropWrite && op != ArithOp::Div && op != ArithOp::DivAB;
+                kind = plain ? FArithRegister : FArith;
+                break;
+            }
+            case HandlerCount:
+                break;
+            }
+            m_fast.push_back({table[kind], arg});
+            kinds.push_back(kind);
+        }
+        m_fast.push_back({table[FEnd], nullptr});
+        kinds.push_back(FEnd);
+    }
+    for (std::size_t i = 0; i < m_fast.size(); ++i) {
+        if (kinds[i] != FBitStatements)
+            continue;
+        const auto& row = *static_cast<const Row<BitStatement>*>(m_fast[i].arg);
+        if (std::all_of(row.first, row.end,
+                        [this](const BitStatement& st) { return st.edge == &m_noEdge; }))
+            m_fast[i].handler = table[FBitStatementsWithoutEdges];
+    }
+}
+
+bool UnitEngine::toBitStatement(std::uint32_t first, std::uint32_t end, BitStatement& out) {
+    static const std::uint8_t one = 1;
+    static const std::uint8_t zero = 0;
+    static std::uint8_t nowhere = 0; // the target of a jump
+    if (end - first < 2)
+        return false;
+    // The byte and mask of a bit operand (a register's bits are bytes in
+    // memory order, so this needs a little-endian machine).
+    const auto locate = [](const Decoded& d, const std::uint8_t*& byte, std::uint8_t& mask) {
+        if (d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte)) {
+            byte = static_cast<const std::uint8_t*>(d.ref);
+            mask = 0xFF;
+            return true;
+        }
+        if (d.refKind != static_cast<std::uint8_t>(BitRef::Kind::RegisterBit) ||
+            std::endian::native != std::endian::little)
+            return false;
+        byte = static_cast<const std::uint8_t*>(d.ref) + d.bit / 8;
+        mask = static_cast<std::uint8_t>(1u << (d.bit % 8));
+        return true;
+    };
+    for (int i = 0; i < 2; ++i) {
+        out.read[i] = &one;
+        out.mask[i] = 0xFF;
+    }
+    out.read[2] = &zero;
+    out.mask[2] = 0xFF;
+    out.edge = &m_noEdge;
+    out.edgeNegated = 1;
+    int contacts = 0;
+    bool edge = false;
+    for (std::uint32_t i = first + 1; i + 1 < end; ++i) {
+        const Decoded& d = m_code[i];
+        const auto negated = static_cast<std::uint8_t>(d.flags & compiler::Negated);
+        if (d.op == Op::Contact && contacts < 2) {
+            if (!locate(d, out.read[contacts], out.mask[contacts]))
+                return false;
+            out.negated[contacts++] = negated;
+        } else if (d.op == Op::Edge && !edge) {
+            if (!locate(d, out.read[2], out.mask[2]))
+                return false;
+            edge = true;
+            out.edge = &m_edges[d.slot];
+            out.negated[2] = (d.flags & compiler::OperandNegated) != 0;
+            out.edgeRising = (d.flags & compiler::Rising) != 0;
+            out.edgeNegated = negated;
+        } else {
+            return false;
+        }
+    }
+    const Decoded& output = m_code[end - 1];
+    out.keepOff = 0xFF;
+    if (output.op == Op::Jump) {
+        if (output.slot > kMaxStep)
+            return false;
+        out.target = &nowhere;
+        out.jump = 1;
+        out.jumpStep = static_cast<std::uint8_t>(output.slot);
+        return true;
+    }
+    const std::uint8_t* target = nullptr;
+    if (!locate(output, target, out.targetMask))
+        return false;
+    out.target = const_cast<std::uint8_t*>(target);
+    // A byte output is 0 or 1, a register bit its own bit.
+    out.targetOne = out.targetMask == 0xFF ? 1 : out.targetMask;
+    switch (output.op) {
+    case Op::Coil:
+        out.flipOn = 1;
+        out.keepOff = static_cast<std::uint8_t>(~out.targetMask);
+        return true;
+    case Op::Set:
+        out.flipOn = 1;
+        return true;
+    case Op::Reset:
+        return true;
+    case Op::Toggle:
+        out.keepOn = 1;
+        out.flipOn = 1;
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool UnitEngine::toWordStatement(std::uint32_t first, std::uint32_t end, WordStatement& out) {
+    static const std::uint8_t one = 1;
+    static const std::uint8_t zero = 0;
+    static const std::int32_t nothing = 0;
+    if (end - first < 2 || std::endian::native != std::endian::little)
+        return false;
+    const Decoded& output = m_code[end - 1];
+    const auto op = static_cast<ArithOp>(output.aux);
+    if (output.op != Op::Arith || output.dropWrite || op == ArithOp::Div || op == ArithOp::DivAB ||
+        output.refKind != static_cast<std::uint8_t>(WordRef::Kind::Register))
+        return false;
+    out.target = static_cast<std::int16_t*>(output.ref);
+    out.read[0] = &one;
+    out.mask[0] = 0xFF;
+    out.read[1] = &zero;
+    out.mask[1] = 0xFF;
+    out.edge = &m_noEdge;
+    out.edgeNegated = 1;
+    out.load[0] = out.load[1] = reinterpret_cast<const std::uint8_t*>(&nothing);
+    bool contact = false;
+    bool edge = false;
+    int loads = 0; // a, then b
+    for (std::uint32_t i = first + 1; i + 1 < end; ++i) {
+        const Decoded& d = m_code[i];
+        const bool byte = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+        const bool series = loads == 0;
+        if (d.op == Op::Contact && !contact && byte && series) {
+            contact = true;
+            out.read[0] = static_cast<const std::uint8_t*>(d.ref);
+            out.negated[0] = d.flags & compiler::Negated;
+        } else if (d.op == Op::Edge && !edge && byte && series) {
+            edge = true;
+            out.read[1] = static_cast<const std::uint8_t*>(d.ref);
+            out.edge = &m_edges[d.slot];
+            out.negated[1] = (d.flags & compiler::OperandNegated) != 0;
+            out.edgeRising = (d.flags & compiler::Rising) != 0;
+            out.edgeNegated = d.flags & compiler::Negated;
+        } else if ((d.op == Op::LoadA && loads == 0) || (d.op == Op::LoadB && loads < 2)) {
+            const int which = d.op == Op::LoadA ? 0 : 1;
+            loads = which + 1;
+            out.loads[which] = 1;
+            if (d.flags & compiler::ConstantOperand) {
+                out.load[which] = reinterpret_cast<const std::uint8_t*>(&d.constant);
+            } else if (d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register)) {
+                out.load[which] = static_cast<const std::uint8_t*>(d.ref);
+                out.narrow[which] = 16;
+            } else if (d.refKind != static_cast<std::uint8_t>(WordRef::Kind::None)) {
+                out.load[which] = static_cast<const std::uint8_t*>(d.ref);
+            } else {
+                return false;
+            }
+        } else {
+            return false;
+        }
+    }
+    switch (op) {
+    case ArithOp::Increment:
+        out.fromCurrent = 1;
+        out.yConstant = 1;
+        break;
+    case ArithOp::Decrement:
+        out.fromCurrent = 1;
+        out.yConstant = -1;
+        break;
+    case ArithOp::Add:
+        out.fromCurrent = 1;
+        out.yA = 1;
+        break;
+    case ArithOp::Sub:
+        out.fromCurrent = 1;
+        out.yA = -1;
+        break;
+    case ArithOp::Mul:
+        out.fromCurrent = 1;
+        out.yA = 1;
+        out.multiply = 1;
+        break;
+    case ArithOp::Copy:
+        out.fromA = 1;
+        break;
+    case ArithOp::AddAB:
+        out.fromA = 1;
+        out.yB = 1;
+        break;
+    case ArithOp::SubAB:
+        out.fromA = 1;
+        out.yB = -1;
+        break;
+    case ArithOp::MulAB:
+        out.fromA = 1;
+        out.yB = 1;
+        out.multiply = 1;
+        break;
+    case ArithOp::Div:
+    case ArithOp::DivAB:
+        return false;
+    }
+    return true;
+}
+
+void UnitEngine::runWordStatements(const Row<WordStatement>& row, std::int64_t& a,
+                                   std::int64_t& b) {
+    auto& sm = m_memory.systemMemories;
+    for (const WordStatement* st = row.first; st != row.end; ++st) {
+        const unsigned value =
+            static_cast<unsigned>((*st->read[1] & st->mask[1]) != 0) ^ st->negated[1];
+        const unsigned last = st->edge->last;
+        const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
+        st->edge->seen = true;
+        st->edge->last = value != 0;
+        const unsigned on =
+            ((static_cast<unsigned>((*st->read[0] & st->mask[0]) != 0) ^ st->negated[0]) &
+             (seen ^ st->edgeNegated));
+        const auto load = [st](int i) {
+            std::uint32_t raw = 0;
+            std::memcpy(&raw, st->load[i], sizeof raw);
+            return static_cast<std::int64_t>(static_cast<std::int32_t>(raw << st->narrow[i]) >>
+                                             st->narrow[i]);
+        };
+        const std::int64_t loadedA = load(0);
+        const std::int64_t loadedB = load(1);
+        a = st->loads[0] ? loadedA : a;
+        b = st->loads[1] ? loadedB : b;
+        const std::int64_t current = *st->target;
+        const std::int64_t x = current * st->fromCurrent + a * st->fromA;
+        const std::int64_t y = st->yConstant + a * st->yA + b * st->yB;
+        const std::int64_t result = st->multiply ? x * y : x + y;
+        const bool overflow = result < -32768 || result > 32767;
+        const auto saturated =
+            static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
+        *st->target = on ? saturated : static_cast<std::int16_t>(current);
+        sm[kOverflow] = on ? overflow : sm[kOverflow];
+    }
+}
+
+template <bool withEdges>
+inline void UnitEngine::runBitStatements(const Row<BitStatement>& row, std::uint8_t& ditto,
+                                         int& pendingJump) {
+    int jump = pendingJump;
+    for (const BitStatement* st = row.first; st != row.end; ++st) {
+        const auto bit = [st](int i) {
+            return static_cast<unsigned>((*st->read[i] & st->mask[i]) != 0) ^ st->negated[i];
+        };
+        unsigned on = bit(0) & bit(1);
+        if constexpr (withEdges) {
+            const unsigned value = bit(2);
+            const unsigned last = st->edge->last;
+            const unsigned seen = st->edge->seen & (value ^ last) & (st->edgeRising ? value : last);
+            st->edge->seen = true;
+            st->edge->last = value != 0;
+            on &= seen ^ st->edgeNegated;
+        }
+        const unsigned old = *st->target;
+        const unsigned output =
+            (static_cast<unsigned>((old & st->targetMask) != 0) & st->keepOn) ^ st->flipOn;
+        const unsigned withPower = (old & ~st->targetMask) | (st->targetOne & (0u - output));
+        const unsigned without = old & st->keepOff;
+        const unsigned select = 0u - on;
+        *st->target = static_cast<std::uint8_t>((withPower & select) | (without & ~select));
+        jump = (on & st->jump) ? st->jumpStep : jump;
+        const unsigned keep = 0u - static_cast<unsigned>(st->jump); // a jump leaves SM_Ditto
+        // Stored each time: the next statement may read it.
+        ditto = static_cast<std::uint8_t>((ditto & keep) | (on & ~keep));
+    }
+    pendingJump = jump;
+}
+
+// The same instructions as runStep without the marks, in the form translate()
+// made: a scan that nobody looks at in detail costs what its logic costs.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"
+void UnitEngine::runFast(const FastOp* op, int& pendingJump, int cycleMs,
+                         const void* const** handlerTable) {
+    static const void* const handlers[] = {&&rung,
+                                           &&start,
+                                           &&startNot,
+                                           &&and_,
+                                           &&andNot,
+                                           &&contact,
+                                           &&edge,
+                                           &&edgeStart,
+                                           &&byteEdge,
+                                           &&byteEdgeStart,
+                                           &&contactRegisterBit,
+                                           &&timer,
+                                           &&loadA,
+                                           &&loadAWord,
+                                           &&loadAConstant,
+                                           &&loadB,
+                                           &&loadBWord,
+                                           &&loadBConstant,
+                                           &&equal,
+                                           &&greater,
+                                           &&less,
+                                           &&greaterEqual,
+                                           &&lessEqual,
+                                           &&branchOpen,
+                                           &&branchNext,
+                                           &&branchClose,
+                                           &&coilByte,
+                                           &&coilByteRung,
+                                           &&coil,
+                                           &&coilRegisterBit,
+                                           &&setByte,
+                                           &&setByteRung,
+                                           &&set,
+                                           &&resetByte,
+                                           &&resetByteRung,
+                                           &&reset,
+                                           &&toggle,
+                                           &&jump,
+                                           &&sequenceReset,
+                                           &&arith,
+                                           &&arithRegister,
+                                           &&bitStatements,
+                                           &&bitStatementsWithoutEdges,
+                                           &&wordStatements,
+                                           &&end};
+    static_assert(std::size(handlers) == FastHandlerCount);
+    if (handlerTable) {
+        *handlerTable = handlers;
+        return;
+    }
+    auto& sm = m_memory.systemMemories;
+    struct Branch {
+        unsigned in;
+        unsigned any;
+    };
+    Branch branches[64];
+    int depth = 0;
+    unsigned power = 1;
+    std::int64_t a = 0;
+    std::int64_t b = 0;
+#define RS_NEXT() goto*(++op)->handler
+#define RS_IN (*static_cast<const Decoded*>(op->arg))
+#define RS_BYTE (*static_cast<std::uint8_t*>(op->arg))
+#define RS_NEGATED (RS_IN.flags & compiler::Negated)
+
+    goto * op->handler;
+rung:
+    power = 1;
+    RS_NEXT();
+start:
+    power = RS_BYTE != 0;
+    RS_NEXT();
+startNot:
+    power = RS_BYTE == 0;
+    RS_NEXT();
+and_:
+    power &= RS_BYTE != 0;
+    RS_NEXT();
+andNot:
+    power &= RS_BYTE == 0;
+    RS_NEXT();
+contact:
+    power &= static_cast<unsigned>(RS_IN.readBit()) ^ RS_NEGATED;
+    RS_NEXT();
+edge:
+    power &= edge(RS_IN);
+    RS_NEXT();
+edgeStart:
+    power = edge(RS_IN);
+    RS_NEXT();
+byteEdge:
+    power &= byteEdge(*static_cast<const ByteEdge*>(op->arg));
+    RS_NEXT();
+byteEdgeStart:
+    power = byteEdge(*static_cast<const ByteEdge*>(op->arg));
+    RS_NEXT();
+contactRegisterBit:
+    power &=
+        ((static_cast<unsigned>(*static_cast<const std::uint16_t*>(RS_IN.ref)) >> RS_IN.bit) & 1u) ^
+        RS_NEGATED;
+    RS_NEXT();
+timer:
+    power = timer(RS_IN, power != 0, cycleMs);
+    RS_NEXT();
+loadA:
+    a = RS_IN.readWord();
+    RS_NEXT();
+loadAWord:
+    a = *static_cast<const std::int16_t*>(op->arg);
+    RS_NEXT();
+loadAConstant:
+    a = *static_cast<const std::int32_t*>(op->arg);
+    RS_NEXT();
+loadB:
+    b = RS_IN.readWord();
+    RS_NEXT();
+loadBWord:
+    b = *static_cast<const std::int16_t*>(op->arg);
+    RS_NEXT();
+loadBConstant:
+    b = *static_cast<const std::int32_t*>(op->arg);
+    RS_NEXT();
+equal:
+    power &= static_cast<unsigned>(a == b) ^ RS_NEGATED;
+    RS_NEXT();
+greater:
+    power &= static_cast<unsigned>(a > b) ^ RS_NEGATED;
+    RS_NEXT();
+less:
+    power &= static_cast<unsigned>(a < b) ^ RS_NEGATED;
+    RS_NEXT();
+greaterEqual:
+    power &= static_cast<unsigned>(a >= b) ^ RS_NEGATED;
+    RS_NEXT();
+lessEqual:
+    power &= static_cast<unsigned>(a <= b) ^ RS_NEGATED;
+    RS_NEXT();
+branchOpen:
+    branches[depth++] = {power, 0};
+    RS_NEXT();
+branchNext:
+    branches[depth - 1].any |= power;
+    power = branches[depth - 1].in;
+    RS_NEXT();
+branchClose:
+    power |= branches[--depth].any;
+    RS_NEXT();
+coilByte:
+    RS_BYTE = static_cast<std::uint8_t>(power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+coilByteRung:
+    RS_BYTE = static_cast<std::uint8_t>(power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    power = 1;
+    RS_NEXT();
+coil:
+    RS_IN.writeBit(power != 0);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+coilRegisterBit : {
+    auto& word = *static_cast<std::uint16_t*>(RS_IN.ref);
+    const auto mask = static_cast<unsigned>(1u << RS_IN.bit);
+    word = static_cast<std::uint16_t>((word & ~mask) | (power * mask));
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+}
+setByte:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+setByteRung:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    power = 1;
+    RS_NEXT();
+set:
+    if (power)
+        RS_IN.writeBit(true);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+resetByte:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+resetByteRung:
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    power = 1;
+    RS_NEXT();
+reset:
+    if (power)
+        RS_IN.writeBit(false);
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+toggle:
+    if (power)
+        RS_IN.writeBit(!RS_IN.readBit());
+    sm[kDitto] = static_cast<std::uint8_t>(power);
+    RS_NEXT();
+jump:
+    if (power)
+        pendingJump = RS_IN.slot; // the last jump taken in the step wins
+    RS_NEXT();
+sequenceReset:
+    if (power && RS_IN.slot < 10)
+        m_sequences[RS_IN.slot].resetRequested = true;
+    RS_NEXT();
+arith:
+    if (power)
+        arithmetic(RS_IN, a, b);
+    RS_NEXT();
+arithRegister:
+    if (power) {
+        auto& target = *static_cast<std::int16_t*>(RS_IN.ref);
+        const std::int64_t current = target;
+        std::int64_t result = 0;
+        switch (static_cast<ArithOp>(RS_IN.aux)) {
+        case ArithOp::Increment:
+            result = current + 1;
+            break;
+        case ArithOp::Decrement:
+            result = current - 1;
+            break;
+        case ArithOp::Add:
+            result = current + a;
+            break;
+        case ArithOp::Sub:
+            result = current - a;
+            break;
+        case ArithOp::Mul:
+            result = current * a;
+            break;
+        case ArithOp::Copy:
+            result = a;
+            break;
+        case ArithOp::AddAB:
+            result = a + b;
+            break;
+        case ArithOp::SubAB:
+            result = a - b;
+            break;
+        case ArithOp::MulAB:
+            result = a * b;
+            break;
+        case ArithOp::Div:
+        case ArithOp::DivAB:
+            break; // translate() leaves divisions to arithmetic()
+        }
+        sm[kOverflow] = result < -32768 || result > 32767;
+        target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
+    }
+    RS_NEXT();
+bitStatements:
+    runBitStatements<true>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
+                           pendingJump);
+    RS_NEXT();
+wordStatements:
+    runWordStatements(*static_cast<const Row<WordStatement>*>(op->arg), a, b);
+    RS_NEXT();
+bitStatementsWithoutEdges:
+    runBitStatements<false>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
+                            pendingJump);
+    RS_NEXT();
+end:
+    return;
+#undef RS_NEGATED
+#undef RS_BYTE
+#undef RS_IN
 #undef RS_NEXT
 }
 #pragma GCC diagnostic pop
