@@ -1082,6 +1082,19 @@ void MainWindow::compileFinished() {
     }
     m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
                          written);
+    if (document && m_ladderPage->document() == document) {
+        // The ladder marks the elements the diagnostics of its unit concern.
+        lang::Diagnostics onLadder;
+        for (lang::Diagnostic diagnostic : result.diagnostics) {
+            const project::TextPlace place = project::placeOfLine(m_compiledText, diagnostic.line);
+            if (place.kind != project::TextPlace::Kind::UnitCode ||
+                place.station != m_ladderPage->station())
+                continue;
+            diagnostic.line = place.line;
+            onLadder.push_back(diagnostic);
+        }
+        m_ladderPage->setDiagnostics(onLadder);
+    }
     if (document && result.errors() == 0 && written.isEmpty())
         showMessage(tr("Compiled without errors. Save the project to write the compiled file."));
     else

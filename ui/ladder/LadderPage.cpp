@@ -232,6 +232,21 @@ void LadderPage::setPlacement(Placement placement) {
     action(QLatin1String(names[static_cast<int>(placement)]))->setChecked(true);
 }
 
+void LadderPage::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() != QEvent::PaletteChange)
+        return;
+    // The theme changed: the drawing follows the window's colours.
+    const LadderDrawing colours = drawingFor(palette());
+    m_drawing.style = colours.style;
+    m_drawing.selection = colours.selection;
+    m_drawing.markedNetwork = colours.markedNetwork;
+    m_drawing.problem = colours.problem;
+    m_drawing.editing = colours.editing;
+    m_view->setBackgroundBrush(m_drawing.style.background);
+    repaintItems();
+}
+
 // ----- showing the model
 
 void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) {
@@ -300,6 +315,7 @@ void LadderPage::followModel() {
 
 void LadderPage::rebuild() {
     m_steps.clear();
+    m_stepComments.clear();
     if (m_document) {
         const project::Project& project = m_document->project();
         std::vector<lang::Line> names = project.program.preamble;
@@ -310,6 +326,10 @@ void LadderPage::rebuild() {
             for (auto& page : ladder::unitLadder(unit))
                 if (page.address.sequence == m_sequence)
                     m_steps.push_back(std::move(page));
+            for (const auto& step : unit.steps)
+                if (step.address.sequence == m_sequence)
+                    m_stepComments.push_back(
+                        QString::fromStdString(step.comment.value_or(std::string())).trimmed());
         }
         if (names != m_names || m_namesVersion == 0) {
             m_names = std::move(names);
@@ -317,8 +337,10 @@ void LadderPage::rebuild() {
             ++m_namesVersion;
         }
     }
-    if (m_steps.empty() && m_document && m_sequence == 0)
+    if (m_steps.empty() && m_document && m_sequence == 0) {
         m_steps.push_back({{m_station, 0, 0}, {}, {}});
+        m_stepComments.emplace_back();
+    }
     if (m_pending) {
         auto [step, index] = *m_pending;
         if (step < stepCount() && index <= networkCount(step)) {
@@ -346,9 +368,9 @@ void LadderPage::rebuild() {
     for (std::size_t s = 0; s < m_steps.size(); ++s) {
         const auto& page = m_steps[s];
         const QString stepText =
-            QStringLiteral("%1 %2   %3")
+            QStringLiteral("%1   %2   %3")
                 .arg(tr("Step %1").arg(page.address.step),
-                     QString::fromStdString(lang::toString(page.address)), QString());
+                     QString::fromStdString(lang::toString(page.address)), m_stepComments[s]);
         if (s >= m_items.size()) {
             m_items.emplace_back();
             m_headers.push_back(

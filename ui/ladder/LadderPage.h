@@ -111,6 +111,9 @@ public:
     bool exportPdf(const QString& path);
     void print();
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 signals:
     // The user asked for the text of this code (the "Text" button).
     void textRequested();
@@ -167,6 +170,7 @@ private:
     int m_sequence = 0;
     LadderDrawing m_drawing;
     std::vector<ladder::StepPage> m_steps;
+    std::vector<QString> m_stepComments; // the trailing comment of each step's header
     std::vector<StepHeaderItem*> m_headers;
     std::vector<std::vector<NetworkItem*>> m_items;
     ladder::SymbolTable m_symbols;
