@@ -4,6 +4,7 @@
 #include "ProjectDocument.h"
 #include "ProjectTree.h"
 #include "TextPage.h"
+#include "Theme.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
@@ -15,6 +16,7 @@
 #include <QDialog>
 #include <QFile>
 #include <QGraphicsScene>
+#include <QImage>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
@@ -25,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <tuple>
 
 namespace {
 
@@ -424,5 +427,113 @@ TEST_F(LadderPageTest, ZoomsWithTheKeysAndExportsPdf) {
     ASSERT_TRUE(page().exportPdf(pdf));
     EXPECT_TRUE(readFile(pdf).startsWith("%PDF"));
 }
+
+} // namespace
+
+namespace {
+
+// Pixels of exactly this colour in the image.
+int pixelsOf(const QImage& image, const QColor& colour) {
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    int count = 0;
+    for (int y = 0; y < rgb.height(); ++y) {
+        const auto* line = reinterpret_cast<const QRgb*>(rgb.constScanLine(y));
+        for (int x = 0; x < rgb.width(); ++x)
+            count += (line[x] & 0xffffff) == (colour.rgb() & 0xffffff);
+    }
+    return count;
+}
+
+class LadderEditingStates : public LadderPageTest,
+                            public ::testing::WithParamInterface<rs::ui::Preferences::Theme> {
+protected:
+    void TearDown() override {
+        rs::ui::applyTheme(rs::ui::Preferences::Theme::Light);
+        LadderPageTest::TearDown();
+    }
+
+    // Writes the window's picture for the documentation when
+    // RUNGSMITH_LADDER_SCREENSHOTS names a folder.
+    void keep(const QString& name) {
+        const QString folder = qEnvironmentVariable("RUNGSMITH_LADDER_SCREENSHOTS");
+        if (folder.isEmpty())
+            return;
+        const QString theme = GetParam() == rs::ui::Preferences::Theme::Dark ? "dark" : "light";
+        window.grab().save(QStringLiteral("%1/ladder-%2-%3.png").arg(folder, name, theme));
+    }
+};
+
+TEST_P(LadderEditingStates, SelectionEditModeAndProblemsAreDrawn) {
+    rs::ui::applyTheme(GetParam());
+    QFile example(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps"));
+    ASSERT_TRUE(example.open(QIODevice::ReadOnly));
+    open(example.readAll());
+    window.resize(1280, 800);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    page().view()->setFocus();
+    // Network 2 in edit mode with a contact added, a problem on network 3's contact.
+    page().setCursor({0, 1, std::nullopt, std::nullopt, -1});
+    key('E');
+    click(QStringLiteral("Q0.3"));
+    insert('C', QStringLiteral("I0.1"));
+    // A diagnostic at I0.12 of network 1, by line and column of the unit's text.
+    const QList<QByteArray> lines = unitText(0).split('\n');
+    int line = 0;
+    while (line < lines.size() && !lines[line].startsWith("Q0.2 = "))
+        ++line;
+    ASSERT_LT(line, lines.size());
+    page().setDiagnostics(
+        {{rs::lang::Severity::Error, line + 1, static_cast<int>(lines[line].indexOf("I0.12")) + 1,
+          "I0.12 has no I/O declaration"}});
+    click(QStringLiteral("I0.12"));
+    EXPECT_EQ(page().message(), QStringLiteral("I0.12 has no I/O declaration"));
+    const rs::ui::LadderDrawing colours = rs::ui::drawingFor(page().palette());
+    QImage picture = page().view()->viewport()->grab().toImage();
+    EXPECT_GT(pixelsOf(picture, colours.editing), 50);
+    EXPECT_GT(pixelsOf(picture, colours.selection), 50);
+    EXPECT_GT(pixelsOf(picture, colours.problem), 20);
+    EXPECT_GT(pixelsOf(picture, colours.style.background), picture.width() * picture.height() / 3);
+    keep(QStringLiteral("editing"));
+
+    // A sequence page: steps with their networks, jumps as outputs.
+    key(Qt::Key_F3);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 1});
+    EXPECT_EQ(page().stepCount(), 3);
+    click(QStringLiteral("step +1"));
+    picture = page().view()->viewport()->grab().toImage();
+    EXPECT_GT(pixelsOf(picture, colours.selection), 50);
+    keep(QStringLiteral("sequence"));
+}
+
+TEST_P(LadderEditingStates, OptionsAndCollapsedNetworksAreDrawn) {
+    rs::ui::applyTheme(GetParam());
+    open(kTwoUnits);
+    window.resize(1280, 800);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    for (const auto& [text, memory, on] : {std::tuple{"Door switch fitted", "M0.5", true},
+                                           {"Second light curtain", "M0.6", false}}) {
+        DialogDriver driver({[&](QDialog& dialog) {
+            dialog.findChild<QLineEdit*>(QStringLiteral("description"))
+                ->setText(QString::fromUtf8(text));
+            dialog.findChild<QLineEdit*>(QStringLiteral("memory"))
+                ->setText(QString::fromUtf8(memory));
+            dialog.findChild<QCheckBox*>(QStringLiteral("checked"))->setChecked(on);
+            dialog.accept();
+        }});
+        page().newConfigOption();
+    }
+    ASSERT_EQ(page().networkCount(0), 5);
+    page().toggleCollapsed(0, 3);
+    page().toggleCollapsed(0, 4);
+    page().setCursor({0, 0, std::nullopt, std::nullopt, -1});
+    const rs::ui::LadderDrawing colours = rs::ui::drawingFor(page().palette());
+    const QImage picture = page().view()->viewport()->grab().toImage();
+    EXPECT_GT(pixelsOf(picture, colours.style.powered), 5); // the tick of the option that is on
+    keep(QStringLiteral("options"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Themes, LadderEditingStates,
+                         ::testing::Values(rs::ui::Preferences::Theme::Light,
+                                           rs::ui::Preferences::Theme::Dark));
 
 } // namespace

@@ -52,7 +52,7 @@ void NetworkItem::setCollapsed(bool collapsed) {
 }
 
 QRectF NetworkItem::boundingRect() const {
-    const qreal height = m_collapsed ? m_layout.metrics.titleHeight + 2 * m_layout.metrics.margin
+    const qreal height = m_collapsed ? m_layout.metrics.titleHeight + m_layout.metrics.margin + 6
                                      : m_layout.size.height();
     return {0, 0, kGutter + m_layout.size.width() + (m_option ? kOptionWidth : 0), height};
 }
@@ -103,7 +103,8 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
     painter->save();
     painter->translate(kGutter, 0);
     if (m_collapsed)
-        painter->setClipRect(QRectF(0, 0, m_layout.size.width(), bounds.height()));
+        painter->setClipRect(QRectF(0, 0, m_layout.size.width(),
+                                    m_layout.metrics.titleHeight + m_layout.metrics.margin));
     render::paintNetwork(*painter, m_layout, style,
                          m_drawing->live ? &m_drawing->live->power : nullptr);
     painter->restore();
