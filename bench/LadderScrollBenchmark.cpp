@@ -101,6 +101,15 @@ void BM_ScrollFrames(benchmark::State& state) {
 }
 BENCHMARK(BM_ScrollFrames)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+// The page at its smallest zoom (10 %): networks sketched without text.
+void BM_ZoomedOutFrame(benchmark::State& state) {
+    OpenPage open;
+    open.page->view()->setZoom(rs::ui::LadderView::kMinimumZoom);
+    for (auto _ : state)
+        open.paintFrame();
+}
+BENCHMARK(BM_ZoomedOutFrame)->Unit(benchmark::kMillisecond);
+
 // A new live state on every network: what the simulator's screen updates cost.
 void BM_LiveRepaint(benchmark::State& state) {
     OpenPage open;

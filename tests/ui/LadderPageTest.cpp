@@ -475,7 +475,21 @@ TEST_P(LadderEditingStates, SelectionEditModeAndProblemsAreDrawn) {
     page().setCursor({0, 1, std::nullopt, std::nullopt, -1});
     key('E');
     click(QStringLiteral("Q0.3"));
-    insert('C', QStringLiteral("I0.1"));
+    {
+        DialogDriver driver({[&](QDialog& dialog) {
+            auto* operand = dialog.findChild<QLineEdit*>(QStringLiteral("operand"));
+            QTest::keyClicks(operand, QStringLiteral("I0.1"));
+            const QString folder = qEnvironmentVariable("RUNGSMITH_LADDER_SCREENSHOTS");
+            if (!folder.isEmpty())
+                dialog.grab().save(QStringLiteral("%1/ladder-properties-%2.png")
+                                       .arg(folder, GetParam() == rs::ui::Preferences::Theme::Dark
+                                                        ? QStringLiteral("dark")
+                                                        : QStringLiteral("light")));
+            QTest::keyClick(operand, Qt::Key_Return);
+        }});
+        key('C');
+        ASSERT_TRUE(driver.done());
+    }
     // A diagnostic at I0.12 of network 1, by line and column of the unit's text.
     const QList<QByteArray> lines = unitText(0).split('\n');
     int line = 0;

@@ -12,7 +12,7 @@ namespace rs::ui {
 class LadderView : public QGraphicsView {
     Q_OBJECT
 public:
-    static constexpr qreal kMinimumZoom = 0.25;
+    static constexpr qreal kMinimumZoom = 0.1;
     static constexpr qreal kMaximumZoom = 4;
 
     explicit LadderView(QGraphicsScene* scene, QWidget* parent = nullptr);

@@ -3,6 +3,7 @@
 #include "NetworkPainter.h"
 
 #include <QPainter>
+#include <QStyleOptionGraphicsItem>
 
 #include <algorithm>
 
@@ -11,6 +12,7 @@ namespace rs::ui {
 namespace {
 
 constexpr qreal kSelectionPad = 3;
+constexpr qreal kSketchBelow = 0.3; // zoom under which networks are sketched
 constexpr qreal kOptionWidth = 150; // right of an option network: its check box
 
 bool startsWith(const std::vector<std::size_t>& path, const std::vector<std::size_t>& prefix) {
@@ -96,10 +98,16 @@ QRectF NetworkItem::groupRect(const ladder::ElementPath& path) const {
     return rect;
 }
 
-void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*) {
     const render::LadderStyle& style = m_drawing->style;
     const QRectF bounds = boundingRect();
     painter->fillRect(bounds, style.background);
+    // Zoomed far out, text would be specks: wires and symbols as plain shapes
+    // draw a thousand networks in the time of a few.
+    if (option->levelOfDetailFromTransform(painter->worldTransform()) < kSketchBelow) {
+        paintSketch(*painter);
+        return;
+    }
     painter->save();
     painter->translate(kGutter, 0);
     if (m_collapsed)
@@ -145,6 +153,29 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
     painter->setPen(QPen(style.commentInk, 0.5));
     painter->drawLine(bounds.bottomLeft(), bounds.bottomRight());
     paintOverlay(*painter);
+}
+
+void NetworkItem::paintSketch(QPainter& painter) const {
+    const render::LadderStyle& style = m_drawing->style;
+    const render::PowerSnapshot* power = m_drawing->live ? &m_drawing->live->power : nullptr;
+    painter.save();
+    painter.translate(kGutter, 0);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.fillRect(QRectF(0, m_layout.metrics.margin, m_layout.size.width() / 3,
+                            m_layout.metrics.titleHeight * 0.6),
+                     style.commentInk);
+    if (!m_collapsed) {
+        for (const auto& wire : m_layout.wires) {
+            const bool powered = power && power->powers(wire.feed);
+            painter.setPen(QPen(powered ? style.powered : style.ink, wire.rail ? 3 : 0));
+            painter.drawLine(wire.line);
+        }
+        for (const auto& element : m_layout.elements) {
+            const bool powered = power && power->conducts(element.statement, element.element);
+            painter.fillRect(element.symbolRect, powered ? style.powered : style.ink);
+        }
+    }
+    painter.restore();
 }
 
 void NetworkItem::paintOverlay(QPainter& painter) const {

@@ -49,6 +49,7 @@ public:
 
 private:
     void paintOverlay(QPainter& painter) const;
+    void paintSketch(QPainter& painter) const;
     QRectF collapseBox() const;
 
     const LadderDrawing* m_drawing;
