@@ -18,6 +18,7 @@
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLineEdit>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
@@ -238,6 +239,28 @@ TEST_F(LadderPageTest, BuildsTheManualsMutingProgramFromAnEmptyProject) {
     const auto reread = rs::project::readProject(document()->fileText().toStdString());
     ASSERT_TRUE(reread.ok());
     EXPECT_EQ(statementsOf(reread.project, 0), statementsOf(expected.project, 0));
+}
+
+TEST_F(LadderPageTest, TheCommandLineShowsTheLadderPage) {
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), directory.path());
+    process.setProcessEnvironment(environment);
+    const QString picture = directory.filePath(QStringLiteral("ladder.png"));
+    process.start(QStringLiteral(RUNGSMITH_GUI),
+                  {QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps"),
+                   QStringLiteral("--screenshot"), picture, QStringLiteral("--page"),
+                   QStringLiteral("ladder:0")});
+    ASSERT_TRUE(process.waitForFinished(60000));
+    EXPECT_EQ(process.exitCode(), 0) << process.readAllStandardError().toStdString();
+    EXPECT_FALSE(QImage(picture).isNull());
+    process.start(QStringLiteral(RUNGSMITH_GUI),
+                  {QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps"),
+                   QStringLiteral("--screenshot"), picture, QStringLiteral("--page"),
+                   QStringLiteral("ladder:7")});
+    ASSERT_TRUE(process.waitForFinished(60000));
+    EXPECT_EQ(process.exitCode(), 2); // no unit 7
 }
 
 TEST_F(LadderPageTest, EveryOperationIsOneUndoStepAndRedoes) {

@@ -269,7 +269,6 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
         m_drawing.cursor = {};
         m_drawing.marked.clear();
         m_drawing.problems.clear();
-        m_diagnostics.clear();
         for (auto& step : m_items)
             for (NetworkItem* item : step)
                 delete item;
@@ -292,18 +291,22 @@ void LadderPage::updateTitle() {
         m_title->setTitle({});
         return;
     }
-    const QString unit = unitCaption(m_document->project(), m_station);
-    m_title->setTitle(m_sequence == 0 ? tr("%1 — PLC Code").arg(unit)
-                                      : tr("%1 — Sequence %2").arg(unit).arg(m_sequence));
+    m_title->setTitle(pageTitle());
     m_title->setSubtitle(tr("Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, "
                             "S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \\ "
                             "before, after, parallel; Enter properties; Del delete; Ins new "
                             "network."));
 }
 
+QString LadderPage::pageTitle() const {
+    if (!m_document)
+        return {};
+    const QString unit = unitCaption(m_document->project(), m_station);
+    return m_sequence == 0 ? tr("%1 — PLC Code").arg(unit)
+                           : tr("%1 — Sequence %2").arg(unit).arg(m_sequence);
+}
+
 void LadderPage::followModel() {
-    if (m_committing)
-        return;
     if (m_editSession) {
         m_editSession.reset();
         m_drawing.editingNetwork.reset();
@@ -491,7 +494,6 @@ QColor LadderPage::elementColor(std::uint32_t statement, std::uint16_t element) 
 // ----- diagnostics
 
 void LadderPage::setDiagnostics(const lang::Diagnostics& diagnostics) {
-    m_diagnostics = diagnostics;
     m_drawing.problems.clear();
     if (!m_document || diagnostics.empty()) {
         repaintItems();
@@ -1350,14 +1352,12 @@ void LadderPage::newStep() {
     }
     for (int s = 0; s < stepCount(); ++s)
         if (m_steps[s].address.step == added) {
-            m_drawing.cursor = {};
-            setMessage(tr("Step %1 added; Ins makes its first network.").arg(added));
-            if (StepHeaderItem* header = m_headers[s])
-                m_view->ensureVisible(header->sceneBoundingRect());
-            m_drawing.cursor = {s, -1, std::nullopt, std::nullopt, -1};
+            // The new step gets a first network, waiting for its output.
             m_pending = std::make_pair(s, 0);
             rebuild();
             setCursor({s, 0, std::nullopt, std::nullopt, -1});
+            setMessage(tr("Step %1 added: insert the output of its first network.").arg(added));
+            return;
         }
 }
 
@@ -1527,8 +1527,7 @@ bool LadderPage::exportPdf(const QString& path) {
     writer.setPageSize(QPageSize(QPageSize::A4));
     writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
     writer.setResolution(150);
-    writer.setTitle(m_title->findChild<QLabel*>() ? m_title->findChild<QLabel*>()->text()
-                                                  : QString());
+    writer.setTitle(pageTitle());
     paintPages(writer, writer.title());
     setMessage(tr("Exported to %1.").arg(file));
     return true;
@@ -1539,8 +1538,7 @@ void LadderPage::print() {
     QPrintDialog dialog(&printer, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    paintPages(printer,
-               m_title->findChild<QLabel*>() ? m_title->findChild<QLabel*>()->text() : QString());
+    paintPages(printer, pageTitle());
 }
 
 } // namespace rs::ui

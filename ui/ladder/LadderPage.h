@@ -133,6 +133,7 @@ private:
     void rebuild();
     void placeItems();
     void updateTitle();
+    QString pageTitle() const;
     void updateActions();
     void setMessage(const QString& message);
     void repaintItems();
@@ -179,8 +180,6 @@ private:
     std::optional<std::pair<int, int>> m_pending; // a new network not yet holding a rung
     std::optional<EditSession> m_editSession;
     Placement m_placement = Placement::After;
-    lang::Diagnostics m_diagnostics;
-    bool m_committing = false;
 };
 
 } // namespace rs::ui
