@@ -4,6 +4,7 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <cstring>
 
 namespace rs::ui {
@@ -92,7 +93,8 @@ void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& u
     state.power = powerSnapshot(unit);
     state.annotations.clear();
     for (Box& box : m_boxes) {
-        box.values = valuesOf(unit, box);
+        box.values.clear();
+        readValues(unit, box);
         state.annotations[box.key] = textOf(unit, box);
     }
     const auto& conduction = unit.conduction();
@@ -100,22 +102,32 @@ void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& u
     std::memcpy(m_conduction.data(), conduction.data(), conduction.size());
 }
 
-std::vector<std::int64_t> LiveLadderBuilder::valuesOf(const sim::UnitEngine& unit,
-                                                      const Box& box) const {
-    std::vector<std::int64_t> values;
+bool LiveLadderBuilder::readValues(const sim::UnitEngine& unit, Box& box) const {
     const auto& code = unit.image().code;
+    bool changed = false;
+    std::size_t at = 0;
+    const auto put = [&](std::int64_t value) {
+        if (at == box.values.size()) {
+            box.values.push_back(value);
+            changed = true;
+        } else if (box.values[at] != value) {
+            box.values[at] = value;
+            changed = true;
+        }
+        ++at;
+    };
     for (std::size_t index : box.instructions) {
         const compiler::Instruction& in = code[index];
         if (in.op == compiler::Op::Timer) {
             const std::int64_t preset =
                 10 * ((in.flags & compiler::ConstantOperand) ? in.constant : unit.read(in.operand));
-            values.push_back(std::min(unit.timer(in.slot).elapsedMs, preset));
-            values.push_back(preset);
+            put(std::min(unit.timer(in.slot).elapsedMs, preset));
+            put(preset);
         } else {
-            values.push_back(unit.read(in.operand));
+            put(unit.read(in.operand));
         }
     }
-    return values;
+    return changed;
 }
 
 QString LiveLadderBuilder::textOf(const sim::UnitEngine& unit, const Box& box) const {
@@ -147,25 +159,29 @@ void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& si
         rebuild(state, *unit);
     } else {
         const auto* now = reinterpret_cast<const std::uint8_t*>(unit->conduction().data());
-        for (const Statement& statement : m_statements) {
-            if (std::memcmp(m_conduction.data() + statement.first, now + statement.first,
-                            statement.count) == 0)
-                continue;
-            std::memcpy(m_conduction.data() + statement.first, now + statement.first,
-                        statement.count);
+        std::uint8_t* before = m_conduction.data();
+        const std::size_t size = m_conduction.size();
+        // Only where the marks differ: usually a few statements of thousands.
+        std::size_t at = 0;
+        while (at < size) {
+            const std::size_t differs = static_cast<std::size_t>(
+                std::mismatch(before + at, before + size, now + at).first - before);
+            if (differs == size)
+                break;
+            const auto statement = std::prev(std::upper_bound(
+                m_statements.begin(), m_statements.end(), differs,
+                [](std::size_t index, const Statement& s) { return index < s.first; }));
+            std::memcpy(before + statement->first, now + statement->first, statement->count);
             render::StatementPower power;
-            if (statementPower(*unit, statement.first, statement.count, power))
-                state.power.statements[statement.number] = std::move(power);
+            if (statementPower(*unit, statement->first, statement->count, power))
+                state.power.statements[statement->number] = std::move(power);
             else
-                state.power.statements.erase(statement.number);
+                state.power.statements.erase(statement->number);
+            at = statement->first + statement->count;
         }
-        for (Box& box : m_boxes) {
-            std::vector<std::int64_t> values = valuesOf(*unit, box);
-            if (values == box.values)
-                continue;
-            box.values = std::move(values);
-            state.annotations[box.key] = textOf(*unit, box);
-        }
+        for (Box& box : m_boxes)
+            if (readValues(*unit, box))
+                state.annotations[box.key] = textOf(*unit, box);
     }
     state.forced.clear();
     for (const auto& [address, value] : unit->forces()) {

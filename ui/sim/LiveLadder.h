@@ -41,7 +41,8 @@ private:
         std::size_t count = 0;
     };
     void rebuild(LadderLiveState& state, const sim::UnitEngine& unit);
-    std::vector<std::int64_t> valuesOf(const sim::UnitEngine& unit, const Box& box) const;
+    // Reads the box's values again; whether any changed.
+    bool readValues(const sim::UnitEngine& unit, Box& box) const;
     QString textOf(const sim::UnitEngine& unit, const Box& box) const;
 
     const sim::UnitEngine* m_unit = nullptr;
