@@ -360,6 +360,32 @@ TEST_F(LadderPageTest, NetworksAreCutInOneUnitAndPastedInAnother) {
     EXPECT_EQ(page().networkCount(0), 1);
 }
 
+TEST_F(LadderPageTest, ElementsMoveBetweenNetworksAndSteps) {
+    open(kTwoUnits + "S1.1_0\nJ(+1) = I1.3 * I1.4\nS1.1_1\nJ(0) = I1.5\n");
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    using rs::ladder::ElementPath;
+    using rs::ladder::Side;
+    // I0.2 of network 1 after /I0.5 of network 3.
+    ASSERT_TRUE(page().moveElement({0, 0, ElementPath{0, {1}}, std::nullopt, -1},
+                                   {0, 2, ElementPath{0, {}}, std::nullopt, -1}, Side::After));
+    EXPECT_TRUE(unitText(0).contains("Q0.2 = I0.1\nQ0.3 = I0.3 + I0.4\nQ0.4 = /I0.5 * I0.2\n"))
+        << unitText(0).toStdString();
+    // Moving a group into itself is refused, with the reason shown.
+    EXPECT_FALSE(page().moveElement({0, 1, ElementPath{0, {}}, std::nullopt, -1},
+                                    {0, 1, ElementPath{0, {0}}, std::nullopt, -1}, Side::After));
+    EXPECT_FALSE(page().message().isEmpty());
+
+    clickNode({PageRef::Kind::Ladder, document(), 1, 1});
+    ASSERT_EQ(page().stepCount(), 2);
+    const QByteArray before = unitText(1);
+    ASSERT_TRUE(page().moveElement({0, 0, ElementPath{0, {1}}, std::nullopt, -1},
+                                   {1, 0, ElementPath{0, {}}, std::nullopt, -1}, Side::Before));
+    EXPECT_TRUE(unitText(1).contains("S1.1_0\nJ(+1) = I1.3\nS1.1_1\nJ(0) = I1.4 * I1.5\n"))
+        << unitText(1).toStdString();
+    document()->undoStack()->undo();
+    EXPECT_EQ(unitText(1), before);
+}
+
 TEST_F(LadderPageTest, ATextEditLaysTheLadderOutAgain) {
     open(kTwoUnits);
     clickNode({PageRef::Kind::Ladder, document(), 0, 0});

@@ -938,18 +938,30 @@ bool LadderPage::editNetwork(const QString& name, int step, int network,
 }
 
 void LadderPage::commitStep(const QString& name, int step, ladder::StepLadder ladder) {
-    if (m_pending && m_pending->first == step && !ladder.networks[m_pending->second].items.empty())
-        m_pending.reset();
-    // A network without rungs is the page's until it holds one.
-    std::erase_if(ladder.networks, [](const ladder::Network& n) { return n.items.empty(); });
-    const lang::StepAddress address = m_steps[step].address;
+    commitSteps(name, {{step, std::move(ladder)}});
+}
+
+void LadderPage::commitSteps(const QString& name,
+                             std::vector<std::pair<int, ladder::StepLadder>> steps) {
+    std::vector<std::pair<lang::StepAddress, ladder::StepLadder>> written;
+    for (auto& [step, ladder] : steps) {
+        if (m_pending && m_pending->first == step &&
+            (m_pending->second >= static_cast<int>(ladder.networks.size()) ||
+             !ladder.networks[m_pending->second].items.empty()))
+            m_pending.reset();
+        // A network without rungs is the page's until it holds one.
+        std::erase_if(ladder.networks, [](const ladder::Network& n) { return n.items.empty(); });
+        written.emplace_back(m_steps[step].address, std::move(ladder));
+    }
     const int station = m_station;
     m_document->edit(name, [&](project::Project& p) {
         lang::UnitProgram& unit = project::programOf(p, station);
-        if (std::none_of(unit.steps.begin(), unit.steps.end(),
-                         [&](const lang::Step& s) { return s.address == address; }))
-            unit.steps.insert(unit.steps.begin(), lang::Step{address, std::nullopt, {}, {}});
-        ladder::setStepLadder(unit, address, ladder);
+        for (const auto& [address, ladder] : written) {
+            if (std::none_of(unit.steps.begin(), unit.steps.end(),
+                             [&](const lang::Step& s) { return s.address == address; }))
+                unit.steps.insert(unit.steps.begin(), lang::Step{address, std::nullopt, {}, {}});
+            ladder::setStepLadder(unit, address, ladder);
+        }
     });
 }
 
@@ -1443,7 +1455,7 @@ void LadderPage::drop(const QPointF& scenePosition, const QByteArray& payload) {
     for (int i = 4; i < words.size(); ++i)
         node.node.push_back(static_cast<std::size_t>(words[i].toULongLong()));
     const LadderCursor target = cursorAt(scenePosition);
-    if (!target.node || step >= stepCount() || network >= networkCount(step))
+    if (!target.node)
         return;
     NetworkItem* item = networkItem(target.step, target.network);
     const int index = item->elementAt(item->mapFromScene(scenePosition));
@@ -1452,20 +1464,37 @@ void LadderPage::drop(const QPointF& scenePosition, const QByteArray& payload) {
                           item->elementRect(item->layout().elements[index]).center().x()
             ? ladder::Side::Before
             : ladder::Side::After;
-    const ladder::ElementPath to = *target.node;
-    if (target.step == step) {
-        ladder::StepLadder ladder = m_steps[step].ladder;
-        ladder::Network& from = ladder.networks[network];
-        ladder::Network& into = ladder.networks[target.network];
-        const ladder::EditResult result = ladder::moveNode(from, node, into, to, side);
-        if (!result.done()) {
-            setMessage(tr("Not moved: %1").arg(QString::fromStdString(result.refusal)));
-            return;
-        }
-        commitStep(tr("Move Element"), step, std::move(ladder));
-        return;
+    moveElement({step, network, node, std::nullopt, -1}, target, side);
+}
+
+bool LadderPage::moveElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side) {
+    auto exists = [this](const LadderCursor& c) {
+        return c.node && c.step >= 0 && c.step < stepCount() && c.network >= 0 &&
+               c.network < networkCount(c.step);
+    };
+    if (!m_document || isLive() || !exists(from) || !exists(to))
+        return false;
+    if (m_editSession)
+        updateNetwork();
+    const bool sameStep = from.step == to.step;
+    ladder::StepLadder source = m_steps[from.step].ladder;
+    ladder::StepLadder target = sameStep ? ladder::StepLadder{} : m_steps[to.step].ladder;
+    ladder::StepLadder& into = sameStep ? source : target;
+    const ladder::EditResult result = ladder::moveNode(source.networks[from.network], *from.node,
+                                                       into.networks[to.network], *to.node, side);
+    if (!result.done()) {
+        setMessage(tr("Not moved: %1").arg(QString::fromStdString(result.refusal)));
+        return false;
     }
-    setMessage(tr("Elements move within a step; copy networks to other steps."));
+    setMessage({});
+    std::vector<std::pair<int, ladder::StepLadder>> steps;
+    steps.emplace_back(from.step, std::move(source));
+    if (!sameStep)
+        steps.emplace_back(to.step, std::move(target));
+    commitSteps(tr("Move Element"), std::move(steps));
+    setCursor(
+        {to.step, std::min(to.network, networkCount(to.step) - 1), std::nullopt, std::nullopt, -1});
+    return true;
 }
 
 // ----- print and PDF

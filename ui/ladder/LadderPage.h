@@ -89,6 +89,9 @@ public:
     void insertElement(ElementKind kind);
     void editProperties();
     void deleteSelection();
+    // Moves an element or group next to another, within a network, between
+    // networks or between steps (what dragging does). False when refused.
+    bool moveElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side);
     void newNetwork();
     // A Config Option network at the start of the PLC code (manual 11.6).
     void newConfigOption();
@@ -158,6 +161,8 @@ private:
     bool editNetwork(const QString& name, int step, int network,
                      const std::function<ladder::EditResult(ladder::Network&)>& edit);
     void commitStep(const QString& name, int step, ladder::StepLadder ladder);
+    // Several steps changed by one edit, as one undo step.
+    void commitSteps(const QString& name, std::vector<std::pair<int, ladder::StepLadder>> steps);
     void selectAdded(int step, int network, const std::vector<QString>& before);
 
     PageTitle* m_title;
