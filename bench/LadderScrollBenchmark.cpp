@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QImage>
 #include <QScrollBar>
+#include <QUndoStack>
 
 #include <benchmark/benchmark.h>
 
@@ -109,6 +110,23 @@ void BM_ZoomedOutFrame(benchmark::State& state) {
         open.paintFrame();
 }
 BENCHMARK(BM_ZoomedOutFrame)->Unit(benchmark::kMillisecond);
+
+// An edit in the middle of the page and its undo: two changes of the project,
+// each followed by the page (ladder model of the unit, layout of the networks
+// whose statement numbers moved) and a frame.
+void BM_PasteAndUndoMidway(benchmark::State& state) {
+    OpenPage open;
+    const int middle = open.page->networkCount(0) / 2;
+    open.page->setCursor({0, middle, std::nullopt, std::nullopt, -1});
+    open.page->copyNetworks();
+    for (auto _ : state) {
+        open.page->pasteNetworks();
+        open.paintFrame();
+        open.document->undoStack()->undo();
+        open.paintFrame();
+    }
+}
+BENCHMARK(BM_PasteAndUndoMidway)->Unit(benchmark::kMillisecond);
 
 // A new live state on every network: what the simulator's screen updates cost.
 void BM_LiveRepaint(benchmark::State& state) {
