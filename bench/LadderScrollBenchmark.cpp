@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 // The ladder editor's page on a unit of 2,000 networks, offscreen: opening it
@@ -26,14 +27,23 @@ constexpr int kNetworks = 2000;
 // One unit whose PLC code has at least 2,000 networks: the generator's main
 // code holds 85 % of a unit's statements, most of them grouped under comments
 // (about eleven statements a network).
-const rs::project::Project& plant() {
-    static const rs::project::Project project = [] {
+constexpr int kPlantStatements = 27000;
+// A unit of ordinary size, for comparison: about 30 networks.
+constexpr int kSmallUnitStatements = 400;
+
+const rs::project::Project& plant(int statements) {
+    static std::map<int, rs::project::Project> projects;
+    auto found = projects.find(statements);
+    if (found == projects.end()) {
         rs::bench::GeneratorOptions options;
         options.units = 1;
-        options.statementsPerUnit = 27000;
-        return rs::project::readProject(rs::bench::generateProject(options)).project;
-    }();
-    return project;
+        options.statementsPerUnit = statements;
+        found = projects
+                    .emplace(statements,
+                             rs::project::readProject(rs::bench::generateProject(options)).project)
+                    .first;
+    }
+    return found->second;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -47,7 +57,8 @@ struct OpenPage {
     std::unique_ptr<rs::ui::LadderPage> page;
     QImage frame{1280, 800, QImage::Format_ARGB32_Premultiplied};
 
-    OpenPage() : document(std::make_unique<rs::ui::ProjectDocument>(plant())) {
+    explicit OpenPage(int statements = kPlantStatements)
+        : document(std::make_unique<rs::ui::ProjectDocument>(plant(statements))) {
         page = std::make_unique<rs::ui::LadderPage>();
         page->resize(1280, 900);
         page->setAttribute(Qt::WA_DontShowOnScreen);
@@ -115,7 +126,7 @@ BENCHMARK(BM_ZoomedOutFrame)->Unit(benchmark::kMillisecond);
 // each followed by the page (ladder model of the unit, layout of the networks
 // whose statement numbers moved) and a frame.
 void BM_PasteAndUndoMidway(benchmark::State& state) {
-    OpenPage open;
+    OpenPage open(static_cast<int>(state.range(0)));
     const int middle = open.page->networkCount(0) / 2;
     open.page->setCursor({0, middle, std::nullopt, std::nullopt, -1});
     open.page->copyNetworks();
@@ -125,8 +136,12 @@ void BM_PasteAndUndoMidway(benchmark::State& state) {
         open.document->undoStack()->undo();
         open.paintFrame();
     }
+    state.counters["networks"] = open.page->networkCount(0);
 }
-BENCHMARK(BM_PasteAndUndoMidway)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PasteAndUndoMidway)
+    ->Arg(kPlantStatements)
+    ->Arg(kSmallUnitStatements)
+    ->Unit(benchmark::kMillisecond);
 
 // A new live state on every network: what the simulator's screen updates cost.
 void BM_LiveRepaint(benchmark::State& state) {
