@@ -16,6 +16,7 @@
 #include <QDialog>
 #include <QFile>
 #include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
 #include <QImage>
 #include <QLineEdit>
 #include <QProcess>
@@ -166,11 +167,21 @@ TEST_F(LadderPageTest, BuildsTheManualsMutingProgramFromAnEmptyProject) {
     page().view()->setFocus();
     using rs::ladder::Symbol;
 
+    // The empty page says how to begin.
+    auto hintShown = [&] {
+        for (QGraphicsItem* item : page().scene()->items())
+            if (auto* text = dynamic_cast<QGraphicsSimpleTextItem*>(item))
+                return text->isVisible() && text->text().contains(QStringLiteral("Ins"));
+        return false;
+    };
+    EXPECT_TRUE(hintShown());
+
     // Network 1: the start circuit.
     key(Qt::Key_Insert);
     insert('L', QStringLiteral("q0.2"));
     insert('C', QStringLiteral("i0.12"));
     insert('P', QStringLiteral("i0.14"));
+    EXPECT_FALSE(hintShown());
     click(QStringLiteral("I0.12"));
     insert('C', QStringLiteral("i0.13"));
     key('\\');

@@ -23,6 +23,7 @@
 #include <QDrag>
 #include <QFileDialog>
 #include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
 #include <QInputDialog>
 #include <QKeyEvent>
 #include <QLabel>
@@ -106,6 +107,10 @@ LadderPage::LadderPage(QWidget* parent)
     layout->addWidget(m_toolBar);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_status);
+    m_emptyHint = m_scene->addSimpleText(
+        tr("No networks yet. Press Ins, or right-click > New Network, then insert the network's "
+           "output (L coil, S set, R reset, J jump ...) and its contacts."));
+    m_emptyHint->setVisible(false);
     createActions();
     m_view->keyHandler = [this](QKeyEvent* event) {
         return handleKey(event);
@@ -433,6 +438,14 @@ void LadderPage::placeItems() {
     }
     for (StepHeaderItem* header : m_headers)
         header->setWidth(width);
+    // An empty page says how to begin.
+    const bool empty =
+        std::all_of(m_items.begin(), m_items.end(), [](const auto& step) { return step.empty(); });
+    m_emptyHint->setVisible(empty && m_document);
+    m_emptyHint->setBrush(m_drawing.style.commentInk);
+    m_emptyHint->setPos(NetworkItem::kGutter, y + 16);
+    if (empty)
+        y += 60;
     m_scene->setSceneRect(0, 0, width, std::max<qreal>(y, 1));
 }
 

@@ -21,6 +21,7 @@
 class QAction;
 class QActionGroup;
 class QGraphicsScene;
+class QGraphicsSimpleTextItem;
 class QKeyEvent;
 class QLabel;
 class QPagedPaintDevice;
@@ -170,6 +171,7 @@ private:
     QGraphicsScene* m_scene;
     LadderView* m_view;
     QLabel* m_status;
+    QGraphicsSimpleTextItem* m_emptyHint = nullptr;
     QActionGroup* m_placementGroup = nullptr;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
