@@ -28,8 +28,9 @@ rs::lang::Document documentWithNames() {
 
 TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
     const auto document = documentWithNames();
-    for (const char* text : {"EStop", "/I0.2", "P(I0.14)", "N(/I0.1)", "/P(I0.3)", "TON(2s50)",
-                             "/TPS(R0.5)", "TOF(1s50)", "(Count>=5)", "/(R0.1=R0.2)"}) {
+    for (const char* text :
+         {"EStop", "/I0.2", "R0.3.7", "P(I0.14)", "N(/I0.1)", "/P(I0.3)", "TON(2s50)", "/TPS(R0.5)",
+          "TOF(1s50)", "(Count>=5)", "/(R0.1=R0.2)"}) {
         const ElementReading read = readElement(document, 0, text);
         ASSERT_TRUE(read.element) << text << ": " << read.error;
         EXPECT_EQ(elementText(*read.element), text);

@@ -8,6 +8,7 @@
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
+#include "ladder/StepHeaderItem.h"
 #include "lang/Printer.h"
 #include "project/ProjectFile.h"
 #include "project/UnitText.h"
@@ -18,6 +19,7 @@
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QImage>
+#include <QInputDialog>
 #include <QLineEdit>
 #include <QProcess>
 #include <QSignalSpy>
@@ -395,6 +397,25 @@ TEST_F(LadderPageTest, ElementsMoveBetweenNetworksAndSteps) {
         << unitText(1).toStdString();
     document()->undoStack()->undo();
     EXPECT_EQ(unitText(1), before);
+}
+
+TEST_F(LadderPageTest, ADoubleClickOnAStepsHeadingEditsItsComment) {
+    open(kTwoUnits + "S1.1_0\nJ(+1) = I1.3\n");
+    clickNode({PageRef::Kind::Ladder, document(), 1, 1});
+    rs::ui::StepHeaderItem* header = nullptr;
+    for (QGraphicsItem* item : page().scene()->items())
+        if (auto* found = dynamic_cast<rs::ui::StepHeaderItem*>(item))
+            header = found;
+    ASSERT_NE(header, nullptr);
+    DialogDriver driver({[](QDialog& dialog) {
+        static_cast<QInputDialog&>(dialog).setTextValue(QStringLiteral("Waiting for the sensors"));
+        dialog.accept();
+    }});
+    const QPoint where = page().view()->mapFromScene(header->sceneBoundingRect().center());
+    QTest::mouseDClick(viewport(), Qt::LeftButton, {}, where);
+    ASSERT_TRUE(driver.done());
+    EXPECT_TRUE(unitText(1).contains("S1.1_0") && unitText(1).contains("; Waiting for the sensors"))
+        << unitText(1).toStdString();
 }
 
 TEST_F(LadderPageTest, ATextEditLaysTheLadderOutAgain) {

@@ -27,6 +27,7 @@
 #include <QInputDialog>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMimeData>
 #include <QPainter>
@@ -784,6 +785,12 @@ void LadderPage::pressed(const QPointF& scenePosition, Qt::MouseButton button,
 void LadderPage::doubleClicked(const QPointF& scenePosition) {
     if (isLive())
         return;
+    for (std::size_t s = 0; s < m_headers.size(); ++s)
+        if (m_headers[s]->isVisible() &&
+            m_headers[s]->sceneBoundingRect().contains(scenePosition)) {
+            editStepComment(static_cast<int>(s));
+            return;
+        }
     NetworkItem* item = itemAt(scenePosition);
     if (!item)
         return;
@@ -1357,6 +1364,28 @@ void LadderPage::editNetworkComment() {
                     return ladder::EditResult{};
                 });
     setCursor({cursor.step, cursor.network, std::nullopt, std::nullopt, -1});
+}
+
+void LadderPage::editStepComment(int step) {
+    if (!m_document || isLive() || step < 0 || step >= stepCount())
+        return;
+    const lang::StepAddress address = m_steps[step].address;
+    const QString header = QString::fromStdString(lang::toString(address));
+    bool ok = false;
+    const QString comment =
+        QInputDialog::getText(this, tr("Step Comment"), tr("Comment of step %1:").arg(header),
+                              QLineEdit::Normal, m_stepComments[step], &ok)
+            .trimmed();
+    if (!ok || comment == m_stepComments[step])
+        return;
+    const int station = m_station;
+    m_document->edit(tr("Comment Step %1").arg(header), [&](project::Project& p) {
+        for (auto& s : project::programOf(p, station).steps)
+            if (s.address == address)
+                s.comment = comment.isEmpty()
+                                ? std::nullopt
+                                : std::optional<std::string>(" " + comment.toStdString());
+    });
 }
 
 void LadderPage::newStep() {

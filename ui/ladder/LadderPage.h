@@ -106,6 +106,7 @@ public:
     void toggleCollapsed(int step, int network);
     void editNetworkComment();
     void newStep();
+    void editStepComment(int step);
     bool isEditingNetwork() const { return m_editSession.has_value(); }
     void enterEditMode();
     void updateNetwork(); // F3
