@@ -13,6 +13,7 @@
 #include "project/ProjectFile.h"
 #include "project/UnitText.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QDialog>
 #include <QFile>
@@ -22,9 +23,11 @@
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QProcess>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include "QtPrinting.h"
 
@@ -490,6 +493,22 @@ TEST_F(LadderPageTest, AConfigOptionIsACheckBoxThatSetsOrResetsAMemory) {
     // Options are ordinary code to the compiler and read back as options.
     const auto reread = rs::project::readProject(document()->fileText().toStdString());
     EXPECT_TRUE(reread.ok());
+}
+
+TEST_F(LadderPageTest, AWheelNotchGlidesOneStepDown) {
+    QByteArray text = kEmptyProject + "S0.0_0\n";
+    for (int i = 0; i < 40; ++i)
+        text += QStringLiteral("M0.%1 = I0.%2\n").arg(i).arg(i % 16).toUtf8();
+    open(text);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    QScrollBar* bar = page().view()->verticalScrollBar();
+    ASSERT_GT(bar->maximum(), 1000);
+    const QPointF at(100, 100);
+    QWheelEvent notch(at, page().view()->viewport()->mapToGlobal(at), QPoint(), QPoint(0, -120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(page().view()->viewport(), &notch);
+    EXPECT_LT(bar->value(), 120); // on its way
+    EXPECT_TRUE(QTest::qWaitFor([&] { return bar->value() == 120; }, 2000)) << bar->value();
 }
 
 TEST_F(LadderPageTest, ZoomsWithTheKeysAndExportsPdf) {

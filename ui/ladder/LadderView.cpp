@@ -14,6 +14,8 @@ namespace rs::ui {
 namespace {
 
 constexpr qreal kZoomStep = 1.25;
+constexpr int kPixelsPerNotch = 120;
+constexpr int kGlideMs = 120;
 
 } // namespace
 
@@ -25,6 +27,10 @@ LadderView::LadderView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(s
     setOptimizationFlags(QGraphicsView::DontSavePainterState);
     setViewportUpdateMode(QGraphicsView::MinimalViewportUpdate);
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
+    m_glide.setDuration(kGlideMs);
+    m_glide.setEasingCurve(QEasingCurve::OutCubic);
+    connect(&m_glide, &QVariantAnimation::valueChanged, this,
+            [this](const QVariant& value) { verticalScrollBar()->setValue(value.toInt()); });
 }
 
 void LadderView::setZoom(qreal zoom) {
@@ -56,6 +62,24 @@ void LadderView::wheelEvent(QWheelEvent* event) {
         const QPointF shift = (now - under) * m_zoom;
         horizontalScrollBar()->setValue(horizontalScrollBar()->value() - qRound(shift.x()));
         verticalScrollBar()->setValue(verticalScrollBar()->value() - qRound(shift.y()));
+        event->accept();
+        return;
+    }
+    // A wheel notch glides to its place instead of jumping; a touchpad's pixel
+    // deltas are smooth already and go the usual way.
+    if (event->pixelDelta().isNull() && event->angleDelta().y() != 0 &&
+        !(event->modifiers() & Qt::ShiftModifier)) {
+        QScrollBar* bar = verticalScrollBar();
+        const bool gliding = m_glide.state() == QAbstractAnimation::Running;
+        const int from = bar->value();
+        const int to = std::clamp((gliding ? m_glideTarget : from) -
+                                      event->angleDelta().y() * kPixelsPerNotch / 120,
+                                  bar->minimum(), bar->maximum());
+        m_glideTarget = to;
+        m_glide.stop();
+        m_glide.setStartValue(from);
+        m_glide.setEndValue(to);
+        m_glide.start();
         event->accept();
         return;
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QGraphicsView>
+#include <QVariantAnimation>
 
 #include <functional>
 
@@ -55,6 +56,8 @@ protected:
 
 private:
     qreal m_zoom = 1;
+    QVariantAnimation m_glide; // smooth scrolling by wheel notches
+    int m_glideTarget = 0;
     QPoint m_pressAt;
     bool m_mayDrag = false;
 };
