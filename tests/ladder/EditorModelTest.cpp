@@ -1,10 +1,14 @@
 #include "StepText.h"
 #include "ladder/ConfigOption.h"
+#include "ladder/Editing.h"
 #include "ladder/ElementText.h"
 #include "ladder/LadderToText.h"
 #include "ladder/NetworkText.h"
 #include "ladder/TextToLadder.h"
+#include "ladder/UnitLadder.h"
 #include "lang/Parser.h"
+#include "project/Sequences.h"
+#include "project/UnitSettings.h"
 
 #include <gtest/gtest.h>
 
@@ -99,6 +103,38 @@ TEST(ConfigOption, OrdinaryNetworksAreNoOptions) {
         ASSERT_FALSE(read.networks.empty());
         EXPECT_FALSE(configOptionOf(read.networks.front())) << text;
     }
+}
+
+} // namespace
+
+namespace {
+
+TEST(Steps, ANewStepFollowsTheSequencesLastAndAFirstOneStartsTheSequence) {
+    rs::project::Project project = rs::test::projectWithCode("Q0.2 = I0.1\n");
+    const rs::project::AddedStep first = rs::project::addStep(project, 0, 1);
+    EXPECT_EQ(first.step, 0);
+    const rs::project::AddedStep second = rs::project::addStep(project, 0, 1);
+    EXPECT_EQ(second.step, 1);
+    EXPECT_FALSE(rs::project::addStep(project, 0, 10).refusal.empty());
+    std::vector<rs::lang::StepAddress> steps;
+    for (const auto& step : rs::project::programOf(project, 0).steps)
+        steps.push_back(step.address);
+    EXPECT_EQ(steps, (std::vector<rs::lang::StepAddress>{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}}));
+}
+
+TEST(Steps, ALadderIsWrittenBackIntoItsStep) {
+    rs::project::Project project = rs::test::projectWithCode("Q0.2 = I0.1\n");
+    rs::lang::UnitProgram& unit = rs::project::programOf(project, 0);
+    StepLadder ladder = toLadder(unit.steps.front());
+    ASSERT_TRUE(insertInSeries(ladder.networks.front(), {0, {}},
+                               Contact{ContactKind::NormallyClosed,
+                                       {{}, Address{AddressKind::Input, 0, 3}, {}},
+                                       false},
+                               Side::After)
+                    .done());
+    ASSERT_TRUE(setStepLadder(unit, {0, 0, 0}, ladder));
+    EXPECT_EQ(rs::test::printLines(unit.steps.front().lines), "Q0.2 = I0.1 * /I0.3\n");
+    EXPECT_FALSE(setStepLadder(unit, {0, 4, 0}, ladder));
 }
 
 } // namespace
