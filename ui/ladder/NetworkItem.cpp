@@ -228,9 +228,13 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
             continue;
         if (const auto note = drawing.live->annotations.find(key);
             note != drawing.live->annotations.end()) {
+            // The value takes the place of the address or preset it tells
+            // about ("1.20 s / 3.00 s" for "3s00"): below the cell the text
+            // would run into the next rung or the network's border.
+            const QRectF label = element.addressRect.translated(kGutter, 0);
+            painter.fillRect(label, drawing.style.background);
             painter.setPen(drawing.style.powered);
-            painter.drawText(cell.adjusted(0, 0, 0, 12), Qt::AlignHCenter | Qt::AlignBottom,
-                             note->second);
+            painter.drawText(label.adjusted(-12, 0, 12, 0), Qt::AlignCenter, note->second);
         }
         if (!element.address.isEmpty() && drawing.live->forced.count(element.address) > 0) {
             const QRectF badge(cell.right() - 18, cell.top() + 2, 14, 14);
