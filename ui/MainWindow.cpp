@@ -137,7 +137,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     });
     connect(m_textPage, &TextPage::repaired, this, [this](ProjectDocument* document) {
         rebuildTree();
-        showFirstPageOf(document);
+        // The user was typing: the unit's code stays in the text editor.
+        showFirstPageOf(document, PageRef::Kind::Code);
         showMessage(tr("The project reads without errors now; its pages are back."));
     });
     connect(m_ladderPage, &LadderPage::textRequested, this, [this] {
@@ -503,7 +504,7 @@ void MainWindow::rebuildTree() {
     m_tree->select(m_current);
 }
 
-void MainWindow::showFirstPageOf(ProjectDocument* document) {
+void MainWindow::showFirstPageOf(ProjectDocument* document, PageRef::Kind codeView) {
     if (document->isDamaged()) {
         showPage({PageRef::Kind::ProjectText, document, TextPage::kWholeProject});
         return;
@@ -512,7 +513,7 @@ void MainWindow::showFirstPageOf(ProjectDocument* document) {
     if (stations.empty())
         showPage({PageRef::Kind::Project, document});
     else
-        showPage({PageRef::Kind::Code, document, stations.front(), 0});
+        showPage({codeView, document, stations.front(), 0});
 }
 
 QString MainWindow::loadFile(const QString& path) {

@@ -129,7 +129,8 @@ private:
     void addDocument(ProjectDocument* document);
     void removeDocument(ProjectDocument* document);
     void rebuildTree();
-    void showFirstPageOf(ProjectDocument* document);
+    // A unit's code shows as ladder, or as text with Kind::Code.
+    void showFirstPageOf(ProjectDocument* document, PageRef::Kind codeView = PageRef::Kind::Ladder);
 
     void newProject();
     void open();

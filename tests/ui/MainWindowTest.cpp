@@ -8,6 +8,7 @@
 #include "RecentFiles.h"
 #include "TextPage.h"
 #include "VariablesPage.h"
+#include "ladder/LadderPage.h"
 
 #include <QAction>
 #include <QApplication>
@@ -56,6 +57,8 @@ protected:
     QWidget* currentPage() {
         return window.findChild<QStackedWidget*>(QStringLiteral("pages"))->currentWidget();
     }
+    // A unit's code opens as ladder; these tests type it.
+    void showCodeAsText() { ASSERT_TRUE(window.showPage(PageRef::Kind::Code, 0)); }
 };
 
 TEST_F(MainWindowTest, WithoutAProjectTheWindowSaysHowToStart) {
@@ -71,7 +74,9 @@ TEST_F(MainWindowTest, TheExampleOpensOnItsUnitsCode) {
     window.showExample();
     EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("Example, manual.sps[*] — ")));
     EXPECT_FALSE(window.isWindowModified());
-    EXPECT_EQ(currentPage(), static_cast<QWidget*>(window.textPage()));
+    EXPECT_EQ(currentPage(), static_cast<QWidget*>(window.ladderPage()));
+    EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Ladder);
+    showCodeAsText();
     EXPECT_TRUE(editor()->textBytes().startsWith("! pgm_pluto:00\n"));
     EXPECT_EQ(problems()->topLevelItemCount(), 0);
     EXPECT_EQ(summary(), QStringLiteral("0 errors, 0 warnings"));
@@ -89,6 +94,7 @@ TEST_F(MainWindowTest, TheExampleOpensOnItsUnitsCode) {
 
 TEST_F(MainWindowTest, TypingAnErrorShowsItAfterAPauseAndKeepsItOutOfTheProject) {
     window.showExample();
+    showCodeAsText();
     showWindow();
     const QByteArray before = projectText();
     editor()->setFocus();
@@ -123,6 +129,7 @@ TEST_F(MainWindowTest, TypingAnErrorShowsItAfterAPauseAndKeepsItOutOfTheProject)
 
 TEST_F(MainWindowTest, LeavingCodeWithErrorsAsksToKeepEditingOrDiscard) {
     window.showExample();
+    showCodeAsText();
     showWindow();
     const QByteArray before = projectText();
     editor()->setFocus();
@@ -146,6 +153,7 @@ TEST_F(MainWindowTest, LeavingCodeWithErrorsAsksToKeepEditingOrDiscard) {
 
 TEST_F(MainWindowTest, DoubleClickingAProblemMovesTheCursorThere) {
     window.showExample();
+    showCodeAsText();
     showWindow();
     editor()->setFocus();
     QTest::keyClick(editor(), Qt::Key_End, Qt::ControlModifier);
@@ -172,6 +180,7 @@ TEST_F(MainWindowTest, DoubleClickingAProblemMovesTheCursorThere) {
 
 TEST_F(MainWindowTest, FormatDocumentRewritesWhatWasTypedCanonically) {
     ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("messy.sps"), kMessyProject)).isEmpty());
+    showCodeAsText();
     showWindow();
     // The code shows as the project holds it: canonical.
     EXPECT_EQ(editor()->textBytes(), kCanonicalUnit);
@@ -222,6 +231,7 @@ TEST_F(MainWindowTest, SaveWritesTheCanonicalTextAndReopeningGivesItBack) {
     const QString path = writeFile(QStringLiteral("press.sps"), kMessyProject);
     ASSERT_TRUE(window.loadFile(path).isEmpty());
     EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("press.sps[*] — Rungsmith")));
+    showCodeAsText();
     showWindow();
     editor()->setFocus();
     QTest::keyClick(editor(), Qt::Key_End, Qt::ControlModifier);
