@@ -40,12 +40,122 @@
         <translation>unbekanntes Design &apos;%1&apos;; verwenden Sie light, dark oder system</translation>
     </message>
     <message>
-        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Die Seite, die gezeigt wird: text:N (der Code von Einheit N), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Die Seite, die gezeigt wird: ladder:N (der Code von Einheit N als Kontaktplan), text:N (als Text), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
-        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind text:N, io:N, variables:N und unit:N für Einheit N sowie project</translation>
+        <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
+        <translation>Zuerst das Szenario im Simulator ausführen, damit das Fenster den Zustand zeigt, in dem es endet.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, variables:N und unit:N für Einheit N sowie project</translation>
+    </message>
+</context>
+<context>
+    <name>ElementKinds</name>
+    <message>
+        <source>Contact (NO)</source>
+        <translation>Kontakt, Schließer (NO)</translation>
+    </message>
+    <message>
+        <source>Contact (NC)</source>
+        <translation>Kontakt, Öffner (NC)</translation>
+    </message>
+    <message>
+        <source>Positive Edge (P)</source>
+        <translation>Positive Flanke (P)</translation>
+    </message>
+    <message>
+        <source>Negative Edge (N)</source>
+        <translation>Negative Flanke (N)</translation>
+    </message>
+    <message>
+        <source>Not Positive Edge (/P)</source>
+        <translation>Nicht positive Flanke (/P)</translation>
+    </message>
+    <message>
+        <source>Not Negative Edge (/N)</source>
+        <translation>Nicht negative Flanke (/N)</translation>
+    </message>
+    <message>
+        <source>On-Delay Timer (TON)</source>
+        <translation>Einschaltverzögerter Timer (TON)</translation>
+    </message>
+    <message>
+        <source>Pulse Timer (TPS)</source>
+        <translation>Impulstimer (TPS)</translation>
+    </message>
+    <message>
+        <source>Off-Delay Timer (TOF)</source>
+        <translation>Ausschaltverzögerter Timer (TOF)</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <source>Coil</source>
+        <translation>Spule</translation>
+    </message>
+    <message>
+        <source>Set Latch</source>
+        <translation>Setzspule</translation>
+    </message>
+    <message>
+        <source>Reset Latch</source>
+        <translation>Rücksetzspule</translation>
+    </message>
+    <message>
+        <source>Toggle Latch</source>
+        <translation>Umschaltspule</translation>
+    </message>
+    <message>
+        <source>Jump</source>
+        <translation>Sprung</translation>
+    </message>
+    <message>
+        <source>Sequence Reset</source>
+        <translation>Sequenzrücksetzung</translation>
+    </message>
+    <message>
+        <source>Arithmetic</source>
+        <translation>Arithmetik</translation>
+    </message>
+    <message>
+        <source>Preset (time such as 2s50, or a register):</source>
+        <translation>Vorgabewert (eine Zeit wie 2s50 oder ein Register):</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>Register:</translation>
+    </message>
+    <message>
+        <source>Target register:</source>
+        <translation>Zielregister:</translation>
+    </message>
+    <message>
+        <source>Step (number, or +n / -n relative):</source>
+        <translation>Schritt (Nummer oder relativ +n / -n):</translation>
+    </message>
+    <message>
+        <source>Sequence (such as S0.1):</source>
+        <translation>Sequenz (z. B. S0.1):</translation>
+    </message>
+    <message>
+        <source>Variable:</source>
+        <translation>Variable:</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Option on</source>
+        <translation>Option ein</translation>
+    </message>
+    <message>
+        <source>Option off</source>
+        <translation>Option aus</translation>
     </message>
 </context>
 <context>
@@ -57,6 +167,53 @@
     <message>
         <source>Pluto %1</source>
         <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BusStatusView</name>
+    <message>
+        <source>Pluto %1: E0=No Error</source>
+        <translation>Pluto %1: E0=Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Pluto %1: Er%2</source>
+        <translation>Pluto %1: Er%2</translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation>Pluto</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>Missing</source>
+        <translation>Fehlt</translation>
+    </message>
+    <message>
+        <source>Ok, running</source>
+        <translation>OK, läuft</translation>
+    </message>
+    <message>
+        <source>Ok, stopped</source>
+        <translation>OK, gestoppt</translation>
+    </message>
+    <message>
+        <source>E0=No Error</source>
+        <translation>E0=Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Er%1</source>
+        <translation>Er%1</translation>
     </message>
 </context>
 <context>
@@ -112,6 +269,37 @@
     <message>
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
         <translation>Erstellen &gt; Kompilieren (F7) prüft das Projekt und schreibt die kompilierte Datei.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ConfigOptionDialog</name>
+    <message>
+        <source>&amp;Enabled</source>
+        <translation>&amp;Aktiviert</translation>
+    </message>
+    <message>
+        <source>Config Option</source>
+        <translation>Konfigurationsoption</translation>
+    </message>
+    <message>
+        <source>a memory, such as M%1.5</source>
+        <translation>ein Merker, z. B. M%1.5</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beschreibung:</translation>
+    </message>
+    <message>
+        <source>&amp;Memory:</source>
+        <translation>&amp;Merker:</translation>
+    </message>
+    <message>
+        <source>Describe the option: the description is what the check box says.</source>
+        <translation>Beschreiben Sie die Option: Die Beschreibung ist der Text des Kontrollkästchens.</translation>
+    </message>
+    <message>
+        <source>Only memories can be options (manual 11.6).</source>
+        <translation>Nur Merker können Optionen sein (Handbuch 11.6).</translation>
     </message>
 </context>
 <context>
@@ -271,6 +459,96 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ElementDialog</name>
+    <message>
+        <source>Value:</source>
+        <translation>Wert:</translation>
+    </message>
+    <message>
+        <source>&amp;Negated (passes power when false)</source>
+        <translation>&amp;Negiert (leitet, wenn falsch)</translation>
+    </message>
+    <message>
+        <source>Output Properties</source>
+        <translation>Ausgangseigenschaften</translation>
+    </message>
+    <message>
+        <source>Element Properties</source>
+        <translation>Elementeigenschaften</translation>
+    </message>
+    <message>
+        <source>such as &gt;= 5, = R0.2, += 2, ++</source>
+        <translation>z. B. &gt;= 5, = R0.2, += 2, ++</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>New &amp;Variable...</source>
+        <translation>Neue &amp;Variable …</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>New Variable</source>
+        <translation>Neue Variable</translation>
+    </message>
+    <message>
+        <source>&amp;Address:</source>
+        <translation>&amp;Adresse:</translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name:</source>
+        <translation>Symbolischer &amp;Name:</translation>
+    </message>
+    <message>
+        <source>Write an address such as I%1.0, Q%1.2 or M%1.5.</source>
+        <translation>Geben Sie eine Adresse wie I%1.0, Q%1.2 oder M%1.5 ein.</translation>
+    </message>
+    <message>
+        <source>Give the variable a name.</source>
+        <translation>Geben Sie der Variablen einen Namen.</translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation>%1 %2 nennen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ForcesView</name>
+    <message>
+        <source>&amp;Release</source>
+        <translation>Auf&amp;heben</translation>
+    </message>
+    <message>
+        <source>Release &amp;All</source>
+        <translation>&amp;Alle aufheben</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symbolischer Name</translation>
+    </message>
+    <message>
+        <source>Forced To</source>
+        <translation>Geforct auf</translation>
+    </message>
+    <message>
+        <source>Release the chosen force: the program writes the variable again</source>
+        <translation>Das gewählte Forcen aufheben: Das Programm schreibt die Variable wieder</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::IoOptionsPage</name>
     <message>
         <source>Failsafe inputs</source>
@@ -383,6 +661,374 @@
     <message>
         <source>Set I/O Options of %1</source>
         <translation>E/A-Optionen von %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::LadderPage</name>
+    <message>
+        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation>Noch keine Netzwerke. Drücken Sie Einfg oder klicken Sie mit der rechten Maustaste &gt; Neues Netzwerk, und fügen Sie dann den Ausgang des Netzwerks (L Spule, S Setzen, R Rücksetzen, J Sprung …) und seine Kontakte ein.</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation>Diesen Code als Text zeigen</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Danach</translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection (key ])</source>
+        <translation>In Reihe nach der Auswahl einfügen (Taste ])</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Davor</translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection (key [)</source>
+        <translation>In Reihe vor der Auswahl einfügen (Taste [)</translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation>Parallel</translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection (key \)</source>
+        <translation>In einem Parallelzweig um die Auswahl einfügen (Taste \)</translation>
+    </message>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation>%1 (Taste %2)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selected element (Del)</source>
+        <translation>Das ausgewählte Element löschen (Entf)</translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <translation>Neues Netzwerk</translation>
+    </message>
+    <message>
+        <source>A new network below the selected one (Ins)</source>
+        <translation>Ein neues Netzwerk unter dem ausgewählten (Einfg)</translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation>Alle aufklappen</translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation>Die Strompfade aller Netzwerke zeigen</translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation>Alle zuklappen</translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation>Nur die Kommentare der Netzwerke zeigen</translation>
+    </message>
+    <message>
+        <source>Edit Network</source>
+        <translation>Netzwerk bearbeiten</translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update (key E)</source>
+        <translation>Die nächsten Änderungen an diesem Netzwerk bis Aktualisieren sammeln (Taste E)</translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step (F3)</source>
+        <translation>Die Änderungen am Netzwerk als einen einzigen Bearbeitungsschritt übernehmen (F3)</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation>Netzwerk rückgängig</translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network (F2)</source>
+        <translation>Die Änderungen am Netzwerk verwerfen (F2)</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <source>Zoom in (Ctrl++)</source>
+        <translation>Vergrößern (Strg++)</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <source>Zoom out (Ctrl+-)</source>
+        <translation>Verkleinern (Strg+-)</translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Actual size (Ctrl+0)</source>
+        <translation>Originalgröße (Strg+0)</translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation>Drucken …</translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation>Die Netzwerke dieser Seite drucken</translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation>PDF …</translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation>Die Netzwerke dieser Seite als PDF exportieren</translation>
+    </message>
+    <message>
+        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
+        <translation>Tasten: C Kontakt, / Öffner, P N Flanken, O U F Timer, = Vergleich, L Spule, S R T Setz-, Rücksetz- und Umschaltspule, J Sprung, Q Sequenzrücksetzung, + Arithmetik; [ ] \ davor, danach, parallel; Enter Eigenschaften; Entf löschen; Einfg neues Netzwerk.</translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation>%1 — SPS-Code</translation>
+    </message>
+    <message>
+        <source>%1 — Sequence %2</source>
+        <translation>%1 — Sequenz %2</translation>
+    </message>
+    <message>
+        <source>The project changed, so the network&apos;s edits were dropped.</source>
+        <translation>Das Projekt hat sich geändert, deshalb wurden die Änderungen am Netzwerk verworfen.</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation>&amp;Neues Netzwerk</translation>
+    </message>
+    <message>
+        <source>&amp;Basic Network</source>
+        <translation>&amp;Einfaches Netzwerk</translation>
+    </message>
+    <message>
+        <source>&amp;Config Option...</source>
+        <translation>&amp;Konfigurationsoption …</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation>Netzwerk(e) &amp;ausschneiden</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation>Netzwerk(e) &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation>Netzwerk(e) ein&amp;fügen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation>Netzwerk(e) &amp;löschen</translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation>&amp;Eigenschaften …</translation>
+    </message>
+    <message>
+        <source>Delete &amp;Element</source>
+        <translation>Element lö&amp;schen</translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation>Netzwerkkommen&amp;tar …</translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation>Netzwerk &amp;bearbeiten</translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation>Neuer Sch&amp;ritt</translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation>Neue Se&amp;quenz …</translation>
+    </message>
+    <message>
+        <source>Not done: %1</source>
+        <translation>Nicht ausgeführt: %1</translation>
+    </message>
+    <message>
+        <source>Insert %1</source>
+        <translation>%1 einfügen</translation>
+    </message>
+    <message>
+        <source>A network starts with its output: insert a coil, latch, jump or arithmetic box first, then its contacts.</source>
+        <translation>Ein Netzwerk beginnt mit seinem Ausgang: Fügen Sie zuerst eine Spule, Setz-/Rücksetzspule, einen Sprung oder eine Arithmetikbox ein, dann seine Kontakte.</translation>
+    </message>
+    <message>
+        <source>Change Element</source>
+        <translation>Element ändern</translation>
+    </message>
+    <message>
+        <source>Change Output</source>
+        <translation>Ausgang ändern</translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation>Element löschen</translation>
+    </message>
+    <message>
+        <source>Delete Output</source>
+        <translation>Ausgang löschen</translation>
+    </message>
+    <message>
+        <source>This sequence has no step yet.</source>
+        <translation>Diese Sequenz hat noch keinen Schritt.</translation>
+    </message>
+    <message>
+        <source>New network: insert its output first (L coil, S set, R reset, J jump ...).</source>
+        <translation>Neues Netzwerk: Fügen Sie zuerst seinen Ausgang ein (L Spule, S Setzen, R Rücksetzen, J Sprung …).</translation>
+    </message>
+    <message>
+        <source>Options stand at the start of the PLC code: open the PLC Code page.</source>
+        <translation>Optionen stehen am Anfang des SPS-Codes: Öffnen Sie die Seite SPS-Code.</translation>
+    </message>
+    <message>
+        <source>New Config Option</source>
+        <translation>Neue Konfigurationsoption</translation>
+    </message>
+    <message>
+        <source>Change Config Option</source>
+        <translation>Konfigurationsoption ändern</translation>
+    </message>
+    <message>
+        <source>Enable Option</source>
+        <translation>Option aktivieren</translation>
+    </message>
+    <message>
+        <source>Disable Option</source>
+        <translation>Option deaktivieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) copied.</source>
+        <translation>
+            <numerusform>%n Netzwerk kopiert.</numerusform>
+            <numerusform>%n Netzwerke kopiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks.</source>
+        <translation>Die Zwischenablage enthält keine Netzwerke.</translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks: %1</source>
+        <translation>Die Zwischenablage enthält keine Netzwerke: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n Network(s)</source>
+        <translation>
+            <numerusform>%n Netzwerk einfügen</numerusform>
+            <numerusform>%n Netzwerke einfügen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Delete %n Network(s)</source>
+        <translation>
+            <numerusform>%n Netzwerk löschen</numerusform>
+            <numerusform>%n Netzwerke löschen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Insert the network&apos;s output before its comment.</source>
+        <translation>Fügen Sie den Ausgang des Netzwerks vor seinem Kommentar ein.</translation>
+    </message>
+    <message>
+        <source>Network Comment</source>
+        <translation>Netzwerkkommentar</translation>
+    </message>
+    <message>
+        <source>Comment of network %1:</source>
+        <translation>Kommentar zu Netzwerk %1:</translation>
+    </message>
+    <message>
+        <source>Comment Network %1</source>
+        <translation>Netzwerk %1 kommentieren</translation>
+    </message>
+    <message>
+        <source>Step Comment</source>
+        <translation>Schrittkommentar</translation>
+    </message>
+    <message>
+        <source>Comment of step %1:</source>
+        <translation>Kommentar zu Schritt %1:</translation>
+    </message>
+    <message>
+        <source>Comment Step %1</source>
+        <translation>Schritt %1 kommentieren</translation>
+    </message>
+    <message>
+        <source>New Step of Sequence %1</source>
+        <translation>Neuer Schritt in Sequenz %1</translation>
+    </message>
+    <message>
+        <source>Step %1 added: insert the output of its first network.</source>
+        <translation>Schritt %1 hinzugefügt: Fügen Sie den Ausgang seines ersten Netzwerks ein.</translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
+        <translation>Netzwerk %1 ist im Bearbeitungsmodus: Aktualisieren (F3) übernimmt die Änderungen als einen einzigen Bearbeitungsschritt, Rückgängig (F2) verwirft sie.</translation>
+    </message>
+    <message>
+        <source>Edit Network %1</source>
+        <translation>Netzwerk %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Network %1 updated.</source>
+        <translation>Netzwerk %1 aktualisiert.</translation>
+    </message>
+    <message>
+        <source>The edits of network %1 were dropped.</source>
+        <translation>Die Änderungen an Netzwerk %1 wurden verworfen.</translation>
+    </message>
+    <message>
+        <source>Not moved: %1</source>
+        <translation>Nicht verschoben: %1</translation>
+    </message>
+    <message>
+        <source>Move Element</source>
+        <translation>Element verschieben</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>PDF exportieren</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-Dokumente (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Nach %1 exportiert.</translation>
     </message>
 </context>
 <context>
@@ -823,6 +1469,14 @@
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Projekte, Einheiten, E/A-Optionen, Variablen und der Programmtext, geprüft und kompiliert.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Ladder or Text</source>
+        <translation>&amp;Kontaktplan oder Text</translation>
+    </message>
+    <message>
+        <source>Show the code as ladder networks or as text</source>
+        <translation>Den Code als Kontaktplan-Netzwerke oder als Text zeigen</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1183,6 +1837,232 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ScenarioFileViewer</name>
+    <message>
+        <source>&amp;Open in Editor</source>
+        <translation>Im Editor ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>%1 (read-only)</source>
+        <translation>%1 (schreibgeschützt)</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1, Zeile %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ScenarioResultsView</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation>%1: %2 bestanden, %3 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Double-click to show line %1 of %2</source>
+        <translation>Doppelklicken, um Zeile %1 von %2 zu zeigen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationControls</name>
+    <message>
+        <source>t = %1 s  (%2 scans)</source>
+        <translation>t = %1 s  (%2 Zyklen)</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simulieren</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Simulieren</translation>
+    </message>
+    <message>
+        <source>Si&amp;mulation Mode</source>
+        <translation>Si&amp;mulationsmodus</translation>
+    </message>
+    <message>
+        <source>Run the project in the simulator and show its live state; editing ends it</source>
+        <translation>Das Projekt im Simulator ausführen und seinen aktuellen Zustand zeigen; Bearbeiten beendet die Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock</source>
+        <translation>Das Programm mit der simulierten Uhr ausführen</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Anhalten</translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation>Programm und Uhr anhalten; der Zustand bleibt sichtbar</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Einzelzyklus</translation>
+    </message>
+    <message>
+        <source>Run one scan of every unit</source>
+        <translation>Einen Zyklus jeder Einheit ausführen</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; forces stay</source>
+        <translation>Erneut einschalten bei Zeit 0; Forcewerte bleiben erhalten</translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation>Sze&amp;nario ausführen …</translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) and list its results</source>
+        <translation>Eine Szenariodatei (.scn) ausführen und ihre Ergebnisse auflisten</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>Echtzeit</translation>
+    </message>
+    <message>
+        <source>10x</source>
+        <translation>10x</translation>
+    </message>
+    <message>
+        <source>As fast as possible</source>
+        <translation>So schnell wie möglich</translation>
+    </message>
+    <message>
+        <source>How fast the simulated clock runs</source>
+        <translation>Wie schnell die simulierte Uhr läuft</translation>
+    </message>
+    <message>
+        <source>The simulated clock</source>
+        <translation>Die simulierte Uhr</translation>
+    </message>
+    <message>
+        <source>S&amp;peed</source>
+        <translation>&amp;Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Not simulating</source>
+        <translation>Keine Simulation</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationMode</name>
+    <message>
+        <source>Forces</source>
+        <translation>Forcewerte</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Beobachtung</translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation>Signalverlauf</translation>
+    </message>
+    <message>
+        <source>Bus Status</source>
+        <translation>Busstatus</translation>
+    </message>
+    <message>
+        <source>Scenarios</source>
+        <translation>Szenarien</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation>Szenario ausführen</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation>Szenarien (*.scn);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Simulating %1. Editing the project ends the simulation.</source>
+        <translation>%1 wird simuliert. Bearbeiten des Projekts beendet die Simulation.</translation>
+    </message>
+    <message>
+        <source>%1 is not an input: right-click it to force it.</source>
+        <translation>%1 ist kein Eingang: Klicken Sie mit der rechten Maustaste darauf, um ihn zu forcen.</translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;0</source>
+        <translation>%1 auf &amp;0 forcen</translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;1</source>
+        <translation>%1 auf &amp;1 forcen</translation>
+    </message>
+    <message>
+        <source>Force %1 to a &amp;Value...</source>
+        <translation>%1 auf einen &amp;Wert forcen …</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>Forcen</translation>
+    </message>
+    <message>
+        <source>Value of %1:</source>
+        <translation>Wert von %1:</translation>
+    </message>
+    <message>
+        <source>&amp;Release %1</source>
+        <translation>Forcen von %1 &amp;aufheben</translation>
+    </message>
+    <message>
+        <source>&amp;Watch %1</source>
+        <translation>%1 &amp;beobachten</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationSession</name>
+    <message>
+        <source>No project is open.</source>
+        <translation>Kein Projekt ist geöffnet.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s text has errors; fix them before simulating.</source>
+        <translation>Der Text des Projekts hat Fehler; beheben Sie sie vor dem Simulieren.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation>
+            <numerusform>Das Projekt hat %n Fehler; kompilieren Sie es (F7), um den Fehler zu sehen.</numerusform>
+            <numerusform>Das Projekt hat %n Fehler; kompilieren Sie es (F7), um die Fehler zu sehen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project has no Pluto to simulate.</source>
+        <translation>Das Projekt hat keinen Pluto zum Simulieren.</translation>
+    </message>
+    <message>
+        <source>The project changed, so the simulation ended. Start it again to simulate the new version.</source>
+        <translation>Das Projekt hat sich geändert, deshalb wurde die Simulation beendet. Starten Sie sie erneut, um die neue Version zu simulieren.</translation>
+    </message>
+    <message>
+        <source>The project was closed, so the simulation ended.</source>
+        <translation>Das Projekt wurde geschlossen, deshalb wurde die Simulation beendet.</translation>
+    </message>
+    <message>
+        <source>The simulation is not running.</source>
+        <translation>Die Simulation läuft nicht.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::TextPage</name>
     <message>
         <source>%1 — Project Text</source>
@@ -1411,6 +2291,19 @@
         <source>Describe %1</source>
         <translation>%1 beschreiben</translation>
     </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation>%1 F</translation>
+    </message>
+    <message>
+        <source>Forced to %1 in the simulation; release it in the Forces list.</source>
+        <translation>In der Simulation auf %1 geforct; heben Sie das Forcen in der Liste Forcewerte auf.</translation>
+    </message>
+    <message>
+        <source>The value after the last scan of the simulation</source>
+        <translation>Der Wert nach dem letzten Zyklus der Simulation</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariablesPage</name>
@@ -1465,6 +2358,116 @@
     <message>
         <source>E&amp;xport Variable Names to CSV...</source>
         <translation>Variablennamen in CSV e&amp;xportieren …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WatchView</name>
+    <message>
+        <source>Symbolic name or address, e.g. Q0.2</source>
+        <translation>Symbolischer Name oder Adresse, z. B. Q0.2</translation>
+    </message>
+    <message>
+        <source>&amp;Watch</source>
+        <translation>&amp;Beobachten</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symbolischer Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Type a value to set an input or force any other variable</source>
+        <translation>Geben Sie einen Wert ein, um einen Eingang zu setzen oder eine andere Variable zu forcen</translation>
+    </message>
+    <message>
+        <source>Type a symbolic name or an address.</source>
+        <translation>Geben Sie einen symbolischen Namen oder eine Adresse ein.</translation>
+    </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation>%1 F</translation>
+    </message>
+    <message>
+        <source>Forced</source>
+        <translation>Geforct</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number.</source>
+        <translation>„%1“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>&amp;Release Force</source>
+        <translation>Forcen &amp;aufheben</translation>
+    </message>
+    <message>
+        <source>Stop &amp;Watching</source>
+        <translation>&amp;Nicht mehr beobachten</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot</source>
+        <translation>Eine Variable zum Darstellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation>Die gewählte Variable nicht mehr darstellen</translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation>Vergrößern: weniger Zeit zeigen (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation>Verkleinern: mehr Zeit zeigen (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation>Die ganze Aufzeichnung zeigen</translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation>VCD exportieren …</translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation>Die Aufzeichnung als Value Change Dump für GTKWave schreiben</translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation>VCD exportieren</translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation>Noch nichts aufgezeichnet: Starten Sie die Simulation oder führen Sie ein Szenario aus.</translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation>Value Change Dumps (*.vcd);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformView</name>
+    <message>
+        <source>Add variables to plot them over the simulation&apos;s time.</source>
+        <translation>Fügen Sie Variablen hinzu, um sie über die Zeit der Simulation darzustellen.</translation>
     </message>
 </context>
 </TS>

@@ -40,11 +40,121 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ElementKinds</name>
+    <message>
+        <source>Contact (NO)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact (NC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positive Edge (P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Negative Edge (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not Positive Edge (/P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not Negative Edge (/N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On-Delay Timer (TON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pulse Timer (TPS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off-Delay Timer (TOF)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coil</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Latch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset Latch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle Latch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arithmetic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preset (time such as 2s50, or a register):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target register:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step (number, or +n / -n relative):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence (such as S0.1):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Option on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Option off</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -56,6 +166,53 @@
     </message>
     <message>
         <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BusStatusView</name>
+    <message>
+        <source>Pluto %1: E0=No Error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1: Er%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ok, running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ok, stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E0=No Error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Er%1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -111,6 +268,37 @@
     </message>
     <message>
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ConfigOptionDialog</name>
+    <message>
+        <source>&amp;Enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Config Option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a memory, such as M%1.5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Memory:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Describe the option: the description is what the check box says.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only memories can be options (manual 11.6).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -271,6 +459,96 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ElementDialog</name>
+    <message>
+        <source>Value:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Negated (passes power when false)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output Properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Element Properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>such as &gt;= 5, = R0.2, += 2, ++</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Variable...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write an address such as I%1.0, Q%1.2 or M%1.5.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the variable a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ForcesView</name>
+    <message>
+        <source>&amp;Release</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Release &amp;All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forced To</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Release the chosen force: the program writes the variable again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::IoOptionsPage</name>
     <message>
         <source>Failsafe inputs</source>
@@ -382,6 +660,374 @@
     </message>
     <message>
         <source>Set I/O Options of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::LadderPage</name>
+    <message>
+        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection (key ])</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection (key [)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection (key \)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete the selected element (Del)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new network below the selected one (Ins)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update (key E)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step (F3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network (F2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom in (Ctrl++)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom out (Ctrl+-)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actual size (Ctrl+0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — Sequence %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project changed, so the network&apos;s edits were dropped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Basic Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Config Option...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete &amp;Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not done: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A network starts with its output: insert a coil, latch, jump or arithmetic box first, then its contacts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This sequence has no step yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New network: insert its output first (L coil, S set, R reset, J jump ...).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Options stand at the start of the PLC code: open the PLC Code page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Config Option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Config Option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable Option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable Option</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) copied.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n Network(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Delete %n Network(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Insert the network&apos;s output before its comment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network Comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment of network %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment Network %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step Comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment of step %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment Step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Step of Sequence %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step %1 added: insert the output of its first network.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit Network %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network %1 updated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The edits of network %1 were dropped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not moved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -823,6 +1469,14 @@
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Ladder or Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the code as ladder networks or as text</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1183,6 +1837,232 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ScenarioFileViewer</name>
+    <message>
+        <source>&amp;Open in Editor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (read-only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ScenarioResultsView</name>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double-click to show line %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationControls</name>
+    <message>
+        <source>t = %1 s  (%2 scans)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Si&amp;mulation Mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the project in the simulator and show its live state; editing ends it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run one scan of every unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; forces stay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) and list its results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As fast as possible</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast the simulated clock runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulated clock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;peed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not simulating</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationMode</name>
+    <message>
+        <source>Forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenarios</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulating %1. Editing the project ends the simulation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not an input: right-click it to force it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 to a &amp;Value...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Release %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Watch %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationSession</name>
+    <message>
+        <source>No project is open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project&apos;s text has errors; fix them before simulating.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project has no Pluto to simulate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project changed, so the simulation ended. Start it again to simulate the new version.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project was closed, so the simulation ended.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulation is not running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::TextPage</name>
     <message>
         <source>%1 — Project Text</source>
@@ -1411,6 +2291,19 @@
         <source>Describe %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forced to %1 in the simulation; release it in the Forces list.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The value after the last scan of the simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariablesPage</name>
@@ -1464,6 +2357,116 @@
     </message>
     <message>
         <source>E&amp;xport Variable Names to CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WatchView</name>
+    <message>
+        <source>Symbolic name or address, e.g. Q0.2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Watch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a value to set an input or force any other variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a symbolic name or an address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forced</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is not a number.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Release Force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop &amp;Watching</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformView</name>
+    <message>
+        <source>Add variables to plot them over the simulation&apos;s time.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -40,12 +40,122 @@
         <translation>okänt tema &apos;%1&apos;; använd light, dark eller system</translation>
     </message>
     <message>
-        <source>The page to show: text:N (the code of unit N), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Sidan som ska visas: text:N (koden för enhet N), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Sidan som ska visas: ladder:N (koden för enhet N som stegdiagram), text:N (som text), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are text:N, io:N, variables:N and unit:N for unit N, and project</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är text:N, io:N, variables:N och unit:N för enhet N, samt project</translation>
+        <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
+        <translation>Kör först scenariot i simulatorn, så att fönstret visar det tillstånd som det slutar i.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, variables:N och unit:N för enhet N, samt project</translation>
+    </message>
+</context>
+<context>
+    <name>ElementKinds</name>
+    <message>
+        <source>Contact (NO)</source>
+        <translation>Kontakt, slutande (NO)</translation>
+    </message>
+    <message>
+        <source>Contact (NC)</source>
+        <translation>Kontakt, brytande (NC)</translation>
+    </message>
+    <message>
+        <source>Positive Edge (P)</source>
+        <translation>Positiv flank (P)</translation>
+    </message>
+    <message>
+        <source>Negative Edge (N)</source>
+        <translation>Negativ flank (N)</translation>
+    </message>
+    <message>
+        <source>Not Positive Edge (/P)</source>
+        <translation>Inte positiv flank (/P)</translation>
+    </message>
+    <message>
+        <source>Not Negative Edge (/N)</source>
+        <translation>Inte negativ flank (/N)</translation>
+    </message>
+    <message>
+        <source>On-Delay Timer (TON)</source>
+        <translation>Tillslagsfördröjd timer (TON)</translation>
+    </message>
+    <message>
+        <source>Pulse Timer (TPS)</source>
+        <translation>Pulstimer (TPS)</translation>
+    </message>
+    <message>
+        <source>Off-Delay Timer (TOF)</source>
+        <translation>Frånslagsfördröjd timer (TOF)</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>Jämförelse</translation>
+    </message>
+    <message>
+        <source>Coil</source>
+        <translation>Spole</translation>
+    </message>
+    <message>
+        <source>Set Latch</source>
+        <translation>Sättande spole</translation>
+    </message>
+    <message>
+        <source>Reset Latch</source>
+        <translation>Återställande spole</translation>
+    </message>
+    <message>
+        <source>Toggle Latch</source>
+        <translation>Växlande spole</translation>
+    </message>
+    <message>
+        <source>Jump</source>
+        <translation>Hopp</translation>
+    </message>
+    <message>
+        <source>Sequence Reset</source>
+        <translation>Sekvensåterställning</translation>
+    </message>
+    <message>
+        <source>Arithmetic</source>
+        <translation>Aritmetik</translation>
+    </message>
+    <message>
+        <source>Preset (time such as 2s50, or a register):</source>
+        <translation>Förinställt värde (en tid som 2s50, eller ett register):</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>Register:</translation>
+    </message>
+    <message>
+        <source>Target register:</source>
+        <translation>Målregister:</translation>
+    </message>
+    <message>
+        <source>Step (number, or +n / -n relative):</source>
+        <translation>Steg (nummer, eller relativt +n / -n):</translation>
+    </message>
+    <message>
+        <source>Sequence (such as S0.1):</source>
+        <translation>Sekvens (t.ex. S0.1):</translation>
+    </message>
+    <message>
+        <source>Variable:</source>
+        <translation>Variabel:</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Option on</source>
+        <translation>Alternativ till</translation>
+    </message>
+    <message>
+        <source>Option off</source>
+        <translation>Alternativ från</translation>
     </message>
 </context>
 <context>
@@ -57,6 +167,53 @@
     <message>
         <source>Pluto %1</source>
         <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BusStatusView</name>
+    <message>
+        <source>Pluto %1: E0=No Error</source>
+        <translation>Pluto %1: E0=Inget fel</translation>
+    </message>
+    <message>
+        <source>Pluto %1: Er%2</source>
+        <translation>Pluto %1: Er%2</translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation>Pluto</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Tillstånd</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Kod</translation>
+    </message>
+    <message>
+        <source>Missing</source>
+        <translation>Saknas</translation>
+    </message>
+    <message>
+        <source>Ok, running</source>
+        <translation>OK, körs</translation>
+    </message>
+    <message>
+        <source>Ok, stopped</source>
+        <translation>OK, stoppad</translation>
+    </message>
+    <message>
+        <source>E0=No Error</source>
+        <translation>E0=Inget fel</translation>
+    </message>
+    <message>
+        <source>Er%1</source>
+        <translation>Er%1</translation>
     </message>
 </context>
 <context>
@@ -112,6 +269,37 @@
     <message>
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
         <translation>Bygg &gt; Kompilera (F7) kontrollerar projektet och skriver den kompilerade filen.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ConfigOptionDialog</name>
+    <message>
+        <source>&amp;Enabled</source>
+        <translation>&amp;Aktiverat</translation>
+    </message>
+    <message>
+        <source>Config Option</source>
+        <translation>Konfigurationsalternativ</translation>
+    </message>
+    <message>
+        <source>a memory, such as M%1.5</source>
+        <translation>ett minne, t.ex. M%1.5</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beskrivning:</translation>
+    </message>
+    <message>
+        <source>&amp;Memory:</source>
+        <translation>&amp;Minne:</translation>
+    </message>
+    <message>
+        <source>Describe the option: the description is what the check box says.</source>
+        <translation>Beskriv alternativet: beskrivningen är texten vid kryssrutan.</translation>
+    </message>
+    <message>
+        <source>Only memories can be options (manual 11.6).</source>
+        <translation>Endast minnen kan vara alternativ (manualen 11.6).</translation>
     </message>
 </context>
 <context>
@@ -271,6 +459,96 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ElementDialog</name>
+    <message>
+        <source>Value:</source>
+        <translation>Värde:</translation>
+    </message>
+    <message>
+        <source>&amp;Negated (passes power when false)</source>
+        <translation>&amp;Negerad (leder när den är falsk)</translation>
+    </message>
+    <message>
+        <source>Output Properties</source>
+        <translation>Egenskaper för utgång</translation>
+    </message>
+    <message>
+        <source>Element Properties</source>
+        <translation>Egenskaper för element</translation>
+    </message>
+    <message>
+        <source>such as &gt;= 5, = R0.2, += 2, ++</source>
+        <translation>t.ex. &gt;= 5, = R0.2, += 2, ++</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>New &amp;Variable...</source>
+        <translation>Ny &amp;variabel …</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>New Variable</source>
+        <translation>Ny variabel</translation>
+    </message>
+    <message>
+        <source>&amp;Address:</source>
+        <translation>&amp;Adress:</translation>
+    </message>
+    <message>
+        <source>Symbolic &amp;name:</source>
+        <translation>Symboliskt &amp;namn:</translation>
+    </message>
+    <message>
+        <source>Write an address such as I%1.0, Q%1.2 or M%1.5.</source>
+        <translation>Skriv en adress, t.ex. I%1.0, Q%1.2 eller M%1.5.</translation>
+    </message>
+    <message>
+        <source>Give the variable a name.</source>
+        <translation>Ge variabeln ett namn.</translation>
+    </message>
+    <message>
+        <source>Name %1 %2</source>
+        <translation>Ge %1 namnet %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ForcesView</name>
+    <message>
+        <source>&amp;Release</source>
+        <translation>&amp;Häv</translation>
+    </message>
+    <message>
+        <source>Release &amp;All</source>
+        <translation>Häv &amp;alla</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabel</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symboliskt namn</translation>
+    </message>
+    <message>
+        <source>Forced To</source>
+        <translation>Forcerad till</translation>
+    </message>
+    <message>
+        <source>Release the chosen force: the program writes the variable again</source>
+        <translation>Häv den valda forceringen: programmet skriver variabeln igen</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::IoOptionsPage</name>
     <message>
         <source>Failsafe inputs</source>
@@ -383,6 +661,374 @@
     <message>
         <source>Set I/O Options of %1</source>
         <translation>Ställ in I/O-alternativ för %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::LadderPage</name>
+    <message>
+        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation>Inga nätverk än. Tryck på Ins, eller högerklicka &gt; Nytt nätverk, och infoga sedan nätverkets utgång (L spole, S sätt, R återställ, J hopp …) och dess kontakter.</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation>Visa koden som text</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Efter</translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection (key ])</source>
+        <translation>Infoga i serie efter markeringen (tangent ])</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Före</translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection (key [)</source>
+        <translation>Infoga i serie före markeringen (tangent [)</translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation>Parallellt</translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection (key \)</source>
+        <translation>Infoga i en parallell gren runt markeringen (tangent \)</translation>
+    </message>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation>%1 (tangent %2)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Ta bort</translation>
+    </message>
+    <message>
+        <source>Delete the selected element (Del)</source>
+        <translation>Ta bort det markerade elementet (Del)</translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <translation>Nytt nätverk</translation>
+    </message>
+    <message>
+        <source>A new network below the selected one (Ins)</source>
+        <translation>Ett nytt nätverk under det markerade (Ins)</translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation>Fäll ut alla</translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation>Visa strömvägarna i alla nätverk</translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation>Fäll ihop alla</translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation>Visa endast nätverkens kommentarer</translation>
+    </message>
+    <message>
+        <source>Edit Network</source>
+        <translation>Redigera nätverk</translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update (key E)</source>
+        <translation>Samla nästa ändringar i nätverket fram till Uppdatera (tangent E)</translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation>Uppdatera</translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step (F3)</source>
+        <translation>Behåll ändringarna i nätverket som ett enda ändringssteg (F3)</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation>Ångra nätverk</translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network (F2)</source>
+        <translation>Kasta ändringarna i nätverket (F2)</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>Zooma in</translation>
+    </message>
+    <message>
+        <source>Zoom in (Ctrl++)</source>
+        <translation>Zooma in (Ctrl++)</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>Zooma ut</translation>
+    </message>
+    <message>
+        <source>Zoom out (Ctrl+-)</source>
+        <translation>Zooma ut (Ctrl+-)</translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Actual size (Ctrl+0)</source>
+        <translation>Verklig storlek (Ctrl+0)</translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation>Skriv ut …</translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation>Skriv ut nätverken på den här sidan</translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation>PDF …</translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation>Exportera nätverken på den här sidan som PDF</translation>
+    </message>
+    <message>
+        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
+        <translation>Tangenter: C kontakt, / NC, P N flanker, O U F timrar, = jämförelse, L spole, S R T sättande, återställande och växlande spolar, J hopp, Q sekvensåterställning, + aritmetik; [ ] \ före, efter, parallellt; Enter egenskaper; Del ta bort; Ins nytt nätverk.</translation>
+    </message>
+    <message>
+        <source>%1 — PLC Code</source>
+        <translation>%1 — PLC-kod</translation>
+    </message>
+    <message>
+        <source>%1 — Sequence %2</source>
+        <translation>%1 — Sekvens %2</translation>
+    </message>
+    <message>
+        <source>The project changed, so the network&apos;s edits were dropped.</source>
+        <translation>Projektet ändrades, så nätverkets ändringar kastades.</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Steg %1</translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation>&amp;Nytt nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Basic Network</source>
+        <translation>&amp;Enkelt nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Config Option...</source>
+        <translation>&amp;Konfigurationsalternativ …</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation>Klipp &amp;ut nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation>&amp;Kopiera nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation>Klistra &amp;in nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation>&amp;Ta bort nätverk</translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation>&amp;Egenskaper …</translation>
+    </message>
+    <message>
+        <source>Delete &amp;Element</source>
+        <translation>Ta bort e&amp;lement</translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation>Nätverksko&amp;mmentar …</translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation>&amp;Redigera nätverk</translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation>Nytt &amp;steg</translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation>Ny sek&amp;vens …</translation>
+    </message>
+    <message>
+        <source>Not done: %1</source>
+        <translation>Inte utfört: %1</translation>
+    </message>
+    <message>
+        <source>Insert %1</source>
+        <translation>Infoga %1</translation>
+    </message>
+    <message>
+        <source>A network starts with its output: insert a coil, latch, jump or arithmetic box first, then its contacts.</source>
+        <translation>Ett nätverk börjar med sin utgång: infoga först en spole, sättande/återställande spole, ett hopp eller en aritmetikbox, sedan dess kontakter.</translation>
+    </message>
+    <message>
+        <source>Change Element</source>
+        <translation>Ändra element</translation>
+    </message>
+    <message>
+        <source>Change Output</source>
+        <translation>Ändra utgång</translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation>Ta bort element</translation>
+    </message>
+    <message>
+        <source>Delete Output</source>
+        <translation>Ta bort utgång</translation>
+    </message>
+    <message>
+        <source>This sequence has no step yet.</source>
+        <translation>Sekvensen har inget steg än.</translation>
+    </message>
+    <message>
+        <source>New network: insert its output first (L coil, S set, R reset, J jump ...).</source>
+        <translation>Nytt nätverk: infoga först dess utgång (L spole, S sätt, R återställ, J hopp …).</translation>
+    </message>
+    <message>
+        <source>Options stand at the start of the PLC code: open the PLC Code page.</source>
+        <translation>Alternativ står i början av PLC-koden: öppna sidan PLC-kod.</translation>
+    </message>
+    <message>
+        <source>New Config Option</source>
+        <translation>Nytt konfigurationsalternativ</translation>
+    </message>
+    <message>
+        <source>Change Config Option</source>
+        <translation>Ändra konfigurationsalternativ</translation>
+    </message>
+    <message>
+        <source>Enable Option</source>
+        <translation>Aktivera alternativ</translation>
+    </message>
+    <message>
+        <source>Disable Option</source>
+        <translation>Inaktivera alternativ</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) copied.</source>
+        <translation>
+            <numerusform>%n nätverk kopierat.</numerusform>
+            <numerusform>%n nätverk kopierade.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks.</source>
+        <translation>Urklipp innehåller inga nätverk.</translation>
+    </message>
+    <message>
+        <source>The clipboard holds no networks: %1</source>
+        <translation>Urklipp innehåller inga nätverk: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n Network(s)</source>
+        <translation>
+            <numerusform>Klistra in %n nätverk</numerusform>
+            <numerusform>Klistra in %n nätverk</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Delete %n Network(s)</source>
+        <translation>
+            <numerusform>Ta bort %n nätverk</numerusform>
+            <numerusform>Ta bort %n nätverk</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Insert the network&apos;s output before its comment.</source>
+        <translation>Infoga nätverkets utgång före dess kommentar.</translation>
+    </message>
+    <message>
+        <source>Network Comment</source>
+        <translation>Nätverkskommentar</translation>
+    </message>
+    <message>
+        <source>Comment of network %1:</source>
+        <translation>Kommentar till nätverk %1:</translation>
+    </message>
+    <message>
+        <source>Comment Network %1</source>
+        <translation>Kommentera nätverk %1</translation>
+    </message>
+    <message>
+        <source>Step Comment</source>
+        <translation>Stegkommentar</translation>
+    </message>
+    <message>
+        <source>Comment of step %1:</source>
+        <translation>Kommentar till steg %1:</translation>
+    </message>
+    <message>
+        <source>Comment Step %1</source>
+        <translation>Kommentera steg %1</translation>
+    </message>
+    <message>
+        <source>New Step of Sequence %1</source>
+        <translation>Nytt steg i sekvens %1</translation>
+    </message>
+    <message>
+        <source>Step %1 added: insert the output of its first network.</source>
+        <translation>Steg %1 tillagt: infoga utgången i dess första nätverk.</translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
+        <translation>Nätverk %1 är i redigeringsläge: Uppdatera (F3) behåller ändringarna som ett enda ändringssteg, Ångra (F2) kastar dem.</translation>
+    </message>
+    <message>
+        <source>Edit Network %1</source>
+        <translation>Redigera nätverk %1</translation>
+    </message>
+    <message>
+        <source>Network %1 updated.</source>
+        <translation>Nätverk %1 uppdaterat.</translation>
+    </message>
+    <message>
+        <source>The edits of network %1 were dropped.</source>
+        <translation>Ändringarna i nätverk %1 kastades.</translation>
+    </message>
+    <message>
+        <source>Not moved: %1</source>
+        <translation>Inte flyttat: %1</translation>
+    </message>
+    <message>
+        <source>Move Element</source>
+        <translation>Flytta element</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>Exportera PDF</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exporterat till %1.</translation>
     </message>
 </context>
 <context>
@@ -823,6 +1469,14 @@
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: projekt, enheter, I/O-alternativ, variabler och programtexten, kontrollerade och kompilerade.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Ladder or Text</source>
+        <translation>&amp;Stegdiagram eller text</translation>
+    </message>
+    <message>
+        <source>Show the code as ladder networks or as text</source>
+        <translation>Visa koden som stegdiagramnätverk eller som text</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1183,6 +1837,232 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ScenarioFileViewer</name>
+    <message>
+        <source>&amp;Open in Editor</source>
+        <translation>&amp;Öppna i redigeraren</translation>
+    </message>
+    <message>
+        <source>%1 (read-only)</source>
+        <translation>%1 (skrivskyddad)</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1, rad %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ScenarioResultsView</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation>%1: %2 godkända, %3 underkända</translation>
+    </message>
+    <message>
+        <source>Double-click to show line %1 of %2</source>
+        <translation>Dubbelklicka för att visa rad %1 i %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationControls</name>
+    <message>
+        <source>t = %1 s  (%2 scans)</source>
+        <translation>t = %1 s  (%2 cykler)</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simulera</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Simulera</translation>
+    </message>
+    <message>
+        <source>Si&amp;mulation Mode</source>
+        <translation>Si&amp;muleringsläge</translation>
+    </message>
+    <message>
+        <source>Run the project in the simulator and show its live state; editing ends it</source>
+        <translation>Kör projektet i simulatorn och visa dess aktuella tillstånd; redigering avslutar simuleringen</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starta</translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock</source>
+        <translation>Kör programmet med den simulerade klockan</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>S&amp;toppa</translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation>Stoppa programmet och klockan; tillståndet visas kvar</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>En &amp;cykel</translation>
+    </message>
+    <message>
+        <source>Run one scan of every unit</source>
+        <translation>Kör en cykel i varje enhet</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>Starta &amp;om</translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; forces stay</source>
+        <translation>Slå på igen vid tiden 0; forceringar ligger kvar</translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation>Kör sce&amp;nario …</translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) and list its results</source>
+        <translation>Kör en scenariofil (.scn) och lista dess resultat</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>Realtid</translation>
+    </message>
+    <message>
+        <source>10x</source>
+        <translation>10x</translation>
+    </message>
+    <message>
+        <source>As fast as possible</source>
+        <translation>Så snabbt som möjligt</translation>
+    </message>
+    <message>
+        <source>How fast the simulated clock runs</source>
+        <translation>Hur snabbt den simulerade klockan går</translation>
+    </message>
+    <message>
+        <source>The simulated clock</source>
+        <translation>Den simulerade klockan</translation>
+    </message>
+    <message>
+        <source>S&amp;peed</source>
+        <translation>&amp;Hastighet</translation>
+    </message>
+    <message>
+        <source>Not simulating</source>
+        <translation>Ingen simulering</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationMode</name>
+    <message>
+        <source>Forces</source>
+        <translation>Forceringar</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Bevakning</translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation>Vågform</translation>
+    </message>
+    <message>
+        <source>Bus Status</source>
+        <translation>Busstatus</translation>
+    </message>
+    <message>
+        <source>Scenarios</source>
+        <translation>Scenarier</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulering</translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation>Kör scenario</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation>Scenarier (*.scn);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>Simulating %1. Editing the project ends the simulation.</source>
+        <translation>Simulerar %1. Om projektet redigeras avslutas simuleringen.</translation>
+    </message>
+    <message>
+        <source>%1 is not an input: right-click it to force it.</source>
+        <translation>%1 är inte en ingång: högerklicka på den för att forcera den.</translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;0</source>
+        <translation>Forcera %1 till &amp;0</translation>
+    </message>
+    <message>
+        <source>Force %1 to &amp;1</source>
+        <translation>Forcera %1 till &amp;1</translation>
+    </message>
+    <message>
+        <source>Force %1 to a &amp;Value...</source>
+        <translation>Forcera %1 till ett &amp;värde …</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>Forcera</translation>
+    </message>
+    <message>
+        <source>Value of %1:</source>
+        <translation>Värde för %1:</translation>
+    </message>
+    <message>
+        <source>&amp;Release %1</source>
+        <translation>&amp;Häv forceringen av %1</translation>
+    </message>
+    <message>
+        <source>&amp;Watch %1</source>
+        <translation>&amp;Bevaka %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SimulationSession</name>
+    <message>
+        <source>No project is open.</source>
+        <translation>Inget projekt är öppet.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s text has errors; fix them before simulating.</source>
+        <translation>Projektets text har fel; rätta dem innan du simulerar.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation>
+            <numerusform>Projektet har %n fel; kompilera det (F7) för att se felet.</numerusform>
+            <numerusform>Projektet har %n fel; kompilera det (F7) för att se felen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project has no Pluto to simulate.</source>
+        <translation>Projektet har ingen Pluto att simulera.</translation>
+    </message>
+    <message>
+        <source>The project changed, so the simulation ended. Start it again to simulate the new version.</source>
+        <translation>Projektet ändrades, så simuleringen avslutades. Starta den igen för att simulera den nya versionen.</translation>
+    </message>
+    <message>
+        <source>The project was closed, so the simulation ended.</source>
+        <translation>Projektet stängdes, så simuleringen avslutades.</translation>
+    </message>
+    <message>
+        <source>The simulation is not running.</source>
+        <translation>Simuleringen körs inte.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::TextPage</name>
     <message>
         <source>%1 — Project Text</source>
@@ -1411,6 +2291,19 @@
         <source>Describe %1</source>
         <translation>Beskriv %1</translation>
     </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation>%1 F</translation>
+    </message>
+    <message>
+        <source>Forced to %1 in the simulation; release it in the Forces list.</source>
+        <translation>Forcerad till %1 i simuleringen; häv forceringen i listan Forceringar.</translation>
+    </message>
+    <message>
+        <source>The value after the last scan of the simulation</source>
+        <translation>Värdet efter simuleringens senaste cykel</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariablesPage</name>
@@ -1465,6 +2358,116 @@
     <message>
         <source>E&amp;xport Variable Names to CSV...</source>
         <translation>E&amp;xportera variabelnamn till CSV …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WatchView</name>
+    <message>
+        <source>Symbolic name or address, e.g. Q0.2</source>
+        <translation>Symboliskt namn eller adress, t.ex. Q0.2</translation>
+    </message>
+    <message>
+        <source>&amp;Watch</source>
+        <translation>&amp;Bevaka</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabel</translation>
+    </message>
+    <message>
+        <source>Symbolic Name</source>
+        <translation>Symboliskt namn</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Värde</translation>
+    </message>
+    <message>
+        <source>Type a value to set an input or force any other variable</source>
+        <translation>Skriv ett värde för att sätta en ingång eller forcera en annan variabel</translation>
+    </message>
+    <message>
+        <source>Type a symbolic name or an address.</source>
+        <translation>Skriv ett symboliskt namn eller en adress.</translation>
+    </message>
+    <message>
+        <source>%1 F</source>
+        <comment>a forced value</comment>
+        <translation>%1 F</translation>
+    </message>
+    <message>
+        <source>Forced</source>
+        <translation>Forcerad</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number.</source>
+        <translation>”%1” är inte ett tal.</translation>
+    </message>
+    <message>
+        <source>&amp;Release Force</source>
+        <translation>&amp;Häv forcering</translation>
+    </message>
+    <message>
+        <source>Stop &amp;Watching</source>
+        <translation>Sluta &amp;bevaka</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot</source>
+        <translation>Lägg till en variabel att rita</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Ta bort</translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation>Sluta rita den valda variabeln</translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation>Zooma in: visa kortare tid (Ctrl+hjul)</translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation>Zooma ut: visa längre tid (Ctrl+hjul)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Anpassa</translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation>Visa hela inspelningen</translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation>Exportera VCD …</translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation>Skriv inspelningen som en Value Change Dump, för GTKWave</translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation>Exportera VCD</translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation>Inget är inspelat än: starta simuleringen eller kör ett scenario.</translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation>Value Change Dumps (*.vcd);;Alla filer (*)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WaveformView</name>
+    <message>
+        <source>Add variables to plot them over the simulation&apos;s time.</source>
+        <translation>Lägg till variabler för att rita dem över simuleringens tid.</translation>
     </message>
 </context>
 </TS>
