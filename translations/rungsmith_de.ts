@@ -1466,16 +1466,16 @@
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Projekte, Einheiten, E/A-Optionen, Variablen und der Programmtext, geprüft und kompiliert.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&amp;Ladder or Text</source>
         <translation>&amp;Kontaktplan oder Text</translation>
     </message>
     <message>
         <source>Show the code as ladder networks or as text</source>
         <translation>Den Code als Kontaktplan-Netzwerke oder als Text zeigen</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program as ladder and as text, checked, compiled and simulated.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Projekte, Einheiten, E/A-Optionen, Variablen und das Programm als Kontaktplan und als Text, geprüft, übersetzt und simuliert.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

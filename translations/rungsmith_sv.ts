@@ -1466,16 +1466,16 @@
         <translation>&amp;Återställ</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program text, checked and compiled.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: projekt, enheter, I/O-alternativ, variabler och programtexten, kontrollerade och kompilerade.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&amp;Ladder or Text</source>
         <translation>&amp;Stegdiagram eller text</translation>
     </message>
     <message>
         <source>Show the code as ladder networks or as text</source>
         <translation>Visa koden som stegdiagramnätverk eller som text</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program as ladder and as text, checked, compiled and simulated.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: projekt, enheter, I/O-alternativ, variabler och programmet som stegdiagram och som text, kontrollerat, kompilerat och simulerat.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

@@ -1202,9 +1202,9 @@ void MainWindow::about() {
         this, tr("About Rungsmith"),
         tr("<h3>Rungsmith %1</h3>"
            "<p>An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the "
-           "program text, checked and compiled.</p>"
+           "program as ladder and as text, checked, compiled and simulated.</p>"
            "<p>Built with Qt %2 and QScintilla %3.</p>")
-            .arg(QStringLiteral(RUNGSMITH_VERSION), QString::fromLatin1(qVersion()),
+            .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion()),
                  QStringLiteral(QSCINTILLA_VERSION_STR)));
 }
 
