@@ -2462,6 +2462,14 @@
         <source>Value Change Dumps (*.vcd);;All files (*)</source>
         <translation>Value Change Dumps (*.vcd);;Alle Dateien (*)</translation>
     </message>
+    <message>
+        <source>Remove All</source>
+        <translation>Alle entfernen</translation>
+    </message>
+    <message>
+        <source>Stop plotting every variable, also those a scenario added</source>
+        <translation>Keine Variable mehr darstellen, auch nicht die von einem Szenario hinzugefügten</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformView</name>

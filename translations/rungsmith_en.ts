@@ -2462,6 +2462,14 @@
         <source>Value Change Dumps (*.vcd);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Remove All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop plotting every variable, also those a scenario added</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformView</name>

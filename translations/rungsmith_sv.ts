@@ -2462,6 +2462,14 @@
         <source>Value Change Dumps (*.vcd);;All files (*)</source>
         <translation>Value Change Dumps (*.vcd);;Alla filer (*)</translation>
     </message>
+    <message>
+        <source>Remove All</source>
+        <translation>Ta bort alla</translation>
+    </message>
+    <message>
+        <source>Stop plotting every variable, also those a scenario added</source>
+        <translation>Sluta rita alla variabler, även de som ett scenario lade till</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformView</name>

@@ -30,6 +30,7 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 #include <QTreeWidget>
 
 #include <gtest/gtest.h>
@@ -289,6 +290,18 @@ TEST_F(SimulationTest, WaveformRecordsTheRunAndExportsVcd) {
     const QByteArray vcd = readFile(out);
     EXPECT_TRUE(vcd.contains("$var wire 1 \" Q14 $end")) << vcd.toStdString();
     EXPECT_TRUE(vcd.contains("I12 $end"));
+
+    // Remove All empties the plot; the next scans record nothing more.
+    mode()
+        ->waveformPanel()
+        ->findChild<QToolButton*>(QStringLiteral("removeAllTracesButton"))
+        ->click();
+    EXPECT_TRUE(recorder.traces().empty());
+    singleScan();
+    EXPECT_TRUE(recorder.traces().empty());
+    EXPECT_TRUE(mode()->waveformPanel()->add(QStringLiteral("Q0.14")).isEmpty());
+    singleScan();
+    ASSERT_EQ(recorder.traces().size(), 1u);
 }
 
 TEST_F(SimulationTest, ScenarioResultsListFailuresThatOpenTheirLine) {

@@ -42,6 +42,9 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
     m_remove->setText(tr("Remove"));
     m_remove->setToolTip(tr("Stop plotting the chosen variable"));
     m_remove->setEnabled(false);
+    QToolButton* removeAllButton =
+        button(tr("Remove All"), tr("Stop plotting every variable, also those a scenario added"));
+    removeAllButton->setObjectName(QStringLiteral("removeAllTracesButton"));
     QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
     QToolButton* zoomOut =
         button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
@@ -52,7 +55,7 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_input, 1);
-    for (QToolButton* b : {m_remove, zoomIn, zoomOut, fit, exportButton})
+    for (QToolButton* b : {m_remove, removeAllButton, zoomIn, zoomOut, fit, exportButton})
         top->addWidget(b);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -76,6 +79,7 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
         m_view->recordingChanged();
         m_remove->setEnabled(false);
     });
+    connect(removeAllButton, &QToolButton::clicked, this, &WaveformPanel::removeAll);
     connect(m_view, &WaveformView::selectionChanged, this,
             [this](int row) { m_remove->setEnabled(row >= 0); });
     connect(zoomIn, &QToolButton::clicked, m_view, &WaveformView::zoomIn);
@@ -108,6 +112,12 @@ QString WaveformPanel::add(const QString& word) {
     m_session->recorder().add(address, m_session->simulation());
     m_view->recordingChanged();
     return {};
+}
+
+void WaveformPanel::removeAll() {
+    m_session->recorder().removeAll();
+    m_view->recordingChanged();
+    m_remove->setEnabled(false);
 }
 
 QString WaveformPanel::exportVcd(const QString& requested) {

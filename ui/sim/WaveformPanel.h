@@ -22,6 +22,8 @@ public:
     WaveformView* view() const { return m_view; }
     // Records the variable from now on; the reason when it cannot.
     QString add(const QString& word);
+    // Stops plotting every variable.
+    void removeAll();
     // Writes the recording; the error message, empty on success. Without a path, asks for one.
     QString exportVcd(const QString& path = {});
 

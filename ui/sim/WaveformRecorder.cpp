@@ -21,6 +21,10 @@ void WaveformRecorder::remove(const lang::Address& address) {
     std::erase_if(m_traces, [&](const Trace& trace) { return trace.address == address; });
 }
 
+void WaveformRecorder::removeAll() {
+    m_traces.clear();
+}
+
 bool WaveformRecorder::contains(const lang::Address& address) const {
     return std::any_of(m_traces.begin(), m_traces.end(),
                        [&](const Trace& trace) { return trace.address == address; });

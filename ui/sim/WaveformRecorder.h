@@ -31,6 +31,8 @@ public:
     // the simulation is given; false when it is recorded already.
     bool add(const lang::Address& address, const sim::Simulation* simulation = nullptr);
     void remove(const lang::Address& address);
+    // Stops recording every variable: a large run's traces cost time each scan.
+    void removeAll();
     bool contains(const lang::Address& address) const;
     // Forgets what was recorded (power on again, a new run) but keeps the variables.
     void clear();
