@@ -1030,6 +1030,10 @@
         <source>Exported to %1.</source>
         <translation>Nach %1 exportiert.</translation>
     </message>
+    <message>
+        <source>Network %1</source>
+        <translation>Netzwerk %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -1030,6 +1030,10 @@
         <source>Exported to %1.</source>
         <translation>Exporterat till %1.</translation>
     </message>
+    <message>
+        <source>Network %1</source>
+        <translation>Nätverk %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -471,7 +471,9 @@ private:
         m_width = std::max(m_width, m_metrics.margin + kTitleWidth);
         m_layout.texts.push_back({TextLayout::Role::Title,
                                   QRectF(m_metrics.margin, top, kTitleWidth, m_metrics.titleHeight),
-                                  QStringLiteral("Network %1").arg(m_context.number)});
+                                  m_context.title.isEmpty()
+                                      ? QStringLiteral("Network %1").arg(m_context.number)
+                                      : m_context.title});
         const QStringList lines = text(m_network.comment).split(u'\n');
         qreal y = top;
         for (const QString& line : lines) {

@@ -114,6 +114,7 @@ struct NetworkLayout {
 
 struct LayoutContext {
     int number = 1;                   // the network's number in its step, shown in its title
+    QString title;                    // the title in the reader's language; empty: "Network N"
     std::uint32_t firstStatement = 0; // number in the unit of the network's first statement
     const SymbolTable* symbols = nullptr;
     LayoutMetrics metrics;

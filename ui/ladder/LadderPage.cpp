@@ -401,6 +401,7 @@ void LadderPage::rebuild() {
             }
             ladder::LayoutContext context;
             context.number = n + 1;
+            context.title = tr("Network %1").arg(n + 1);
             context.firstStatement = page.firstStatements[n];
             context.symbols = &m_symbols;
             items[n]->setIndex(static_cast<int>(s), n);
@@ -946,6 +947,7 @@ bool LadderPage::editNetwork(const QString& name, int step, int network,
         m_steps[step].ladder = std::move(ladder);
         ladder::LayoutContext context;
         context.number = network + 1;
+        context.title = tr("Network %1").arg(network + 1);
         context.firstStatement = m_steps[step].firstStatements[network];
         context.symbols = &m_symbols;
         item->setNetwork(m_steps[step].ladder.networks[network], context, m_namesVersion);
