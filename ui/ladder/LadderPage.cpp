@@ -2,6 +2,7 @@
 
 #include "ConfigOptionDialog.h"
 #include "ElementDialog.h"
+#include "ElementIcon.h"
 #include "LadderView.h"
 #include "NetworkItem.h"
 #include "NetworkPainter.h"
@@ -113,6 +114,8 @@ LadderPage::LadderPage(QWidget* parent)
            "output (L coil, S set, R reset, J jump ...) and its contacts."));
     m_emptyHint->setVisible(false);
     createActions();
+    m_toolBar->setIconSize(kElementIconSize);
+    drawElementIcons();
     m_view->keyHandler = [this](QKeyEvent* event) {
         return handleKey(event);
     };
@@ -250,7 +253,14 @@ void LadderPage::changeEvent(QEvent* event) {
     m_drawing.problem = colours.problem;
     m_drawing.editing = colours.editing;
     m_view->setBackgroundBrush(m_drawing.style.background);
+    drawElementIcons();
     repaintItems();
+}
+
+void LadderPage::drawElementIcons() {
+    for (const ElementKindInfo& info : ElementKinds::all())
+        action(QStringLiteral("insert%1Action").arg(static_cast<int>(info.kind)))
+            ->setIcon(elementIcon(info.kind, m_drawing.style));
 }
 
 // ----- showing the model

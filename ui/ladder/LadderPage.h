@@ -134,6 +134,8 @@ private:
     };
 
     void createActions();
+    // The insert buttons show the symbols in the theme's colours.
+    void drawElementIcons();
     void followModel();
     void rebuild();
     void placeItems();

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "ElementKind.h"
+#ifndef Q_MOC_RUN
+#include "LadderStyle.h"
+#endif
+
+#include <QIcon>
+
+namespace rs::ui {
+
+// The size of the pictures, in the toolbar's pixels: wide enough for a box's
+// text ("TON", ">=") to stay legible.
+inline constexpr QSize kElementIconSize{36, 22};
+
+// A toolbar picture of an element kind, drawn by the ladder renderer itself,
+// so a button shows the symbol exactly as the page draws it, in the theme's
+// colours; and greyed when the action is disabled.
+QIcon elementIcon(ElementKind kind, const render::LadderStyle& style);
+
+} // namespace rs::ui
