@@ -448,6 +448,15 @@ TEST_F(LadderPageTest, LiveStateColoursElementsAndReportsClicks) {
     click(QStringLiteral("I0.2"));
     ASSERT_EQ(clicks.size(), 1);
     EXPECT_EQ(clicks.front().front().toString(), QStringLiteral("I0.2"));
+    // The keyboard does the same: arrows select, Space clicks, Shift+F10 asks for the menu.
+    QSignalSpy menus(&page(), &LadderPage::operandMenuRequested);
+    key(Qt::Key_Left);
+    key(Qt::Key_Space);
+    ASSERT_EQ(clicks.size(), 2);
+    EXPECT_EQ(clicks.back().front().toString(), QStringLiteral("I0.1"));
+    key(Qt::Key_F10, Qt::ShiftModifier);
+    ASSERT_EQ(menus.size(), 1);
+    EXPECT_EQ(menus.front().front().toString(), QStringLiteral("I0.1"));
     // Live, the page does not edit.
     const QByteArray before = unitText(0);
     key(Qt::Key_Delete);

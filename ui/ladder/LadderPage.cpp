@@ -847,6 +847,26 @@ void LadderPage::showMenu(const QPointF& scenePosition, const QPoint& globalPosi
     menu.exec(globalPosition);
 }
 
+// While simulating, the keyboard does what the mouse does: Space is a click
+// on the selected element, the Menu key or Shift+F10 its context menu.
+bool LadderPage::handleLiveKey(int key, Qt::KeyboardModifiers modifiers) {
+    const ladder::ElementLayout* element = cursorElement();
+    NetworkItem* item = networkItem(m_drawing.cursor.step, m_drawing.cursor.network);
+    if (!element || !item || element->address.isEmpty())
+        return false;
+    if (key == Qt::Key_Space && modifiers == Qt::NoModifier) {
+        emit operandClicked(element->address);
+        return true;
+    }
+    if (key == Qt::Key_Menu || (key == Qt::Key_F10 && modifiers == Qt::ShiftModifier)) {
+        const QPointF centre = item->mapToScene(item->elementRect(*element).center());
+        emit operandMenuRequested(element->address,
+                                  m_view->viewport()->mapToGlobal(m_view->mapFromScene(centre)));
+        return true;
+    }
+    return false;
+}
+
 bool LadderPage::handleKey(QKeyEvent* event) {
     const int key = event->key();
     const Qt::KeyboardModifiers modifiers = event->modifiers() & ~Qt::KeypadModifier;
@@ -875,7 +895,9 @@ bool LadderPage::handleKey(QKeyEvent* event) {
     default:
         break;
     }
-    if (isLive() || !m_document)
+    if (isLive())
+        return handleLiveKey(key, modifiers);
+    if (!m_document)
         return false;
     if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;

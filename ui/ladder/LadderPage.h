@@ -145,6 +145,7 @@ private:
     void setMessage(const QString& message);
     void repaintItems();
 
+    bool handleLiveKey(int key, Qt::KeyboardModifiers modifiers);
     bool handleKey(QKeyEvent* event);
     void pressed(const QPointF& scenePosition, Qt::MouseButton button,
                  Qt::KeyboardModifiers modifiers);
