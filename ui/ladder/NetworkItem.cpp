@@ -13,6 +13,10 @@ namespace {
 
 constexpr qreal kSelectionPad = 3;
 constexpr qreal kSketchBelow = 0.3; // zoom under which networks are sketched
+// A network fewer device pixels high than this is one bar: its wires would
+// fall on the same few pixels, and a page of thousands of them must repaint
+// within a live update.
+constexpr qreal kBarBelowPixels = 8;
 constexpr qreal kOptionWidth = 150; // right of an option network: its check box
 
 bool startsWith(const std::vector<std::size_t>& path, const std::vector<std::size_t>& prefix) {
@@ -101,10 +105,15 @@ QRectF NetworkItem::groupRect(const ladder::ElementPath& path) const {
 void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*) {
     const render::LadderStyle& style = m_drawing->style;
     const QRectF bounds = boundingRect();
+    const qreal detail = option->levelOfDetailFromTransform(painter->worldTransform());
+    if (detail * bounds.height() < kBarBelowPixels) {
+        paintBar(*painter); // on the view's background, which is the page's
+        return;
+    }
     painter->fillRect(bounds, style.background);
     // Zoomed far out, text would be specks: wires and symbols as plain shapes
     // draw a thousand networks in the time of a few.
-    if (option->levelOfDetailFromTransform(painter->worldTransform()) < kSketchBelow) {
+    if (detail < kSketchBelow) {
         paintSketch(*painter);
         return;
     }
@@ -153,6 +162,22 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     painter->setPen(QPen(style.commentInk, 0.5));
     painter->drawLine(bounds.bottomLeft(), bounds.bottomRight());
     paintOverlay(*painter);
+}
+
+void NetworkItem::paintBar(QPainter& painter) const {
+    const render::LadderStyle& style = m_drawing->style;
+    const render::PowerSnapshot* power = m_drawing->live ? &m_drawing->live->power : nullptr;
+    bool energised = false;
+    if (power)
+        for (const auto& element : m_layout.elements)
+            if (element.output >= 0 && power->conducts(element.statement, 0)) {
+                energised = true;
+                break;
+            }
+    const QRectF bounds = boundingRect();
+    painter.fillRect(
+        QRectF(kGutter, bounds.height() * 0.2, m_layout.size.width(), bounds.height() * 0.6),
+        energised ? style.powered : style.commentInk);
 }
 
 void NetworkItem::paintSketch(QPainter& painter) const {

@@ -50,6 +50,9 @@ public:
 private:
     void paintOverlay(QPainter& painter) const;
     void paintSketch(QPainter& painter) const;
+    // Zoomed out so far that the network is a few pixels high: one bar, green
+    // when any of its outputs is driven.
+    void paintBar(QPainter& painter) const;
     QRectF collapseBox() const;
 
     const LadderDrawing* m_drawing;
