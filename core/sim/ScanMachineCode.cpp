@@ -1,6 +1,7 @@
 #include "ScanMachineCode.h"
 
 #include <bit>
+#include <climits>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -41,16 +42,17 @@ asmjit::Imm address(const void* pointer) {
     return asmjit::Imm(reinterpret_cast<std::uint64_t>(pointer));
 }
 
-// Emits one run. The System V calling convention: the context stays in rbx
-// and the power in r12d, both kept by the handlers; rax, rcx, rdx, rsi and
-// rdi are scratch. A handler is called through a jump of its own next to the
-// code: executable memory is usually too far from the program for a direct
+// Emits one run. The System V calling convention: the context stays in rbx,
+// the power in r12d and the address places are near in r13, all kept by the
+// handlers; rax, rcx, rdx, rsi, rdi, r8 and r11 are scratch. A handler is called through a jump of
+// its own next to the code: executable memory is usually too far from the program for a direct
 // call, and a call through memory would be a jump predicted by its target
 // again, from thousands of places.
 class RunEmitter {
 public:
-    RunEmitter(x86::Assembler& a, std::map<ScanMachineCode::Handler, asmjit::Label>& handlers)
-        : a(a), m_handlers(handlers) {}
+    RunEmitter(x86::Assembler& a, std::map<ScanMachineCode::Handler, asmjit::Label>& handlers,
+               const void* near)
+        : a(a), m_handlers(handlers), m_near(reinterpret_cast<std::intptr_t>(near)) {}
 
     void emit(const Instruction& in) {
         switch (in.kind) {
@@ -82,8 +84,7 @@ public:
             output(in);
             return;
         case Kind::Load:
-            a.mov(x86::rax, address(in.place));
-            a.movsx(x86::rcx, x86::word_ptr(x86::rax));
+            a.movsx(x86::rcx, at(in.place, 2));
             a.mov(x86::qword_ptr(x86::rbx, in.slot), x86::rcx);
             return;
         case Kind::LoadConst:
@@ -109,6 +110,16 @@ public:
     }
 
 private:
+    // A place by its distance from r13, short to encode, or else by its address in `scratch`.
+    x86::Mem at(const void* place, std::uint32_t size, const x86::Gp& scratch = x86::r11,
+                std::int32_t offset = 0) {
+        const std::intptr_t distance = reinterpret_cast<std::intptr_t>(place) - m_near + offset;
+        if (distance >= INT32_MIN && distance <= INT32_MAX)
+            return x86::ptr(x86::r13, static_cast<std::int32_t>(distance), size);
+        a.mov(scratch, address(place));
+        return x86::ptr(scratch, offset, size);
+    }
+
     // After a rung the power is 1: emitted only when something reads it.
     void settleRung() {
         if (m_rung)
@@ -127,8 +138,7 @@ private:
 
     // to = ((*byte & mask) != 0) ^ negated, as 0 or 1.
     void testBit(const Instruction& in, const x86::Gpb& to, bool negated) {
-        a.mov(x86::rax, address(in.place));
-        a.test(x86::byte_ptr(x86::rax), in.mask);
+        a.test(at(in.place, 1), in.mask);
         if (negated)
             a.setz(to);
         else
@@ -140,11 +150,12 @@ private:
     // its operand.
     void edge(const Instruction& in) {
         testBit(in, x86::cl, in.operandNegated);
-        a.mov(x86::rax, address(in.state));
-        a.movzx(x86::esi, x86::byte_ptr(x86::rax));    // seen
-        a.movzx(x86::edx, x86::byte_ptr(x86::rax, 1)); // last
-        a.mov(x86::byte_ptr(x86::rax), 1);
-        a.mov(x86::byte_ptr(x86::rax, 1), x86::cl);
+        const x86::Mem seen = at(in.state, 1, x86::rax);
+        const x86::Mem last = at(in.state, 1, x86::rax, 1);
+        a.movzx(x86::esi, seen);
+        a.movzx(x86::edx, last);
+        a.mov(seen, 1);
+        a.mov(last, x86::cl);
         a.movzx(x86::ecx, x86::cl);
         if (in.rising)
             a.xor_(x86::edx, 1);
@@ -198,21 +209,21 @@ private:
     void output(const Instruction& in) {
         const bool whole = in.mask == 0xFF;
         const int shift = whole ? 0 : std::countr_zero(in.mask);
-        a.mov(x86::rax, address(in.place));
+        const x86::Mem target = at(in.place, 1);
         a.mov(x86::edx, x86::r12d);
         if (shift)
             a.shl(x86::edx, shift);
         switch (in.kind) {
         case Kind::Store:
             if (!whole) {
-                a.movzx(x86::ecx, x86::byte_ptr(x86::rax));
+                a.movzx(x86::ecx, target);
                 a.and_(x86::ecx, ~in.mask & 0xFF);
                 a.or_(x86::edx, x86::ecx);
             }
-            a.mov(x86::byte_ptr(x86::rax), x86::dl);
+            a.mov(target, x86::dl);
             return;
         case Kind::Set:
-            a.or_(x86::byte_ptr(x86::rax), x86::dl);
+            a.or_(target, x86::dl);
             return;
         default: // Reset
             if (whole) {
@@ -221,7 +232,7 @@ private:
             } else {
                 a.not_(x86::edx);
             }
-            a.and_(x86::byte_ptr(x86::rax), x86::dl);
+            a.and_(target, x86::dl);
             return;
         }
     }
@@ -229,8 +240,8 @@ private:
     // Without a jump: the result is computed always and kept with the power.
     void arithmetic(const Instruction& in) {
         using Operation = ScanMachineCode::Operation;
-        a.mov(x86::rdi, address(in.place));
-        a.movsx(x86::rcx, x86::word_ptr(x86::rdi));
+        const x86::Mem target = at(in.place, 2, x86::rdi);
+        a.movsx(x86::rcx, target);
         if (in.slot == ScanMachineCode::kCurrent)
             a.mov(x86::rax, x86::rcx);
         else
@@ -260,17 +271,18 @@ private:
         a.mov(x86::rsi, -32768);
         a.cmp(x86::rax, x86::rsi);
         a.cmovl(x86::rax, x86::rsi);
-        a.mov(x86::rsi, address(in.state));
-        a.movzx(x86::r8d, x86::byte_ptr(x86::rsi));
+        const x86::Mem overflow = at(in.state, 1, x86::r11);
+        a.movzx(x86::r8d, overflow);
         a.test(x86::r12d, x86::r12d);
         a.cmovz(x86::rax, x86::rcx);
         a.cmovnz(x86::r8d, x86::edx);
-        a.mov(x86::word_ptr(x86::rdi), x86::ax);
-        a.mov(x86::byte_ptr(x86::rsi), x86::r8b);
+        a.mov(target, x86::ax);
+        a.mov(overflow, x86::r8b);
     }
 
     x86::Assembler& a;
     std::map<ScanMachineCode::Handler, asmjit::Label>& m_handlers;
+    std::intptr_t m_near;
     bool m_rung = false;
 };
 
@@ -283,7 +295,8 @@ ScanMachineCode::~ScanMachineCode() {
         m_memory->runtime.release(m_memory->code);
 }
 
-std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>& runs) {
+std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>& runs,
+                                                          const void* near) {
     if (disabled() || runs.empty())
         return nullptr;
     std::unique_ptr<ScanMachineCode> code(new ScanMachineCode);
@@ -298,15 +311,16 @@ std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>
     for (const Run& run : runs) {
         starts.push_back(a.newLabel());
         a.bind(starts.back());
-        a.push(x86::rbx);
+        a.push(x86::rbx); // three pushes: calls find the stack aligned to 16 bytes
         a.push(x86::r12);
-        a.sub(x86::rsp, 8); // calls need the stack aligned to 16 bytes
+        a.push(x86::r13);
         a.mov(x86::rbx, x86::rdi);
+        a.mov(x86::r13, address(near));
         a.mov(x86::r12d, 1);
-        RunEmitter emitter(a, handlers);
+        RunEmitter emitter(a, handlers, near);
         for (const Instruction& in : run)
             emitter.emit(in);
-        a.add(x86::rsp, 8);
+        a.pop(x86::r13);
         a.pop(x86::r12);
         a.pop(x86::rbx);
         a.ret();
@@ -331,7 +345,7 @@ struct ScanMachineCode::Memory {};
 ScanMachineCode::ScanMachineCode() = default;
 ScanMachineCode::~ScanMachineCode() = default;
 
-std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>&) {
+std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>&, const void*) {
     return nullptr;
 }
 

@@ -62,8 +62,9 @@ public:
     // Null where there is no code generator for this machine (only x86-64
     // has one), when the system refuses executable memory, or when the
     // environment variable RUNGSMITH_NO_JIT is 1: the caller interprets
-    // instead. Each run starts with the power 1.
-    static std::unique_ptr<ScanMachineCode> compile(const std::vector<Run>& runs);
+    // instead. Each run starts with the power 1. Places near `near` (most
+    // of them) take shorter instructions.
+    static std::unique_ptr<ScanMachineCode> compile(const std::vector<Run>& runs, const void* near);
 
     ScanMachineCode(const ScanMachineCode&) = delete;
     ScanMachineCode& operator=(const ScanMachineCode&) = delete;

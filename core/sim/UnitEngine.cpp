@@ -1750,7 +1750,7 @@ void UnitEngine::compileSteps() {
             }
         }
     }
-    m_machineCode = ScanMachineCode::compile(runs);
+    m_machineCode = ScanMachineCode::compile(runs, &m_memory);
 }
 
 // Register arithmetic other than a division, in line; false for the rest.
@@ -1763,8 +1763,8 @@ bool UnitEngine::arithmetic(const Decoded& d, ScanMachineCode::Run& run) {
     if (d.refKind != static_cast<std::uint8_t>(WordRef::Kind::Register) || d.dropWrite)
         return false;
     ScanMachineCode::Instruction in{.kind = ScanMachineCode::Kind::Arithmetic,
-                                     .place = d.ref,
-                                     .state = &m_memory.systemMemories[kOverflow]};
+                                    .place = d.ref,
+                                    .state = &m_memory.systemMemories[kOverflow]};
     const auto set = [&in](std::int32_t x, Operation operation, std::int32_t y, int value = 0) {
         in.slot = x;
         in.operation = operation;
