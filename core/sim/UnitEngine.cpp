@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <bit>
 #include <cstddef>
-#include <cstdio>
 #include <cstring>
 #include <utility>
 
@@ -1742,7 +1741,7 @@ void UnitEngine::compileSteps() {
                 call(FSequenceReset);
                 break;
             case HArith:
-                if (!arithmetic(d, run))
+                if (!compileArithmetic(d, run))
                     call(FArith);
                 break;
             case HandlerCount:
@@ -1754,7 +1753,7 @@ void UnitEngine::compileSteps() {
 }
 
 // Register arithmetic other than a division, in line; false for the rest.
-bool UnitEngine::arithmetic(const Decoded& d, ScanMachineCode::Run& run) {
+bool UnitEngine::compileArithmetic(const Decoded& d, ScanMachineCode::Run& run) {
     using Operation = ScanMachineCode::Operation;
     constexpr auto a = static_cast<std::int32_t>(offsetof(FastContext, a));
     constexpr auto b = static_cast<std::int32_t>(offsetof(FastContext, b));

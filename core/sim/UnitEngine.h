@@ -219,7 +219,7 @@ private:
     // Translates each step's code to machine code without marks, where the
     // machine allows it (docs/simulator.md, "Speed").
     void compileSteps();
-    bool arithmetic(const Decoded& in, ScanMachineCode::Run& run);
+    bool compileArithmetic(const Decoded& in, ScanMachineCode::Run& run);
     void runSteps(bool marking, int cycleMs);
     // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
     // the handlers' addresses for translate() and runs nothing.
