@@ -43,11 +43,10 @@ asmjit::Imm address(const void* pointer) {
 }
 
 // Emits one run. The System V calling convention: the context stays in rbx,
-// the power in r12d and the address places are near in r13, all kept by the
-// handlers; rax, rcx, rdx, rsi, rdi, r8 and r11 are scratch. A handler is called through a jump of
-// its own next to the code: executable memory is usually too far from the program for a direct
-// call, and a call through memory would be a jump predicted by its target
-// again, from thousands of places.
+// the power in r12d and the address that places are addressed from in r13,
+// all kept by the handlers; rax, rcx, rdx, rsi, rdi, r8 and r11 are scratch.
+// A handler is called through a jump of its own next to the code, as
+// executable memory is usually too far from the program for a direct call.
 class RunEmitter {
 public:
     RunEmitter(x86::Assembler& a, std::map<ScanMachineCode::Handler, asmjit::Label>& handlers,
