@@ -69,6 +69,18 @@ void BM_NativeScan(benchmark::State& state) {
 }
 BENCHMARK(BM_NativeScan)->Unit(benchmark::kMicrosecond);
 
+// Beginning a simulation of the project: every unit's code decoded, translated
+// and, where the machine allows, compiled to machine code (with
+// RUNGSMITH_NO_JIT=1 without, so the difference is what compiling costs).
+void BM_SimulationStart(benchmark::State& state) {
+    images(); // the project is compiled once, before measuring
+    for (auto _ : state) {
+        rs::sim::Simulation simulation(images(), kCycleMs);
+        benchmark::DoNotOptimize(simulation);
+    }
+}
+BENCHMARK(BM_SimulationStart)->Unit(benchmark::kMillisecond);
+
 // Both sides must compute the same thing, or the ratio means nothing. A third
 // simulation marks conduction while scanning: the measured one replays its
 // scans for conduction(), which must give the same marks.

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <cstring>
+#include <utility>
 
 namespace rs::sim {
 
@@ -393,6 +395,7 @@ void UnitEngine::decode() {
                                      }),
                          m_remoteCopies.end());
     translate();
+    compileSteps();
 }
 
 void UnitEngine::powerOn(const std::vector<lang::Address>& keep) {
@@ -513,6 +516,15 @@ void UnitEngine::runSteps(bool marking, int cycleMs) {
         if (marking) {
             runStep(stepIndex, pendingJump, cycleMs);
             m_ranSteps.push_back(stepIndex);
+        } else if (m_machineCode) {
+            FastContext context; // the branches are written before they are read
+            context.engine = this;
+            context.pendingJump = &pendingJump;
+            context.cycleMs = cycleMs;
+            context.depth = 0;
+            context.a = 0;
+            context.b = 0;
+            m_machineCode->entry(static_cast<std::size_t>(stepIndex))(&context);
         } else {
             runFast(m_fast.data() + m_steps[static_cast<std::size_t>(stepIndex)].fastFirst,
                     pendingJump, cycleMs);
@@ -1188,6 +1200,250 @@ inline void UnitEngine::runBitStatements(const Row<BitStatement>& row, std::uint
     pendingJump = jump;
 }
 
+// runFast's handlers, one function each so that the machine code can call
+// them: what the power becomes, from the power before and the argument (the
+// operand's address or the Decoded entry, by handler).
+#define RS_FAST_OP(kind)                                                                           \
+    template <>                                                                                    \
+    [[gnu::always_inline]] inline unsigned UnitEngine::fastOp<kind>(                               \
+        [[maybe_unused]] FastContext & c, [[maybe_unused]] const void* arg,                        \
+        [[maybe_unused]] unsigned power)
+#define RS_IN (*static_cast<const Decoded*>(arg))
+#define RS_BYTE (*static_cast<std::uint8_t*>(const_cast<void*>(arg)))
+#define RS_NEGATED static_cast<unsigned>(RS_IN.flags & compiler::Negated)
+#define RS_DITTO (c.engine->m_memory.systemMemories[kDitto])
+
+RS_FAST_OP(FRung) {
+    return 1;
+}
+RS_FAST_OP(FStart) {
+    return RS_BYTE != 0;
+}
+RS_FAST_OP(FStartNot) {
+    return RS_BYTE == 0;
+}
+RS_FAST_OP(FAnd) {
+    return power & static_cast<unsigned>(RS_BYTE != 0);
+}
+RS_FAST_OP(FAndNot) {
+    return power & static_cast<unsigned>(RS_BYTE == 0);
+}
+RS_FAST_OP(FContact) {
+    return power & (static_cast<unsigned>(RS_IN.readBit()) ^ RS_NEGATED);
+}
+RS_FAST_OP(FEdge) {
+    return power & c.engine->edge(RS_IN);
+}
+RS_FAST_OP(FEdgeStart) {
+    return c.engine->edge(RS_IN);
+}
+RS_FAST_OP(FByteEdge) {
+    return power & byteEdge(*static_cast<const ByteEdge*>(arg));
+}
+RS_FAST_OP(FByteEdgeStart) {
+    return byteEdge(*static_cast<const ByteEdge*>(arg));
+}
+RS_FAST_OP(FContactRegisterBit) {
+    return power &
+           (((static_cast<unsigned>(*static_cast<const std::uint16_t*>(RS_IN.ref)) >> RS_IN.bit) &
+             1u) ^
+            RS_NEGATED);
+}
+RS_FAST_OP(FTimer) {
+    return c.engine->timer(RS_IN, power != 0, c.cycleMs);
+}
+RS_FAST_OP(FLoadA) {
+    c.a = RS_IN.readWord();
+    return power;
+}
+RS_FAST_OP(FLoadAWord) {
+    c.a = *static_cast<const std::int16_t*>(arg);
+    return power;
+}
+RS_FAST_OP(FLoadAConstant) {
+    c.a = *static_cast<const std::int32_t*>(arg);
+    return power;
+}
+RS_FAST_OP(FLoadB) {
+    c.b = RS_IN.readWord();
+    return power;
+}
+RS_FAST_OP(FLoadBWord) {
+    c.b = *static_cast<const std::int16_t*>(arg);
+    return power;
+}
+RS_FAST_OP(FLoadBConstant) {
+    c.b = *static_cast<const std::int32_t*>(arg);
+    return power;
+}
+RS_FAST_OP(FEqual) {
+    return power & (static_cast<unsigned>(c.a == c.b) ^ RS_NEGATED);
+}
+RS_FAST_OP(FGreater) {
+    return power & (static_cast<unsigned>(c.a > c.b) ^ RS_NEGATED);
+}
+RS_FAST_OP(FLess) {
+    return power & (static_cast<unsigned>(c.a < c.b) ^ RS_NEGATED);
+}
+RS_FAST_OP(FGreaterEqual) {
+    return power & (static_cast<unsigned>(c.a >= c.b) ^ RS_NEGATED);
+}
+RS_FAST_OP(FLessEqual) {
+    return power & (static_cast<unsigned>(c.a <= c.b) ^ RS_NEGATED);
+}
+RS_FAST_OP(FBranchOpen) {
+    c.branches[c.depth++] = {power, 0};
+    return power;
+}
+RS_FAST_OP(FBranchNext) {
+    c.branches[c.depth - 1].any |= power;
+    return c.branches[c.depth - 1].in;
+}
+RS_FAST_OP(FBranchClose) {
+    return power | c.branches[--c.depth].any;
+}
+RS_FAST_OP(FCoilByte) {
+    RS_BYTE = static_cast<std::uint8_t>(power);
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FCoilByteRung) {
+    fastOp<FCoilByte>(c, arg, power);
+    return 1;
+}
+RS_FAST_OP(FCoil) {
+    RS_IN.writeBit(power != 0);
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FCoilRegisterBit) {
+    auto& word = *static_cast<std::uint16_t*>(RS_IN.ref);
+    const auto mask = static_cast<unsigned>(1u << RS_IN.bit);
+    word = static_cast<std::uint16_t>((word & ~mask) | (power * mask));
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FSetByte) {
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FSetByteRung) {
+    fastOp<FSetByte>(c, arg, power);
+    return 1;
+}
+RS_FAST_OP(FSet) {
+    if (power)
+        RS_IN.writeBit(true);
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FResetByte) {
+    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FResetByteRung) {
+    fastOp<FResetByte>(c, arg, power);
+    return 1;
+}
+RS_FAST_OP(FReset) {
+    if (power)
+        RS_IN.writeBit(false);
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FToggle) {
+    if (power)
+        RS_IN.writeBit(!RS_IN.readBit());
+    RS_DITTO = static_cast<std::uint8_t>(power);
+    return power;
+}
+RS_FAST_OP(FJump) {
+    if (power)
+        *c.pendingJump = RS_IN.slot; // the last jump taken in the step wins
+    return power;
+}
+RS_FAST_OP(FSequenceReset) {
+    if (power && RS_IN.slot < 10)
+        c.engine->m_sequences[RS_IN.slot].resetRequested = true;
+    return power;
+}
+RS_FAST_OP(FArith) {
+    if (power)
+        c.engine->arithmetic(RS_IN, c.a, c.b);
+    return power;
+}
+RS_FAST_OP(FArithRegister) {
+    if (!power)
+        return power;
+    auto& target = *static_cast<std::int16_t*>(RS_IN.ref);
+    const std::int64_t current = target;
+    const std::int64_t a = c.a;
+    const std::int64_t b = c.b;
+    std::int64_t result = 0;
+    switch (static_cast<ArithOp>(RS_IN.aux)) {
+    case ArithOp::Increment:
+        result = current + 1;
+        break;
+    case ArithOp::Decrement:
+        result = current - 1;
+        break;
+    case ArithOp::Add:
+        result = current + a;
+        break;
+    case ArithOp::Sub:
+        result = current - a;
+        break;
+    case ArithOp::Mul:
+        result = current * a;
+        break;
+    case ArithOp::Copy:
+        result = a;
+        break;
+    case ArithOp::AddAB:
+        result = a + b;
+        break;
+    case ArithOp::SubAB:
+        result = a - b;
+        break;
+    case ArithOp::MulAB:
+        result = a * b;
+        break;
+    case ArithOp::Div:
+    case ArithOp::DivAB:
+        break; // translate() leaves divisions to arithmetic()
+    }
+    c.engine->m_memory.systemMemories[kOverflow] = result < -32768 || result > 32767;
+    target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
+    return power;
+}
+RS_FAST_OP(FBitStatements) {
+    runBitStatements<true>(*static_cast<const Row<BitStatement>*>(arg), RS_DITTO, *c.pendingJump);
+    return power;
+}
+RS_FAST_OP(FBitStatementsWithoutEdges) {
+    runBitStatements<false>(*static_cast<const Row<BitStatement>*>(arg), RS_DITTO, *c.pendingJump);
+    return power;
+}
+RS_FAST_OP(FWordStatements) {
+    c.engine->runWordStatements(*static_cast<const Row<WordStatement>*>(arg), c.a, c.b);
+    return power;
+}
+RS_FAST_OP(FEnd) {
+    return power;
+}
+
+#undef RS_DITTO
+#undef RS_NEGATED
+#undef RS_BYTE
+#undef RS_IN
+#undef RS_FAST_OP
+
+template <int kind> unsigned UnitEngine::fastCall(void* context, const void* arg, unsigned power) {
+    return fastOp<kind>(*static_cast<FastContext*>(context), arg, power);
+}
+
 // The same instructions as runStep without the marks, in the form translate()
 // made: a scan that nobody looks at in detail costs what its logic costs.
 #pragma GCC diagnostic push
@@ -1244,228 +1500,311 @@ void UnitEngine::runFast(const FastOp* op, int& pendingJump, int cycleMs,
         *handlerTable = handlers;
         return;
     }
-    auto& sm = m_memory.systemMemories;
-    struct Branch {
-        unsigned in;
-        unsigned any;
-    };
-    Branch branches[64];
-    int depth = 0;
+    FastContext c; // the branches are written before they are read
+    c.engine = this;
+    c.pendingJump = &pendingJump;
+    c.cycleMs = cycleMs;
+    c.depth = 0;
+    c.a = 0;
+    c.b = 0;
     unsigned power = 1;
-    std::int64_t a = 0;
-    std::int64_t b = 0;
-#define RS_NEXT() goto*(++op)->handler
-#define RS_IN (*static_cast<const Decoded*>(op->arg))
-#define RS_BYTE (*static_cast<std::uint8_t*>(op->arg))
-#define RS_NEGATED (RS_IN.flags & compiler::Negated)
+#define RS_RUN(kind)                                                                               \
+    power = fastOp<kind>(c, op->arg, power);                                                       \
+    goto*(++op)->handler
 
     goto * op->handler;
 rung:
-    power = 1;
-    RS_NEXT();
+    RS_RUN(FRung);
 start:
-    power = RS_BYTE != 0;
-    RS_NEXT();
+    RS_RUN(FStart);
 startNot:
-    power = RS_BYTE == 0;
-    RS_NEXT();
+    RS_RUN(FStartNot);
 and_:
-    power &= RS_BYTE != 0;
-    RS_NEXT();
+    RS_RUN(FAnd);
 andNot:
-    power &= RS_BYTE == 0;
-    RS_NEXT();
+    RS_RUN(FAndNot);
 contact:
-    power &= static_cast<unsigned>(RS_IN.readBit()) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FContact);
 edge:
-    power &= edge(RS_IN);
-    RS_NEXT();
+    RS_RUN(FEdge);
 edgeStart:
-    power = edge(RS_IN);
-    RS_NEXT();
+    RS_RUN(FEdgeStart);
 byteEdge:
-    power &= byteEdge(*static_cast<const ByteEdge*>(op->arg));
-    RS_NEXT();
+    RS_RUN(FByteEdge);
 byteEdgeStart:
-    power = byteEdge(*static_cast<const ByteEdge*>(op->arg));
-    RS_NEXT();
+    RS_RUN(FByteEdgeStart);
 contactRegisterBit:
-    power &=
-        ((static_cast<unsigned>(*static_cast<const std::uint16_t*>(RS_IN.ref)) >> RS_IN.bit) & 1u) ^
-        RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FContactRegisterBit);
 timer:
-    power = timer(RS_IN, power != 0, cycleMs);
-    RS_NEXT();
+    RS_RUN(FTimer);
 loadA:
-    a = RS_IN.readWord();
-    RS_NEXT();
+    RS_RUN(FLoadA);
 loadAWord:
-    a = *static_cast<const std::int16_t*>(op->arg);
-    RS_NEXT();
+    RS_RUN(FLoadAWord);
 loadAConstant:
-    a = *static_cast<const std::int32_t*>(op->arg);
-    RS_NEXT();
+    RS_RUN(FLoadAConstant);
 loadB:
-    b = RS_IN.readWord();
-    RS_NEXT();
+    RS_RUN(FLoadB);
 loadBWord:
-    b = *static_cast<const std::int16_t*>(op->arg);
-    RS_NEXT();
+    RS_RUN(FLoadBWord);
 loadBConstant:
-    b = *static_cast<const std::int32_t*>(op->arg);
-    RS_NEXT();
+    RS_RUN(FLoadBConstant);
 equal:
-    power &= static_cast<unsigned>(a == b) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FEqual);
 greater:
-    power &= static_cast<unsigned>(a > b) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FGreater);
 less:
-    power &= static_cast<unsigned>(a < b) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FLess);
 greaterEqual:
-    power &= static_cast<unsigned>(a >= b) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FGreaterEqual);
 lessEqual:
-    power &= static_cast<unsigned>(a <= b) ^ RS_NEGATED;
-    RS_NEXT();
+    RS_RUN(FLessEqual);
 branchOpen:
-    branches[depth++] = {power, 0};
-    RS_NEXT();
+    RS_RUN(FBranchOpen);
 branchNext:
-    branches[depth - 1].any |= power;
-    power = branches[depth - 1].in;
-    RS_NEXT();
+    RS_RUN(FBranchNext);
 branchClose:
-    power |= branches[--depth].any;
-    RS_NEXT();
+    RS_RUN(FBranchClose);
 coilByte:
-    RS_BYTE = static_cast<std::uint8_t>(power);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FCoilByte);
 coilByteRung:
-    RS_BYTE = static_cast<std::uint8_t>(power);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    power = 1;
-    RS_NEXT();
+    RS_RUN(FCoilByteRung);
 coil:
-    RS_IN.writeBit(power != 0);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
-coilRegisterBit : {
-    auto& word = *static_cast<std::uint16_t*>(RS_IN.ref);
-    const auto mask = static_cast<unsigned>(1u << RS_IN.bit);
-    word = static_cast<std::uint16_t>((word & ~mask) | (power * mask));
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
-}
+    RS_RUN(FCoil);
+coilRegisterBit:
+    RS_RUN(FCoilRegisterBit);
 setByte:
-    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FSetByte);
 setByteRung:
-    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE | power);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    power = 1;
-    RS_NEXT();
+    RS_RUN(FSetByteRung);
 set:
-    if (power)
-        RS_IN.writeBit(true);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FSet);
 resetByte:
-    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FResetByte);
 resetByteRung:
-    RS_BYTE = static_cast<std::uint8_t>(RS_BYTE & (power ^ 1u));
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    power = 1;
-    RS_NEXT();
+    RS_RUN(FResetByteRung);
 reset:
-    if (power)
-        RS_IN.writeBit(false);
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FReset);
 toggle:
-    if (power)
-        RS_IN.writeBit(!RS_IN.readBit());
-    sm[kDitto] = static_cast<std::uint8_t>(power);
-    RS_NEXT();
+    RS_RUN(FToggle);
 jump:
-    if (power)
-        pendingJump = RS_IN.slot; // the last jump taken in the step wins
-    RS_NEXT();
+    RS_RUN(FJump);
 sequenceReset:
-    if (power && RS_IN.slot < 10)
-        m_sequences[RS_IN.slot].resetRequested = true;
-    RS_NEXT();
+    RS_RUN(FSequenceReset);
 arith:
-    if (power)
-        arithmetic(RS_IN, a, b);
-    RS_NEXT();
+    RS_RUN(FArith);
 arithRegister:
-    if (power) {
-        auto& target = *static_cast<std::int16_t*>(RS_IN.ref);
-        const std::int64_t current = target;
-        std::int64_t result = 0;
-        switch (static_cast<ArithOp>(RS_IN.aux)) {
-        case ArithOp::Increment:
-            result = current + 1;
-            break;
-        case ArithOp::Decrement:
-            result = current - 1;
-            break;
-        case ArithOp::Add:
-            result = current + a;
-            break;
-        case ArithOp::Sub:
-            result = current - a;
-            break;
-        case ArithOp::Mul:
-            result = current * a;
-            break;
-        case ArithOp::Copy:
-            result = a;
-            break;
-        case ArithOp::AddAB:
-            result = a + b;
-            break;
-        case ArithOp::SubAB:
-            result = a - b;
-            break;
-        case ArithOp::MulAB:
-            result = a * b;
-            break;
-        case ArithOp::Div:
-        case ArithOp::DivAB:
-            break; // translate() leaves divisions to arithmetic()
-        }
-        sm[kOverflow] = result < -32768 || result > 32767;
-        target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
-    }
-    RS_NEXT();
+    RS_RUN(FArithRegister);
 bitStatements:
-    runBitStatements<true>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
-                           pendingJump);
-    RS_NEXT();
-wordStatements:
-    runWordStatements(*static_cast<const Row<WordStatement>*>(op->arg), a, b);
-    RS_NEXT();
+    RS_RUN(FBitStatements);
 bitStatementsWithoutEdges:
-    runBitStatements<false>(*static_cast<const Row<BitStatement>*>(op->arg), sm[kDitto],
-                            pendingJump);
-    RS_NEXT();
+    RS_RUN(FBitStatementsWithoutEdges);
+wordStatements:
+    RS_RUN(FWordStatements);
 end:
     return;
-#undef RS_NEGATED
-#undef RS_BYTE
-#undef RS_IN
-#undef RS_NEXT
+#undef RS_RUN
 }
 #pragma GCC diagnostic pop
+
+void UnitEngine::compileSteps() {
+    using Kind = ScanMachineCode::Kind;
+    using Instruction = ScanMachineCode::Instruction;
+    static constexpr auto calls = []<std::size_t... kind>(std::index_sequence<kind...>) {
+        return std::array<ScanMachineCode::Handler, sizeof...(kind)>{
+            &fastCall<static_cast<int>(kind)>...};
+    }
+    (std::make_index_sequence<FastHandlerCount>());
+    static_assert(offsetof(EdgeState, seen) == 0 && offsetof(EdgeState, last) == 1);
+    static_assert(offsetof(FastContext::Branch, any) == 4);
+    constexpr auto slotA = static_cast<std::int32_t>(offsetof(FastContext, a));
+    constexpr auto slotB = static_cast<std::int32_t>(offsetof(FastContext, b));
+    constexpr int maxDepth = std::size(FastContext{}.branches);
+    m_machineCode.reset();
+    std::uint8_t* ditto = &m_memory.systemMemories[kDitto];
+    std::vector<ScanMachineCode::Run> runs;
+    runs.reserve(m_steps.size());
+    for (const StepRun& step : m_steps) {
+        ScanMachineCode::Run& run = runs.emplace_back();
+        int depth = 0;
+        for (std::uint32_t i = step.first; i < step.first + step.count; ++i) {
+            const Decoded& d = m_code[i];
+            const bool negated = d.flags & compiler::Negated;
+            const bool byte = d.refKind == static_cast<std::uint8_t>(BitRef::Kind::Byte);
+            const bool registerBit =
+                d.refKind == static_cast<std::uint8_t>(BitRef::Kind::RegisterBit);
+            // A register bit is a bit of one of its bytes (x86-64 is little-endian).
+            const auto bitPlace = [&](Kind kind) {
+                Instruction in{.kind = kind, .negated = negated, .place = d.ref};
+                if (registerBit) {
+                    in.place = static_cast<const std::uint8_t*>(d.ref) + d.bit / 8;
+                    in.mask = static_cast<std::uint8_t>(1u << (d.bit % 8));
+                }
+                return in;
+            };
+            const auto call = [&](FastHandler handler) {
+                run.push_back({.kind = Kind::Call, .handler = calls[handler], .place = &d});
+            };
+            const auto output = [&](Kind kind, FastHandler otherwise) {
+                if (byte || registerBit) {
+                    run.push_back(bitPlace(kind));
+                    run.push_back({.kind = Kind::Store, .place = ditto});
+                } else {
+                    call(otherwise);
+                }
+            };
+            switch (static_cast<Handler>(d.handler)) {
+            case HRung:
+                run.push_back({.kind = Kind::Rung});
+                break;
+            case HContactByte:
+            case HContact:
+                if (byte || registerBit)
+                    run.push_back(bitPlace(Kind::And));
+                else
+                    call(FContact);
+                break;
+            case HEdge:
+                if (byte || registerBit) {
+                    Instruction in = bitPlace(Kind::Edge);
+                    in.rising = d.flags & compiler::Rising;
+                    in.operandNegated = d.flags & compiler::OperandNegated;
+                    in.state = &m_edges[d.slot];
+                    run.push_back(in);
+                } else {
+                    call(FEdge);
+                }
+                break;
+            case HTimer:
+                call(FTimer);
+                break;
+            case HLoadA:
+            case HLoadB: {
+                const std::int32_t slot = d.handler == HLoadA ? slotA : slotB;
+                if (d.flags & compiler::ConstantOperand)
+                    run.push_back({.kind = Kind::LoadConst, .slot = slot, .constant = d.constant});
+                else if (d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register))
+                    run.push_back({.kind = Kind::Load, .slot = slot, .place = d.ref});
+                else
+                    call(d.handler == HLoadA ? FLoadA : FLoadB);
+                break;
+            }
+            case HEqual:
+            case HGreater:
+            case HLess:
+            case HGreaterEqual:
+            case HLessEqual:
+                run.push_back(
+                    {.kind = Kind::Compare,
+                     .negated = negated,
+                     .condition = static_cast<ScanMachineCode::Condition>(d.handler - HEqual),
+                     .slot = slotA,
+                     .slot2 = slotB});
+                break;
+            case HBranchOpen:
+            case HBranchNext:
+            case HBranchClose: {
+                if (d.handler == HBranchOpen)
+                    ++depth;
+                if (depth < 1 || depth > maxDepth)
+                    return; // not a program the compiler makes: interpreted
+                const auto slot = static_cast<std::int32_t>(
+                    offsetof(FastContext, branches) +
+                    sizeof(FastContext::Branch) * static_cast<std::size_t>(depth - 1));
+                const Kind kind = d.handler == HBranchOpen   ? Kind::Open
+                                  : d.handler == HBranchNext ? Kind::Next
+                                                             : Kind::Close;
+                run.push_back({.kind = kind, .slot = slot});
+                if (d.handler == HBranchClose)
+                    --depth;
+                break;
+            }
+            case HCoilByte:
+            case HCoil:
+                output(Kind::Store, FCoil);
+                break;
+            case HSetByte:
+            case HSet:
+                output(Kind::Set, FSet);
+                break;
+            case HResetByte:
+            case HReset:
+                output(Kind::Reset, FReset);
+                break;
+            case HToggle:
+                call(FToggle);
+                break;
+            case HJump:
+                call(FJump);
+                break;
+            case HSequenceReset:
+                call(FSequenceReset);
+                break;
+            case HArith:
+                if (!compileArithmetic(d, run))
+                    call(FArith);
+                break;
+            case HandlerCount:
+                break;
+            }
+        }
+    }
+    m_machineCode = ScanMachineCode::compile(runs, &m_memory);
+}
+
+// Register arithmetic other than a division, in line; false for the rest.
+bool UnitEngine::compileArithmetic(const Decoded& d, ScanMachineCode::Run& run) {
+    using Operation = ScanMachineCode::Operation;
+    constexpr auto a = static_cast<std::int32_t>(offsetof(FastContext, a));
+    constexpr auto b = static_cast<std::int32_t>(offsetof(FastContext, b));
+    constexpr std::int32_t current = ScanMachineCode::kCurrent;
+    constexpr std::int32_t constant = ScanMachineCode::kConstant;
+    if (d.refKind != static_cast<std::uint8_t>(WordRef::Kind::Register) || d.dropWrite)
+        return false;
+    ScanMachineCode::Instruction in{.kind = ScanMachineCode::Kind::Arithmetic,
+                                    .place = d.ref,
+                                    .state = &m_memory.systemMemories[kOverflow]};
+    const auto set = [&in](std::int32_t x, Operation operation, std::int32_t y, int value = 0) {
+        in.slot = x;
+        in.operation = operation;
+        in.slot2 = y;
+        in.constant = value;
+    };
+    switch (static_cast<ArithOp>(d.aux)) {
+    case ArithOp::Increment:
+        set(current, Operation::Add, constant, 1);
+        break;
+    case ArithOp::Decrement:
+        set(current, Operation::Add, constant, -1);
+        break;
+    case ArithOp::Add:
+        set(current, Operation::Add, a);
+        break;
+    case ArithOp::Sub:
+        set(current, Operation::Subtract, a);
+        break;
+    case ArithOp::Mul:
+        set(current, Operation::Multiply, a);
+        break;
+    case ArithOp::Copy:
+        set(a, Operation::Add, constant);
+        break;
+    case ArithOp::AddAB:
+        set(a, Operation::Add, b);
+        break;
+    case ArithOp::SubAB:
+        set(a, Operation::Subtract, b);
+        break;
+    case ArithOp::MulAB:
+        set(a, Operation::Multiply, b);
+        break;
+    case ArithOp::Div:
+    case ArithOp::DivAB:
+        return false;
+    }
+    run.push_back(in);
+    return true;
+}
 
 bool UnitEngine::timer(const Decoded& in, bool input, int cycleMs) {
     auto& freeze = m_memory.systemMemories[kTimerFreeze];

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ScanMachineCode.h"
 #include "Timer.h"
 #include "UnitMemory.h"
 #include "compiler/Image.h"
@@ -195,6 +196,30 @@ private:
     void runWordStatements(const Row<WordStatement>& row, std::int64_t& a, std::int64_t& b);
     template <bool withEdges>
     static void runBitStatements(const Row<BitStatement>& row, std::uint8_t& ditto, int& jump);
+    // What a step's unmarked code works on besides the power: runFast's
+    // locals, or the context the step's machine code passes its handlers.
+    struct FastContext {
+        struct Branch {
+            unsigned in;
+            unsigned any;
+        };
+        UnitEngine* engine;
+        int* pendingJump;
+        int cycleMs;
+        int depth;
+        std::int64_t a;
+        std::int64_t b;
+        Branch branches[64];
+    };
+    // runFast's handler `kind`: inlined there, and called by the machine code
+    // as fastCall<kind>.
+    template <int kind>
+    static unsigned fastOp(FastContext& context, const void* arg, unsigned power);
+    template <int kind> static unsigned fastCall(void* context, const void* arg, unsigned power);
+    // Translates each step's code to machine code without marks, where the
+    // machine allows it (docs/simulator.md, "Speed").
+    void compileSteps();
+    bool compileArithmetic(const Decoded& in, ScanMachineCode::Run& run);
     void runSteps(bool marking, int cycleMs);
     // Runs a step's unmarked code from `op`; with `handlerTable`, only gives
     // the handlers' addresses for translate() and runs nothing.
@@ -225,6 +250,7 @@ private:
     std::vector<RemoteCopy> m_remoteCopies;
     std::vector<Decoded> m_code;
     std::vector<FastOp> m_fast;
+    std::unique_ptr<ScanMachineCode> m_machineCode; // a run per step, or null: runFast
     std::vector<ByteEdge> m_byteEdges;
     std::vector<BitStatement> m_bitStatements;
     std::vector<Row<BitStatement>> m_bitStatementRows;
