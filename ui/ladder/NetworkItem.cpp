@@ -37,6 +37,7 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
     m_network = network;
     m_number = context.number;
     m_firstStatement = context.firstStatement;
+    m_statementCount = static_cast<std::uint32_t>(ladder::statementCount(network));
     m_namesVersion = namesVersion;
     m_layout = ladder::layoutNetwork(network, context);
     m_option = ladder::configOptionOf(network);
@@ -168,9 +169,12 @@ void NetworkItem::paintBar(QPainter& painter) const {
     const render::LadderStyle& style = m_drawing->style;
     const render::PowerSnapshot* power = m_drawing->live ? &m_drawing->live->power : nullptr;
     bool energised = false;
+    // The network's statements are numbered one after the other: one search,
+    // then a walk, for a page of thousands of bars.
     if (power)
-        for (const auto& element : m_layout.elements)
-            if (element.output >= 0 && power->conducts(element.statement, 0)) {
+        for (auto it = power->statements.lower_bound(m_firstStatement);
+             it != power->statements.end() && it->first < m_firstStatement + m_statementCount; ++it)
+            if (it->second.energised) {
                 energised = true;
                 break;
             }

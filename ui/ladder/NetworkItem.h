@@ -62,6 +62,7 @@ private:
     ladder::NetworkLayout m_layout;
     int m_number = 0;
     std::uint32_t m_firstStatement = 0;
+    std::uint32_t m_statementCount = 0;
     int m_namesVersion = -1;
     bool m_laidOut = false;
     bool m_collapsed = false;
