@@ -162,6 +162,24 @@ void BM_PaintAtFullSize(benchmark::State& state) {
 }
 BENCHMARK(BM_PaintAtFullSize)->Unit(benchmark::kMillisecond);
 
+// The same at the smallest zoom a user can set (LadderView::kMinimumZoom):
+// the most networks the window ever shows outside this benchmark.
+void BM_PaintAtMinimumZoom(benchmark::State& state) {
+    Fixture& f = fixture();
+    rs::ui::LadderView* view = f.ladder->view();
+    const QTransform fitted = view->transform();
+    view->setTransform(
+        QTransform::fromScale(rs::ui::LadderView::kMinimumZoom, rs::ui::LadderView::kMinimumZoom));
+    QApplication::processEvents();
+    for (auto _ : state)
+        view->viewport()->repaint();
+    state.counters["networks_in_view"] =
+        static_cast<double>(view->items(view->viewport()->rect()).size());
+    view->setTransform(fitted);
+    countNetworks(state);
+}
+BENCHMARK(BM_PaintAtMinimumZoom)->Unit(benchmark::kMillisecond);
+
 } // namespace
 
 // Widgets need a QApplication (offscreen: no display).
