@@ -40,16 +40,20 @@
         <translation>unbekanntes Design &apos;%1&apos;; verwenden Sie light, dark oder system</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Die Seite, die gezeigt wird: ladder:N (der Code von Einheit N als Kontaktplan), text:N (als Text), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
-    </message>
-    <message>
         <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
         <translation>Zuerst das Szenario im Simulator ausführen, damit das Fenster den Zustand zeigt, in dem es endet.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
-        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, variables:N und unit:N für Einheit N sowie project</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Die Seite, die gezeigt wird: ladder:N (der Code von Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, variables:N und unit:N für Einheit N, ladder:N.S und text:N.S für ihre Sequenz S sowie project</translation>
+    </message>
+    <message>
+        <source>%1 has no sequence %2 in unit %3</source>
+        <translation>%1 hat keine Sequenz %2 in Einheit %3</translation>
     </message>
 </context>
 <context>

@@ -40,15 +40,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no sequence %2 in unit %3</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

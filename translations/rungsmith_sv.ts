@@ -40,16 +40,20 @@
         <translation>okänt tema &apos;%1&apos;; använd light, dark eller system</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Sidan som ska visas: ladder:N (koden för enhet N som stegdiagram), text:N (som text), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
-    </message>
-    <message>
         <source>Run the scenario in the simulator first, so the window shows the live state it ends in.</source>
         <translation>Kör först scenariot i simulatorn, så att fönstret visar det tillstånd som det slutar i.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, and project</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, variables:N och unit:N för enhet N, samt project</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
+        <translation>Sidan som ska visas: ladder:N (koden för enhet N som stegdiagram), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, samt project</translation>
+    </message>
+    <message>
+        <source>%1 has no sequence %2 in unit %3</source>
+        <translation>%1 har ingen sekvens %2 i enhet %3</translation>
     </message>
 </context>
 <context>

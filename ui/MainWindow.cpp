@@ -768,13 +768,19 @@ bool MainWindow::showPage(const PageRef& page) {
     return true;
 }
 
-bool MainWindow::showPage(PageRef::Kind kind, int station) {
+bool MainWindow::showPage(PageRef::Kind kind, int station, int sequence) {
     ProjectDocument* document = currentDocument();
     if (document && kind == PageRef::Kind::Project)
         return showPage(PageRef{kind, document});
     if (!document || !project::unitSettings(document->project(), station))
         return false;
-    return showPage(PageRef{kind, document, station, 0});
+    if (sequence != 0) {
+        const std::vector<int> sequences = project::sequencesOf(document->project(), station);
+        if ((kind != PageRef::Kind::Code && kind != PageRef::Kind::Ladder) ||
+            std::find(sequences.begin(), sequences.end(), sequence) == sequences.end())
+            return false;
+    }
+    return showPage(PageRef{kind, document, station, sequence});
 }
 
 bool MainWindow::showUnit(int station) {

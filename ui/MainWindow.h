@@ -72,7 +72,8 @@ public:
     // unit page, I/O options or variables, or the project page (any station).
     // False when there is no such unit.
     bool showUnit(int station);
-    bool showPage(PageRef::Kind kind, int station);
+    // A sequence (1-9) of the unit's code, for Code and Ladder; false when it has none.
+    bool showPage(PageRef::Kind kind, int station, int sequence = 0);
     // Shows any page; false when the user keeps editing a text with errors.
     bool showPage(const PageRef& page);
     PageRef currentPage() const { return m_current; }

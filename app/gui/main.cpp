@@ -35,26 +35,30 @@ int usageError(const QString& message) {
 struct Page {
     rs::ui::PageRef::Kind kind;
     int station;
+    int sequence = 0;
 };
 
 // "ladder:N", "text:N", "io:N", "variables:N" and "unit:N": a page of the unit
-// with station number N; "project": the project's own page.
+// with station number N; "ladder:N.S" and "text:N.S" its sequence S, as the
+// language writes a sequence (S0.1); "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
-    static const QRegularExpression form(
-        QStringLiteral("^(ladder|text|io|variables|unit):(\\d{1,2})$"));
+    static const QRegularExpression form(QStringLiteral(
+        "^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|variables|unit):(\\d{1,2}))$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
-    const QString kind = match.captured(1);
+    const bool code = match.hasCaptured(1);
+    const QString kind = code ? match.captured(1) : match.captured(4);
     using Kind = rs::ui::PageRef::Kind;
     return Page{kind == QLatin1String("ladder") ? Kind::Ladder
                 : kind == QLatin1String("text") ? Kind::Code
                 : kind == QLatin1String("io")   ? Kind::IoOptions
                 : kind == QLatin1String("unit") ? Kind::Unit
                                                 : Kind::Variables,
-                match.captured(2).toInt()};
+                (code ? match.captured(2) : match.captured(5)).toInt(),
+                code && match.hasCaptured(3) ? match.captured(3).toInt() : 0};
 }
 
 std::optional<rs::ui::Preferences::Theme> themeOf(const QString& text) {
@@ -105,7 +109,8 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption pageOption(
         QStringLiteral("page"),
         CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
-                        "text), io:N (its I/O options), variables:N, unit:N, or project."),
+                        "text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), "
+                        "variables:N, unit:N, or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -135,7 +140,8 @@ int main(int argc, char* argv[]) {
         page = pageOf(parser.value(pageOption));
         if (!page)
             return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
-                                              "io:N, variables:N and unit:N for unit N, and "
+                                              "io:N, variables:N and unit:N for unit N, "
+                                              "ladder:N.S and text:N.S for its sequence S, and "
                                               "project")
                                   .arg(parser.value(pageOption)));
     }
@@ -150,7 +156,12 @@ int main(int argc, char* argv[]) {
         rs::ui::applyTheme(*theme);
     const QString shownFile = files.isEmpty() ? CommandLine::tr("the example") : files.first();
     const QString noSuchUnit =
-        CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
+        page && page->sequence != 0
+            ? CommandLine::tr("%1 has no sequence %2 in unit %3")
+                  .arg(shownFile)
+                  .arg(page->sequence)
+                  .arg(page->station)
+            : CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
 
     rs::ui::MainWindow window;
     if (parser.isSet(screenshotOption)) {
@@ -160,7 +171,7 @@ int main(int argc, char* argv[]) {
             return usageError(error);
         window.show();
         settle();
-        if (page && !window.showPage(page->kind, page->station))
+        if (page && !window.showPage(page->kind, page->station, page->sequence))
             return usageError(noSuchUnit);
         if (parser.isSet(simulateOption)) {
             const auto result = window.simulation()->runScenario(parser.value(simulateOption));
@@ -183,7 +194,7 @@ int main(int argc, char* argv[]) {
         window.openFile(files.first());
     else if (!recovered)
         window.showExample();
-    if (page && !window.showPage(page->kind, page->station))
+    if (page && !window.showPage(page->kind, page->station, page->sequence))
         complain(noSuchUnit);
     if (parser.isSet(simulateOption)) {
         const auto result = window.simulation()->runScenario(parser.value(simulateOption));

@@ -66,6 +66,24 @@ TEST_F(GuiCommandLine, ScreenshotsOfEveryPageOfAUnit) {
     }
 }
 
+TEST_F(GuiCommandLine, ScreenshotsOfASequence) {
+    // The muting example has sequence 1 in unit 0, written S0.1 in the language.
+    for (const QString& page : {QStringLiteral("ladder:0.1"), QStringLiteral("text:0.1")}) {
+        const GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("sequence.png"),
+                                QStringLiteral("--page"), page});
+        EXPECT_EQ(run.exitCode, 0) << page.toStdString() << ": " << run.err.toStdString();
+    }
+    GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("none.png"),
+                      QStringLiteral("--page"), QStringLiteral("ladder:0.5")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("no sequence 5 in unit 0")))
+        << run.err.toStdString();
+    run = gui({kMuting, QStringLiteral("--screenshot"), out("io.png"), QStringLiteral("--page"),
+               QStringLiteral("io:0.1")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains(QStringLiteral("unknown page 'io:0.1'"))) << run.err.toStdString();
+}
+
 TEST_F(GuiCommandLine, AnUnknownThemeIsExitTwo) {
     const GuiRun run = gui({QStringLiteral("--screenshot"), out("a.png"), QStringLiteral("--theme"),
                             QStringLiteral("purple")});
