@@ -2424,7 +2424,7 @@
     <name>rs::ui::WaveformPanel</name>
     <message>
         <source>Add a variable to plot</source>
-        <translation>Eine Variable zum Darstellen hinzufügen</translation>
+        <translation>Variable darstellen …</translation>
     </message>
     <message>
         <source>Remove</source>

@@ -457,6 +457,14 @@ TEST_F(LadderPageTest, LiveStateColoursElementsAndReportsClicks) {
     key(Qt::Key_F10, Qt::ShiftModifier);
     ASSERT_EQ(menus.size(), 1);
     EXPECT_EQ(menus.front().front().toString(), QStringLiteral("I0.1"));
+    // Live, the page is still for reading: networks expand and collapse.
+    rs::ui::NetworkItem* first = page().networkItem(0, 0);
+    const QPointF box = first->mapToScene(first->collapseBox().center());
+    QTest::mouseClick(viewport(), Qt::LeftButton, {}, page().view()->mapFromScene(box));
+    EXPECT_TRUE(first->collapsed());
+    EXPECT_TRUE(page().action(QStringLiteral("expandAllAction"))->isEnabled());
+    page().action(QStringLiteral("expandAllAction"))->trigger();
+    EXPECT_FALSE(first->collapsed());
     // Live, the page does not edit.
     const QByteArray before = unitText(0);
     key(Qt::Key_Delete);

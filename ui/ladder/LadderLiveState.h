@@ -21,6 +21,9 @@ struct LadderLiveState {
     // Operand addresses that are forced, spelled as ladder::ElementLayout::address spells them
     // (e.g. "I0.2", "M1.5", "R3"); such elements are marked (e.g. a red "F" badge).
     std::set<QString> forced;
+    // Boxes (by statement and element) with a forced operand besides their
+    // address: a register compared with or computed from.
+    std::set<std::pair<std::uint32_t, std::uint16_t>> forcedElements;
     // Active step per sequence (1..9) of the unit; a sequence page marks its active step.
     std::map<int, int> activeSteps;
 };

@@ -487,11 +487,14 @@ QString LadderPage::message() const {
 
 void LadderPage::updateActions() {
     const bool editable = m_document && !isLive();
+    // Viewing stays possible while simulating; only editing stops.
+    static const QStringList viewing = {
+        QStringLiteral("ladderTextAction"), QStringLiteral("printLadderAction"),
+        QStringLiteral("exportPdfAction"), QStringLiteral("expandAllAction"),
+        QStringLiteral("collapseAllAction")};
     for (QAction* action : m_toolBar->actions())
-        if (action->objectName() != QLatin1String("ladderTextAction") &&
-            !action->objectName().startsWith(QLatin1String("zoom")) &&
-            action->objectName() != QLatin1String("printLadderAction") &&
-            action->objectName() != QLatin1String("exportPdfAction"))
+        if (!viewing.contains(action->objectName()) &&
+            !action->objectName().startsWith(QLatin1String("zoom")))
             action->setEnabled(editable);
     action(QStringLiteral("updateNetworkAction"))->setEnabled(editable && isEditingNetwork());
     action(QStringLiteral("undoNetworkAction"))->setEnabled(editable && isEditingNetwork());
@@ -756,6 +759,11 @@ std::vector<std::pair<int, int>> LadderPage::chosenNetworks() const {
 void LadderPage::pressed(const QPointF& scenePosition, Qt::MouseButton button,
                          Qt::KeyboardModifiers modifiers) {
     NetworkItem* item = itemAt(scenePosition);
+    if (item && button == Qt::LeftButton &&
+        item->inCollapseBox(item->mapFromScene(scenePosition))) {
+        toggleCollapsed(item->step(), item->index());
+        return;
+    }
     if (isLive()) {
         const LadderCursor at = cursorAt(scenePosition);
         m_drawing.cursor = at;
@@ -763,11 +771,6 @@ void LadderPage::pressed(const QPointF& scenePosition, Qt::MouseButton button,
         if (button == Qt::LeftButton && element && !element->address.isEmpty())
             emit operandClicked(element->address);
         repaintItems();
-        return;
-    }
-    if (item && button == Qt::LeftButton &&
-        item->inCollapseBox(item->mapFromScene(scenePosition))) {
-        toggleCollapsed(item->step(), item->index());
         return;
     }
     if (item && button == Qt::LeftButton && item->option() &&

@@ -259,14 +259,22 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
             note != drawing.live->annotations.end()) {
             // The value takes the place of the address or preset it tells
             // about ("1.20 s / 3.00 s" for "3s00"): below the cell the text
-            // would run into the next rung or the network's border.
+            // would run into the next rung or the network's border. It stays
+            // within its cell, shortened if it must be.
             const QRectF label = element.addressRect.translated(kGutter, 0);
             painter.fillRect(label, drawing.style.background);
             painter.setPen(drawing.style.powered);
-            painter.drawText(label.adjusted(-12, 0, 12, 0), Qt::AlignCenter, note->second);
+            const QString text = painter.fontMetrics().elidedText(
+                note->second, Qt::ElideRight, static_cast<int>(cell.width()) - 4);
+            painter.drawText(QRectF(cell.left(), label.top(), cell.width(), label.height()),
+                             Qt::AlignCenter, text);
         }
-        if (!element.address.isEmpty() && drawing.live->forced.count(element.address) > 0) {
-            const QRectF badge(cell.right() - 18, cell.top() + 2, 14, 14);
+        const bool forced =
+            (!element.address.isEmpty() && drawing.live->forced.count(element.address) > 0) ||
+            drawing.live->forcedElements.count(key) > 0;
+        if (forced) {
+            const QRectF symbol = element.symbolRect.translated(kGutter, 0);
+            const QRectF badge(symbol.right() - 7, symbol.top() - 9, 14, 14);
             painter.setPen(Qt::NoPen);
             painter.setBrush(drawing.problem);
             painter.drawRect(badge);

@@ -40,6 +40,7 @@ public:
     // The element at a point in item coordinates, or -1.
     int elementAt(const QPointF& point) const;
     bool inCollapseBox(const QPointF& point) const;
+    QRectF collapseBox() const; // in item coordinates
     // Where an element, or a group's elements together, stand in item coordinates.
     QRectF elementRect(const ladder::ElementLayout& element) const;
     QRectF groupRect(const ladder::ElementPath& path) const;
@@ -53,7 +54,6 @@ private:
     // Zoomed out so far that the network is a few pixels high: one bar, green
     // when any of its outputs is driven.
     void paintBar(QPainter& painter) const;
-    QRectF collapseBox() const;
 
     const LadderDrawing* m_drawing;
     int m_step;

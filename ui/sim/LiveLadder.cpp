@@ -15,13 +15,12 @@ QString seconds(std::int64_t ms) {
     return QStringLiteral("%1 s").arg(static_cast<double>(ms) / 1000.0, 0, 'f', 2);
 }
 
-// The power of one statement from its instructions [first, first + count);
-// false when none of them ran.
+// Adds what the instructions [first, first + count) of one statement did to
+// its power; false when none of them ran.
 bool statementPower(const sim::UnitEngine& unit, std::size_t first, std::size_t count,
                     render::StatementPower& power) {
     const auto& code = unit.image().code;
     const auto& conduction = unit.conduction();
-    power = {};
     bool ran = false;
     for (std::size_t i = first; i < first + count; ++i) {
         if (conduction[i] == sim::Conduction::NotRun)
@@ -44,26 +43,14 @@ bool statementPower(const sim::UnitEngine& unit, std::size_t first, std::size_t 
 render::PowerSnapshot powerSnapshot(const sim::UnitEngine& unit) {
     render::PowerSnapshot snapshot;
     const auto& code = unit.image().code;
-    const auto& conduction = unit.conduction();
-    render::StatementPower* current = nullptr;
-    std::uint32_t currentStatement = 0;
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        if (conduction[i] == sim::Conduction::NotRun)
-            continue;
-        const compiler::Instruction& in = code[i];
-        if (!current || currentStatement != in.statement) {
-            current = &snapshot.statements[in.statement];
-            currentStatement = in.statement;
-        }
-        const bool on = conduction[i] == sim::Conduction::On;
-        if (in.element == 0) {
-            // The rung's start and its output both carry element 0; the output comes last.
-            current->energised = on;
-        } else if (on) {
-            current->conducting.insert(in.element);
-        } else {
-            current->conducting.erase(in.element);
-        }
+    for (std::size_t first = 0; first < code.size();) {
+        std::size_t end = first + 1;
+        while (end < code.size() && code[end].statement == code[first].statement)
+            ++end;
+        auto [power, added] = snapshot.statements.try_emplace(code[first].statement);
+        if (!statementPower(unit, first, end - first, power->second) && added)
+            snapshot.statements.erase(power);
+        first = end;
     }
     return snapshot;
 }
@@ -138,13 +125,13 @@ QString LiveLadderBuilder::textOf(const sim::UnitEngine& unit, const Box& box) c
     QStringList parts;
     for (std::size_t i = 0; i < box.instructions.size(); ++i) {
         const QString part =
-            QStringLiteral("%1 = %2")
+            QStringLiteral("%1=%2")
                 .arg(QString::fromStdString(lang::toString(code[box.instructions[i]].operand)))
                 .arg(box.values[i]);
         if (!parts.contains(part))
             parts << part;
     }
-    return parts.join(QStringLiteral(", "));
+    return parts.join(QStringLiteral("  "));
 }
 
 void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& simulation,
@@ -183,6 +170,12 @@ void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& si
             if (readValues(*unit, box))
                 state.annotations[box.key] = textOf(*unit, box);
     }
+    state.forcedElements.clear();
+    const auto& code = unit->image().code;
+    for (const Box& box : m_boxes)
+        for (std::size_t index : box.instructions)
+            if (unit->forces().count(code[index].operand))
+                state.forcedElements.insert(box.key);
     state.forced.clear();
     for (const auto& [address, value] : unit->forces()) {
         const QString text = QString::fromStdString(lang::toString(address));

@@ -54,10 +54,13 @@ void ScenarioResultsView::addResult(const SimulationSession::ScenarioResult& res
         line->setData(0, kPathRole, result.path);
         line->setData(0, kLineRole, failure.line);
         line->setToolTip(0, tr("Double-click to show line %1 of %2").arg(failure.line).arg(file));
+        line->setForeground(0, errorTextColor(palette()));
     }
     m_tree->insertTopLevelItem(0, run);
     run->setExpanded(true);
-    m_tree->setCurrentItem(run);
+    // The first failure is chosen, so Enter shows it; a run that passed stays
+    // unchosen, keeping its colour visible.
+    m_tree->setCurrentItem(run->childCount() > 0 ? run->child(0) : nullptr);
 }
 
 } // namespace rs::ui

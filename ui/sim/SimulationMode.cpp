@@ -144,6 +144,11 @@ QString SimulationMode::begin() {
     const QString error = m_session.begin(document);
     if (!error.isEmpty())
         return error;
+    showSimulationDocks(document);
+    return {};
+}
+
+void SimulationMode::showSimulationDocks(const ProjectDocument* document) {
     for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock})
         dock->show();
     if (document->project().stations().size() > 1)
@@ -152,7 +157,6 @@ QString SimulationMode::begin() {
     showBottomDocks();
     message(
         tr("Simulating %1. Editing the project ends the simulation.").arg(document->displayName()));
-    return {};
 }
 
 void SimulationMode::end() {
@@ -160,13 +164,14 @@ void SimulationMode::end() {
 }
 
 SimulationSession::ScenarioResult SimulationMode::runScenario(const QString& path) {
-    const SimulationSession::ScenarioResult result =
-        m_session.runScenario(m_window->currentDocument(), path);
+    ProjectDocument* document = m_window->currentDocument();
+    const SimulationSession::ScenarioResult result = m_session.runScenario(document, path);
+    // A run started from editing is a simulation like any other: its docks come too.
+    if (document && m_session.simulation())
+        showSimulationDocks(document);
     m_scenarios->addResult(result);
     m_scenariosDock->show();
     m_scenariosDock->raise();
-    m_waveformDock->show();
-    showBottomDocks();
     m_waveform->view()->zoomToFit();
     return result;
 }

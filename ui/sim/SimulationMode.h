@@ -18,6 +18,7 @@ class BusStatusView;
 class ForcesView;
 class LadderPage;
 class MainWindow;
+class ProjectDocument;
 class ScenarioFileViewer;
 class ScenarioResultsView;
 class SimulationControls;
@@ -66,6 +67,8 @@ private:
     QDockWidget* addDock(QWidget* content, const QString& title, const char* name,
                          bool withProblems = true);
     void stateChanged();
+    // The docks of a running simulation, and the status bar's word that it runs.
+    void showSimulationDocks(const ProjectDocument* document);
     void showBottomDocks();
     void message(const QString& text);
 
