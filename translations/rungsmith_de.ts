@@ -1038,6 +1038,14 @@
         <source>Network %1</source>
         <translation>Netzwerk %1</translation>
     </message>
+    <message>
+        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation>Simulation: Ein Klick oder die Leertaste auf einem Eingang schaltet ihn um; Rechtsklick, Menütaste oder Umschalt+F10 forcen die Variable eines Elements. Bearbeiten beendet die Simulation.</translation>
+    </message>
+    <message>
+        <source>No networks in this code.</source>
+        <translation>Keine Netzwerke in diesem Code.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -1038,6 +1038,14 @@
         <source>Network %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No networks in this code.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -1038,6 +1038,14 @@
         <source>Network %1</source>
         <translation>Nätverk %1</translation>
     </message>
+    <message>
+        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation>Simulerar: ett klick eller mellanslag på en ingång växlar den; högerklick, menytangenten eller Shift+F10 forcerar variabeln för valfritt element. Redigering avslutar simuleringen.</translation>
+    </message>
+    <message>
+        <source>No networks in this code.</source>
+        <translation>Inga nätverk i den här koden.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -109,9 +109,10 @@ LadderPage::LadderPage(QWidget* parent)
     layout->addWidget(m_toolBar);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_status);
-    m_emptyHint = m_scene->addSimpleText(
+    m_editingHint =
         tr("No networks yet. Press Ins, or right-click > New Network, then insert the network's "
-           "output (L coil, S set, R reset, J jump ...) and its contacts."));
+           "output (L coil, S set, R reset, J jump ...) and its contacts.");
+    m_emptyHint = m_scene->addSimpleText(m_editingHint);
     m_emptyHint->setVisible(false);
     createActions();
     m_toolBar->setIconSize(kElementIconSize);
@@ -308,10 +309,15 @@ void LadderPage::updateTitle() {
         return;
     }
     m_title->setTitle(pageTitle());
-    m_title->setSubtitle(tr("Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, "
-                            "S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \\ "
-                            "before, after, parallel; Enter properties; Del delete; Ins new "
-                            "network."));
+    // The keys that work now: simulating, the page is for watching and forcing.
+    m_title->setSubtitle(
+        isLive() ? tr("Simulating: a click or Space on an input toggles it; a right click, the "
+                      "Menu key or Shift+F10 forces any element's variable. Editing ends the "
+                      "simulation.")
+                 : tr("Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, "
+                      "S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \\ "
+                      "before, after, parallel; Enter properties; Del delete; Ins new "
+                      "network."));
 }
 
 QString LadderPage::pageTitle() const {
@@ -454,6 +460,7 @@ void LadderPage::placeItems() {
     const bool empty =
         std::all_of(m_items.begin(), m_items.end(), [](const auto& step) { return step.empty(); });
     m_emptyHint->setVisible(empty && m_document);
+    m_emptyHint->setText(isLive() ? tr("No networks in this code.") : m_editingHint);
     m_emptyHint->setBrush(m_drawing.style.commentInk);
     m_emptyHint->setPos(NetworkItem::kGutter, y + 16);
     if (empty)
@@ -509,6 +516,8 @@ void LadderPage::setLiveState(const LadderLiveState* state) {
         if (state && m_editSession)
             undoNetwork();
         updateActions();
+        updateTitle();
+        placeItems();
     }
     repaintItems();
 }

@@ -175,6 +175,7 @@ private:
     QGraphicsScene* m_scene;
     LadderView* m_view;
     QLabel* m_status;
+    QString m_editingHint; // what an empty page says while editing
     QGraphicsSimpleTextItem* m_emptyHint = nullptr;
     QActionGroup* m_placementGroup = nullptr;
     QPointer<ProjectDocument> m_document;
