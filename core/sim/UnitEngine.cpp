@@ -146,6 +146,40 @@ bool isWordKind(AddressKind kind) {
     }
 }
 
+bool isDivision(ArithOp op) {
+    return op == ArithOp::Div || op == ArithOp::DivAB;
+}
+
+// What an arithmetic output computes from the target's value and a and b,
+// before saturation; divisions, with their remainder and division by zero,
+// are the caller's.
+std::int64_t undividedResult(ArithOp op, std::int64_t current, std::int64_t a, std::int64_t b) {
+    switch (op) {
+    case ArithOp::Increment:
+        return current + 1;
+    case ArithOp::Decrement:
+        return current - 1;
+    case ArithOp::Add:
+        return current + a;
+    case ArithOp::Sub:
+        return current - a;
+    case ArithOp::Mul:
+        return current * a;
+    case ArithOp::Copy:
+        return a;
+    case ArithOp::AddAB:
+        return a + b;
+    case ArithOp::SubAB:
+        return a - b;
+    case ArithOp::MulAB:
+        return a * b;
+    case ArithOp::Div:
+    case ArithOp::DivAB:
+        break;
+    }
+    return 0;
+}
+
 } // namespace
 
 UnitEngine::UnitEngine(compiler::UnitImage image, const Bus& published)
@@ -925,7 +959,7 @@ void UnitEngine::translate() {
                 const auto op = static_cast<ArithOp>(d.aux);
                 const bool plain =
                     d.refKind == static_cast<std::uint8_t>(WordRef::Kind::Register) &&
-                    !d.dropWrite && op != ArithOp::Div && op != ArithOp::DivAB;
+                    !d.dropWrite && !isDivision(op);
                 kind = plain ? FArithRegister : FArith;
                 break;
             }
@@ -1041,7 +1075,7 @@ bool UnitEngine::toWordStatement(std::uint32_t first, std::uint32_t end, WordSta
         return false;
     const Decoded& output = m_code[end - 1];
     const auto op = static_cast<ArithOp>(output.aux);
-    if (output.op != Op::Arith || output.dropWrite || op == ArithOp::Div || op == ArithOp::DivAB ||
+    if (output.op != Op::Arith || output.dropWrite || isDivision(op) ||
         output.refKind != static_cast<std::uint8_t>(WordRef::Kind::Register))
         return false;
     out.target = static_cast<std::int16_t*>(output.ref);
@@ -1379,41 +1413,8 @@ RS_FAST_OP(FArithRegister) {
         return power;
     auto& target = *static_cast<std::int16_t*>(RS_IN.ref);
     const std::int64_t current = target;
-    const std::int64_t a = c.a;
-    const std::int64_t b = c.b;
-    std::int64_t result = 0;
-    switch (static_cast<ArithOp>(RS_IN.aux)) {
-    case ArithOp::Increment:
-        result = current + 1;
-        break;
-    case ArithOp::Decrement:
-        result = current - 1;
-        break;
-    case ArithOp::Add:
-        result = current + a;
-        break;
-    case ArithOp::Sub:
-        result = current - a;
-        break;
-    case ArithOp::Mul:
-        result = current * a;
-        break;
-    case ArithOp::Copy:
-        result = a;
-        break;
-    case ArithOp::AddAB:
-        result = a + b;
-        break;
-    case ArithOp::SubAB:
-        result = a - b;
-        break;
-    case ArithOp::MulAB:
-        result = a * b;
-        break;
-    case ArithOp::Div:
-    case ArithOp::DivAB:
-        break; // translate() leaves divisions to arithmetic()
-    }
+    // translate() leaves divisions to arithmetic().
+    const std::int64_t result = undividedResult(static_cast<ArithOp>(RS_IN.aux), current, c.a, c.b);
     c.engine->m_memory.systemMemories[kOverflow] = result < -32768 || result > 32767;
     target = static_cast<std::int16_t>(std::clamp<std::int64_t>(result, -32768, 32767));
     return power;
@@ -1822,49 +1823,11 @@ void UnitEngine::arithmetic(const Decoded& in, std::int64_t a, std::int64_t b) {
     const std::int64_t low = wide ? -2147483647 : -32768;
     const std::int64_t high = wide ? 2147483647 : 32767;
     const std::int64_t current = in.readWord();
-    std::int64_t result = 0;
-    bool division = false;
-    std::int64_t dividend = 0;
-    std::int64_t divisor = 0;
-    switch (static_cast<ArithOp>(in.aux)) {
-    case ArithOp::Increment:
-        result = current + 1;
-        break;
-    case ArithOp::Decrement:
-        result = current - 1;
-        break;
-    case ArithOp::Add:
-        result = current + a;
-        break;
-    case ArithOp::Sub:
-        result = current - a;
-        break;
-    case ArithOp::Mul:
-        result = current * a;
-        break;
-    case ArithOp::Div:
-        division = true;
-        dividend = current;
-        divisor = a;
-        break;
-    case ArithOp::Copy:
-        result = a;
-        break;
-    case ArithOp::AddAB:
-        result = a + b;
-        break;
-    case ArithOp::SubAB:
-        result = a - b;
-        break;
-    case ArithOp::MulAB:
-        result = a * b;
-        break;
-    case ArithOp::DivAB:
-        division = true;
-        dividend = a;
-        divisor = b;
-        break;
-    }
+    const auto op = static_cast<ArithOp>(in.aux);
+    const bool division = isDivision(op);
+    std::int64_t result = division ? 0 : undividedResult(op, current, a, b);
+    const std::int64_t dividend = op == ArithOp::Div ? current : a;
+    const std::int64_t divisor = op == ArithOp::Div ? a : b;
     if (division) {
         sm[kDivByZero] = divisor == 0;
         if (divisor == 0) {
