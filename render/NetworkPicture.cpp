@@ -1,6 +1,7 @@
 #include "NetworkPicture.h"
 
 #include "NetworkPainter.h"
+#include "project/SaveFileCommit.h"
 
 #include <QBuffer>
 #include <QPainter>
@@ -69,9 +70,12 @@ QString writeNetworkPicture(const QString& path, const ladder::NetworkLayout& la
         written = file.write(networkSvg(layout, style, power, title)) >= 0;
     else
         written = networkImage(layout, style, power, kPngScale).save(&file, "PNG");
-    if (!written || !file.commit())
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return {};
+    if (!written) {
+        const QString error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        file.cancelWriting();
+        return error;
+    }
+    return project::commitSaveFile(file);
 }
 
 } // namespace rs::render

@@ -7,7 +7,9 @@
 
 #include <QCoreApplication>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 namespace {
 
@@ -15,6 +17,16 @@ using rs::cli::Invocation;
 
 int usage(const QString& message) {
     std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
+    return rs::cli::UsageOrIo;
+}
+
+// Output to a pipe or a redirected file is buffered: a full disk or a closed
+// pipe shows only at the flush, and must not pass as success.
+int finishOutput(int status) {
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+        return status;
+    std::fprintf(stderr, "rungsmith-cli: cannot write the standard output: %s\n",
+                 std::strerror(errno));
     return rs::cli::UsageOrIo;
 }
 
@@ -127,6 +139,6 @@ int main(int argc, char* argv[]) {
     const QString name = arguments.takeFirst();
     for (const auto& verb : kVerbs)
         if (name == QLatin1String(verb.name))
-            return verb.run({arguments, parser});
+            return finishOutput(verb.run({arguments, parser}));
     return usage(QStringLiteral("unknown verb '%1'").arg(name));
 }

@@ -2,6 +2,7 @@
 
 #include "Annotation.h"
 #include "RemanentVariables.h"
+#include "SaveFileCommit.h"
 #include "lang/NameResolver.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
@@ -260,14 +261,63 @@ std::string writeProject(const Project& project) {
     return lang::print(document);
 }
 
-FileText readTextFile(const QString& path) {
+namespace {
+
+// Byte-order marks of the encodings a reader refuses, longest first: the
+// UTF-32 little-endian mark begins with the UTF-16 one.
+struct RefusedMark {
+    std::string_view bytes;
+    const char* encoding;
+};
+constexpr RefusedMark kRefusedMarks[] = {
+    {std::string_view("\xFF\xFE\x00\x00", 4), "UTF-32"},
+    {std::string_view("\x00\x00\xFE\xFF", 4), "UTF-32"},
+    {"\xFF\xFE", "UTF-16"},
+    {"\xFE\xFF", "UTF-16"},
+};
+constexpr std::string_view kUtf8Mark = "\xEF\xBB\xBF";
+
+} // namespace
+
+FileText readTextFile(const QString& path, qint64 maxBytes) {
     QFile file(path);
+    const auto failure = [&](const QString& reason) {
+        return FileText{{}, QStringLiteral("cannot read %1: %2").arg(path, reason)};
+    };
     if (!file.open(QIODevice::ReadOnly))
-        return {{}, QStringLiteral("cannot read %1: %2").arg(path, file.errorString())};
-    QByteArray bytes = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return {{}, QStringLiteral("cannot read %1: %2").arg(path, file.errorString())};
-    return {bytes.toStdString(), {}};
+        return failure(file.errorString());
+    // Read in pieces up to one byte past the limit: the size a device reports
+    // cannot be trusted (/dev/zero, a pipe, a file that grows).
+    constexpr qint64 kPiece = 1 << 20;
+    std::string text;
+    if (!file.isSequential())
+        text.reserve(static_cast<std::size_t>(std::min(file.size(), maxBytes) + 1));
+    for (;;) {
+        const std::size_t used = text.size();
+        const qint64 room = std::min<qint64>(kPiece, maxBytes + 1 - static_cast<qint64>(used));
+        if (room <= 0)
+            break;
+        text.resize(used + static_cast<std::size_t>(room));
+        const qint64 got = file.read(text.data() + used, room);
+        text.resize(used + static_cast<std::size_t>(std::max<qint64>(got, 0)));
+        if (got < 0)
+            return failure(file.errorString());
+        if (got == 0)
+            break;
+    }
+    if (static_cast<qint64>(text.size()) > maxBytes)
+        return {{},
+                QStringLiteral("%1: larger than %2 MB, the most Rungsmith reads from one file")
+                    .arg(path)
+                    .arg(maxBytes / (1024 * 1024))};
+    for (const RefusedMark& mark : kRefusedMarks)
+        if (text.starts_with(mark.bytes))
+            return {{},
+                    QStringLiteral("%1: %2 text is not supported; save it as UTF-8")
+                        .arg(path, QLatin1String(mark.encoding))};
+    if (text.starts_with(kUtf8Mark))
+        text.erase(0, kUtf8Mark.size());
+    return {std::move(text), {}};
 }
 
 QString writeTextFile(const QString& path, std::string_view text) {
@@ -275,10 +325,12 @@ QString writeTextFile(const QString& path, std::string_view text) {
     if (!file.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
     if (file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()) ||
-        !file.commit())
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return {};
+        static_cast<qint64>(text.size())) {
+        const QString error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        file.cancelWriting();
+        return error;
+    }
+    return commitSaveFile(file);
 }
 
 } // namespace rs::project

@@ -31,10 +31,18 @@ struct FileText {
     QString error; // "cannot read FILE: reason" when reading failed
 };
 
-FileText readTextFile(const QString& path);
+// The most any reader takes from one file: far above the largest real project
+// (the 32-unit generated plant is 2.4 MB) and low enough that an endless input
+// such as /dev/zero is refused with a message instead of exhausting memory.
+inline constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
+
+// Reads a UTF-8 text file of at most maxBytes. A leading UTF-8 byte-order mark
+// is dropped, so columns count as an editor shows them; a UTF-16 or UTF-32
+// mark is refused with a message, since every reader expects UTF-8.
+FileText readTextFile(const QString& path, qint64 maxBytes = kMaxTextFileBytes);
 
 // Writes through QSaveFile: the old file stays intact unless the whole new
-// text was written. Returns an error message, empty on success.
+// text reached the disk. Returns an error message, empty on success.
 QString writeTextFile(const QString& path, std::string_view text);
 
 } // namespace rs::project
