@@ -319,7 +319,9 @@ CsvImport importVariablesCsv(const Project& project, std::string_view csv,
             const CsvPlace variablePlace = placeOf(record, columns->variable);
             const std::string word = trimmed(field(record, columns->variable));
             const lang::AddressWord read = lang::readAddressWord(word);
-            if (read.shape != lang::AddressWord::Shape::Variable) {
+            // A sequence's step number is addressed like a variable but takes no name.
+            if (read.shape != lang::AddressWord::Shape::Variable ||
+                read.address.kind == lang::AddressKind::Sequence) {
                 problem(variablePlace, "'" + word + "' is not a variable such as I0.0 or M1.12");
                 continue;
             }

@@ -138,3 +138,11 @@ TEST(VariableCsvReading, MemoryStaysBoundedByRowsAndProblems) {
     EXPECT_EQ(bad.problems.back().line, 102);
     EXPECT_EQ(bad.problems.back().message, "50 more bad rows, not listed");
 }
+
+// Found by the fuzzer: a sequence took a name, and the project failed to read back.
+TEST(VariableCsvReading, ASequenceTakesNoName) {
+    const project::CsvImport imported = import("S0.7;er\n");
+    EXPECT_EQ(problemsOf(imported),
+              (std::vector<Problem>{{1, 1, "'S0.7' is not a variable such as I0.0 or M1.12"}}));
+    EXPECT_TRUE(project::readProject(project::writeProject(imported.project)).ok());
+}
