@@ -64,8 +64,8 @@ int importCsv(const QString& projectPath, const QString& csvPath, const QString&
     }
     const project::CsvImport imported = project::importVariablesCsv(*project, csv.text, {});
     for (const auto& problem : imported.problems)
-        std::fprintf(stderr, "%s:%d: error: %s\n", qPrintable(csvPath), problem.line,
-                     problem.message.c_str());
+        std::fprintf(stderr, "%s:%d:%d: error: %s\n", qPrintable(csvPath), problem.line,
+                     problem.column, problem.message.c_str());
     if (!imported.problems.empty())
         return Failed;
     return write(out, project::writeProject(imported.project));

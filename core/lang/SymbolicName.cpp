@@ -5,6 +5,7 @@
 #include <QChar>
 #include <QList>
 #include <QString>
+#include <QStringDecoder>
 
 #include <array>
 
@@ -72,7 +73,9 @@ std::string foldName(std::string_view name) {
 }
 
 std::optional<std::string> checkSymbolicName(std::string_view name, int instructionSet) {
-    const QString text = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    // Not QString::fromUtf8: it drops a leading byte-order mark, which the lexer does not.
+    QStringDecoder decoder(QStringDecoder::Utf8, QStringDecoder::Flag::ConvertInitialBom);
+    const QString text = decoder(QByteArrayView(name.data(), static_cast<qsizetype>(name.size())));
     if (text.isEmpty())
         return "a symbolic name cannot be empty";
     const QString quoted = "'" + text + "'";

@@ -59,7 +59,7 @@ std::optional<Annotation> parseAnnotation(std::string_view text) {
                         if (pos >= text.size())
                             break;
                         char e = text[pos++];
-                        value += e == 'n' ? '\n' : e == 't' ? '\t' : e;
+                        value += e == 'n' ? '\n' : e == 'r' ? '\r' : e == 't' ? '\t' : e;
                     } else {
                         value += c;
                     }
@@ -89,11 +89,14 @@ std::string formatAnnotation(const Annotation& annotation) {
         for (char c : value) {
             if (c == '"' || c == '\\')
                 text += '\\';
+            // A record is one line: no line break may end it early.
             if (c == '\n')
                 text += "\\n";
+            else if (c == '\r')
+                text += "\\r";
             else if (c == '\t')
                 text += "\\t";
-            else if (c != '\r')
+            else
                 text += c;
         }
         text += '"';

@@ -1,6 +1,7 @@
 #include "VariableCsv.h"
 
 #include "UnitSettings.h"
+#include "Utf8Text.h"
 #include "VariableTable.h"
 #include "lang/SymbolicName.h"
 #include "lang/TextCase.h"
@@ -75,6 +76,107 @@ std::string field(const CsvRecord& record, int column) {
     if (column < 0 || column >= static_cast<int>(record.fields.size()))
         return {};
     return record.fields[static_cast<std::size_t>(column)];
+}
+
+// Where a field starts; where the row's last field starts when it has not that many.
+CsvPlace placeOf(const CsvRecord& record, int column) {
+    if (column < 0 || column >= static_cast<int>(record.places.size()))
+        return record.places.back();
+    return record.places[static_cast<std::size_t>(column)];
+}
+
+// Walks a text byte by byte, knowing the line and column it is at.
+class TextCursor {
+public:
+    explicit TextCursor(std::string_view text) : m_text(text) {}
+
+    bool atEnd() const { return m_pos >= m_text.size(); }
+    char peek() const { return m_text[m_pos]; }
+    std::size_t offset() const { return m_pos; }
+    CsvPlace place() const { return {m_line, m_column}; }
+    char take() {
+        const char c = m_text[m_pos++];
+        if (c == '\n' || (c == '\r' && (atEnd() || peek() != '\n'))) {
+            ++m_line;
+            m_column = 1;
+        } else if (c != '\r' && !isUtf8Continuation(c)) {
+            ++m_column;
+        }
+        return c;
+    }
+
+private:
+    std::string_view m_text;
+    std::size_t m_pos = 0;
+    int m_line = 1;
+    int m_column = 1;
+};
+
+// Refuses what must never reach the project text.
+void checkText(std::string_view csv) {
+    const auto fault = findTextFault(csv);
+    if (!fault)
+        return;
+    TextCursor cursor(csv);
+    while (cursor.offset() < fault->offset)
+        cursor.take();
+    throw CsvSyntaxError{cursor.place().line, cursor.place().column, fault->message};
+}
+
+// One record at a time: the import holds no more than one row besides the text.
+class CsvReader {
+public:
+    CsvReader(std::string_view csv, char separator)
+        : m_cursor(withoutByteOrderMark(csv)), m_separator(separator) {}
+
+    bool next(CsvRecord& record);
+
+private:
+    TextCursor m_cursor;
+    char m_separator;
+};
+
+bool CsvReader::next(CsvRecord& record) {
+    if (m_cursor.atEnd())
+        return false;
+    record = {m_cursor.place().line, {}, {}};
+    while (true) {
+        if (record.fields.size() == kCsvMaxFields)
+            throw CsvSyntaxError{m_cursor.place().line, m_cursor.place().column,
+                                 "a row has more than " + std::to_string(kCsvMaxFields) +
+                                     " fields"};
+        record.places.push_back(m_cursor.place());
+        std::string current;
+        if (!m_cursor.atEnd() && m_cursor.peek() == '"') {
+            const CsvPlace opened = m_cursor.place();
+            m_cursor.take();
+            while (true) {
+                if (m_cursor.atEnd())
+                    throw CsvSyntaxError{opened.line, opened.column,
+                                         "a quoted field is never closed"};
+                const char c = m_cursor.take();
+                if (c == '"') {
+                    if (m_cursor.atEnd() || m_cursor.peek() != '"')
+                        break;
+                    m_cursor.take();
+                }
+                current += c;
+            }
+        }
+        // Unquoted text, or what follows a closing quote up to the separator.
+        while (!m_cursor.atEnd() && m_cursor.peek() != m_separator && m_cursor.peek() != '\n' &&
+               m_cursor.peek() != '\r')
+            current += m_cursor.take();
+        record.fields.push_back(std::move(current));
+        if (m_cursor.atEnd())
+            return true;
+        const char end = m_cursor.take();
+        if (end == m_separator)
+            continue;
+        if (end == '\r' && !m_cursor.atEnd() && m_cursor.peek() == '\n')
+            m_cursor.take();
+        return true;
+    }
 }
 
 bool blankRecord(const CsvRecord& record) {
@@ -162,57 +264,12 @@ char detectCsvSeparator(std::string_view csv) {
 }
 
 std::vector<CsvRecord> readCsv(std::string_view csv, char separator) {
-    csv = withoutByteOrderMark(csv);
+    checkText(withoutByteOrderMark(csv));
     std::vector<CsvRecord> records;
-    int line = 1;
-    std::size_t pos = 0;
-    while (pos < csv.size()) {
-        CsvRecord record{line, {}};
-        std::string current;
-        bool ended = false;
-        while (!ended) {
-            if (pos < csv.size() && csv[pos] == '"') {
-                const int opened = line;
-                ++pos;
-                while (true) {
-                    if (pos >= csv.size())
-                        throw CsvSyntaxError{opened, "a quoted field is never closed"};
-                    const char c = csv[pos++];
-                    if (c == '"') {
-                        if (pos < csv.size() && csv[pos] == '"') {
-                            current += '"';
-                            ++pos;
-                            continue;
-                        }
-                        break;
-                    }
-                    if (c == '\n')
-                        ++line;
-                    if (c != '\r' || pos >= csv.size() || csv[pos] != '\n')
-                        current += c;
-                }
-            }
-            // Unquoted text, or what follows a closing quote up to the separator.
-            while (pos < csv.size() && csv[pos] != separator && csv[pos] != '\n' &&
-                   csv[pos] != '\r')
-                current += csv[pos++];
-            record.fields.push_back(std::move(current));
-            current.clear();
-            if (pos >= csv.size()) {
-                ended = true;
-            } else if (csv[pos] == separator) {
-                ++pos;
-            } else {
-                if (csv[pos] == '\r')
-                    ++pos;
-                if (pos < csv.size() && csv[pos] == '\n')
-                    ++pos;
-                ++line;
-                ended = true;
-            }
-        }
+    CsvReader reader(csv, separator);
+    CsvRecord record;
+    while (reader.next(record))
         records.push_back(std::move(record));
-    }
     return records;
 }
 
@@ -221,78 +278,90 @@ CsvImport importVariablesCsv(const Project& project, std::string_view csv,
     CsvImport result;
     result.project = project;
     result.separator = detectCsvSeparator(csv);
-    std::vector<CsvRecord> records;
-    try {
-        records = readCsv(csv, result.separator);
-    } catch (const CsvSyntaxError& error) {
-        result.problems.push_back({error.line, error.message});
-        return result;
-    }
-
-    Columns columns;
-    std::size_t first = 0;
-    while (first < records.size() && blankRecord(records[first]))
-        ++first;
-    if (first < records.size())
-        if (auto heading = headingColumns(records[first])) {
-            columns = *heading;
-            ++first;
-        }
-    if (columns.name < 0) {
-        const int line = first > 0 ? records[first - 1].line : 1;
-        result.problems.push_back({line, "the heading row has no \"Symbolic Name\" column"});
-        return result;
-    }
 
     // Rows that can be read, before names are checked against each other.
     struct Candidate {
         int line;
+        CsvPlace namePlace;
         lang::Address address;
         std::string name;
         std::string description;
     };
     std::vector<Candidate> candidates;
     std::map<lang::Address, int> seen;
-    for (std::size_t i = first; i < records.size(); ++i) {
-        const CsvRecord& record = records[i];
-        if (blankRecord(record))
-            continue;
-        auto problem = [&](std::string message) {
-            result.problems.push_back({record.line, std::move(message)});
-        };
-        const std::string word = trimmed(field(record, columns.variable));
-        const lang::AddressWord read = lang::readAddressWord(word);
-        if (read.shape != lang::AddressWord::Shape::Variable) {
-            problem("'" + word + "' is not a variable such as I0.0 or M1.12");
-            continue;
+    int unlisted = 0;
+    CsvPlace firstUnlisted;
+    auto problem = [&](const CsvPlace& place, std::string message) {
+        if (result.problems.size() < kCsvListedProblems) {
+            result.problems.push_back({place.line, place.column, std::move(message)});
+        } else if (unlisted++ == 0) {
+            firstUnlisted = place;
         }
-        const lang::Address& address = read.address;
-        if (options.station && address.unit != *options.station) {
-            problem(lang::toString(address) + " belongs to unit " + std::to_string(address.unit) +
-                    ", not to unit " + std::to_string(*options.station));
-            continue;
+    };
+    try {
+        checkText(withoutByteOrderMark(csv));
+        CsvReader reader(csv, result.separator);
+        CsvRecord record;
+        std::optional<Columns> columns;
+        while (reader.next(record)) {
+            if (blankRecord(record))
+                continue;
+            if (!columns) {
+                columns = headingColumns(record);
+                if (columns && columns->name < 0) {
+                    problem({record.line, 1}, "the heading row has no \"Symbolic Name\" column");
+                    return result;
+                }
+                if (columns)
+                    continue;
+                columns = Columns{};
+            }
+            const CsvPlace variablePlace = placeOf(record, columns->variable);
+            const std::string word = trimmed(field(record, columns->variable));
+            const lang::AddressWord read = lang::readAddressWord(word);
+            // A sequence's step number is addressed like a variable but takes no name.
+            if (read.shape != lang::AddressWord::Shape::Variable ||
+                read.address.kind == lang::AddressKind::Sequence) {
+                problem(variablePlace, "'" + word + "' is not a variable such as I0.0 or M1.12");
+                continue;
+            }
+            const lang::Address& address = read.address;
+            if (options.station && address.unit != *options.station) {
+                problem(variablePlace, lang::toString(address) + " belongs to unit " +
+                                           std::to_string(address.unit) + ", not to unit " +
+                                           std::to_string(*options.station));
+                continue;
+            }
+            const auto unit = unitSettings(project, address.unit);
+            if (!unit) {
+                problem(variablePlace, "the project has no unit " + std::to_string(address.unit));
+                continue;
+            }
+            const target::UnitTypeInfo& type = target::unitTypeInfo(unit->type);
+            if (!target::hasVariable(type, address, unit->instructionSet)) {
+                problem(variablePlace,
+                        std::string(type.display) + " units have no " + lang::toString(address));
+                continue;
+            }
+            if (auto it = seen.find(address); it != seen.end()) {
+                problem(variablePlace, lang::toString(address) + " is already in line " +
+                                           std::to_string(it->second));
+                continue;
+            }
+            seen.emplace(address, record.line);
+            std::string name = trimmed(field(record, columns->name));
+            if (!options.prefix.empty() && name.starts_with(options.prefix))
+                name.erase(0, options.prefix.size());
+            candidates.push_back({record.line, placeOf(record, columns->name), address,
+                                  std::move(name), field(record, columns->description)});
         }
-        const auto unit = unitSettings(project, address.unit);
-        if (!unit) {
-            problem("the project has no unit " + std::to_string(address.unit));
-            continue;
-        }
-        const target::UnitTypeInfo& type = target::unitTypeInfo(unit->type);
-        if (!target::hasVariable(type, address, unit->instructionSet)) {
-            problem(std::string(type.display) + " units have no " + lang::toString(address));
-            continue;
-        }
-        if (auto it = seen.find(address); it != seen.end()) {
-            problem(lang::toString(address) + " is already in line " + std::to_string(it->second));
-            continue;
-        }
-        seen.emplace(address, record.line);
-        std::string name = trimmed(field(record, columns.name));
-        if (!options.prefix.empty() && name.starts_with(options.prefix))
-            name.erase(0, options.prefix.size());
-        candidates.push_back(
-            {record.line, address, std::move(name), field(record, columns.description)});
+    } catch (const CsvSyntaxError& error) {
+        result.problems = {{error.line, error.column, error.message}};
+        return result;
     }
+    if (unlisted > 0)
+        result.problems.push_back({firstUnlisted.line, firstUnlisted.column,
+                                   std::to_string(unlisted) + " more bad rows, not listed"});
 
     // Every variable whose name changes first gets a stand-in name, so that
     // two variables can swap names; declarations are renamed in place, which
@@ -317,7 +386,8 @@ CsvImport importVariablesCsv(const Project& project, std::string_view csv,
             std::string message = *refused;
             if (setVariableName(imported, candidate.address, oldName))
                 message += "; its old name '" + oldName + "' is taken now, so it has none";
-            result.problems.push_back({candidate.line, std::move(message)});
+            result.problems.push_back(
+                {candidate.namePlace.line, candidate.namePlace.column, std::move(message)});
             if (!oldName.empty() && !(variableName(imported, candidate.address) == oldName))
                 setVariableName(imported, candidate.address, {});
             continue;
@@ -335,7 +405,9 @@ CsvImport importVariablesCsv(const Project& project, std::string_view csv,
                                   oldDescription, candidate.description});
     }
     std::stable_sort(result.problems.begin(), result.problems.end(),
-                     [](const CsvProblem& a, const CsvProblem& b) { return a.line < b.line; });
+                     [](const CsvProblem& a, const CsvProblem& b) {
+                         return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+                     });
     return result;
 }
 

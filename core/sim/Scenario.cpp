@@ -2,9 +2,11 @@
 
 #include "lang/SymbolicName.h"
 #include "lang/TextCase.h"
+#include "project/Utf8Text.h"
 
 #include <algorithm>
 #include <charconv>
+#include <limits>
 
 namespace rs::sim {
 
@@ -15,30 +17,81 @@ struct Word {
     int column;
 };
 
+// Columns count characters, not bytes.
+int columnAt(std::string_view line, std::size_t offset) {
+    int column = 1;
+    for (std::size_t i = 0; i < offset && i < line.size(); ++i)
+        if (!project::isUtf8Continuation(line[i]))
+            ++column;
+    return column;
+}
+
 std::vector<Word> splitWords(std::string_view line) {
     std::vector<Word> words;
     std::size_t pos = 0;
+    int column = 1;
+    auto advance = [&] {
+        if (!project::isUtf8Continuation(line[pos]))
+            ++column;
+        ++pos;
+    };
     while (pos < line.size()) {
-        while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t' || line[pos] == '\r'))
-            ++pos;
+        while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t'))
+            advance();
         const std::size_t start = pos;
-        while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t' && line[pos] != '\r')
-            ++pos;
+        const int startColumn = column;
+        while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t')
+            advance();
         if (pos > start)
-            words.push_back({line.substr(start, pos - start), static_cast<int>(start) + 1});
+            words.push_back({line.substr(start, pos - start), startColumn});
     }
     return words;
 }
 
-bool parseInteger(std::string_view text, std::int64_t& value) {
+enum class Number { Ok, Malformed, OutOfRange };
+
+Number parseInteger(std::string_view text, std::int64_t& value) {
     if (!text.empty() && text.front() == '+')
         text.remove_prefix(1);
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() && end == text.data() + text.size() && !text.empty();
+    if (text.empty() || end != text.data() + text.size() ||
+        (error != std::errc() && error != std::errc::result_out_of_range))
+        return Number::Malformed;
+    return error == std::errc() ? Number::Ok : Number::OutOfRange;
 }
 
 bool isBitOperand(const lang::Address& a) {
     return a.isBit() && a.kind != lang::AddressKind::AnalogInput;
+}
+
+struct ValueRange {
+    std::int64_t low;
+    std::int64_t high;
+    const char* what;
+};
+
+// What the operand can hold: a value outside would be cut to fit, and the
+// scenario would test something other than what it says.
+ValueRange valueRange(const lang::Address& a) {
+    if (isBitOperand(a))
+        return {0, 1, "a bit"};
+    switch (a.kind) {
+    case lang::AddressKind::Register:
+    case lang::AddressKind::DoubleRegisterLow:
+    case lang::AddressKind::DoubleRegisterHigh:
+        return {-32768, 32767, "a register"};
+    case lang::AddressKind::Sequence:
+        return {0, 254, "a sequence's step number"};
+    default:
+        return {std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max(),
+                "a 32-bit value"};
+    }
+}
+
+std::string rangeText(const ValueRange& range) {
+    if (range.low == 0 && range.high == 1)
+        return "0 or 1";
+    return std::to_string(range.low) + ".." + std::to_string(range.high);
 }
 
 } // namespace
@@ -160,24 +213,32 @@ bool OperandNames::resolve(std::string_view word, lang::Address& address,
 
 Scenario parseScenario(std::string_view text, const OperandNames& names) {
     Scenario scenario;
+    if (text.starts_with("\xEF\xBB\xBF"))
+        text.remove_prefix(3);
     int lineNumber = 0;
     bool timeStarted = false;
+    bool expects = false;
+    std::int64_t cycleMs = 10; // the simulation's own until a `cycle` line
+    std::int64_t virtualMs = 0;
     std::size_t pos = 0;
-    while (pos <= text.size()) {
-        std::size_t end = text.find('\n', pos);
+    while (pos < text.size()) {
+        // A line ends at LF, CRLF or a lone CR.
+        std::size_t end = text.find_first_of("\r\n", pos);
         if (end == std::string_view::npos)
             end = text.size();
         std::string_view line = text.substr(pos, end - pos);
-        pos = end + 1;
+        pos = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
         ++lineNumber;
         if (const std::size_t comment = line.find_first_of(";#"); comment != std::string_view::npos)
             line = line.substr(0, comment);
-        std::vector<Word> words = splitWords(line);
-        if (words.empty()) {
-            if (end == text.size())
-                break;
+        if (const auto fault = project::findTextFault(line)) {
+            scenario.diagnostics.push_back(
+                {lang::Severity::Error, lineNumber, columnAt(line, fault->offset), fault->message});
             continue;
         }
+        std::vector<Word> words = splitWords(line);
+        if (words.empty())
+            continue;
         auto fail = [&](const Word& at, std::string message) {
             scenario.diagnostics.push_back(
                 {lang::Severity::Error, lineNumber, at.column, std::move(message)});
@@ -207,14 +268,27 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
             return true;
         };
         auto value = [&](const Word& word) {
-            if (!parseInteger(word.text, step.value)) {
+            const Number read = parseInteger(word.text, step.value);
+            if (read == Number::Malformed) {
                 fail(word, "expected a number, found '" + std::string(word.text) + "'");
                 return false;
             }
-            if (isBitOperand(step.operand) && step.value != 0 && step.value != 1) {
-                fail(word, lang::toString(step.operand) + " is a bit: its value is 0 or 1");
+            const ValueRange range = valueRange(step.operand);
+            if (read == Number::OutOfRange || step.value < range.low || step.value > range.high) {
+                fail(word, lang::toString(step.operand) + " is " + range.what + ": its value is " +
+                               rangeText(range));
                 return false;
             }
+            return true;
+        };
+        // Virtual time the step takes, within the scenario's bound.
+        auto addTime = [&](const Word& word, std::int64_t ms) {
+            if (ms > kMaxVirtualMs - virtualMs) {
+                fail(word, "a scenario runs at most 30 days of virtual time; this line would "
+                           "pass that");
+                return false;
+            }
+            virtualMs += ms;
             return true;
         };
         auto duration = [&](const Word& word, std::int64_t& ms) {
@@ -234,19 +308,28 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
             ok = expectCount(2, "release OPERAND") && operand(words[1]);
         } else if (verb == "run") {
             step.kind = ScenarioStep::Kind::Run;
-            ok = expectCount(2, "run DURATION") && duration(words[1], step.durationMs);
+            ok = expectCount(2, "run DURATION") && duration(words[1], step.durationMs) &&
+                 addTime(words[1], step.durationMs);
             timeStarted = true;
         } else if (verb == "scans") {
             step.kind = ScenarioStep::Kind::Scans;
             ok = expectCount(2, "scans N");
-            if (ok && (!parseInteger(words[1].text, step.count) || step.count < 0)) {
+            const Number read = ok ? parseInteger(words[1].text, step.count) : Number::Malformed;
+            if (ok && (read == Number::Malformed || step.count < 0 || words[1].text[0] == '-')) {
                 fail(words[1],
                      "expected a number of scans, found '" + std::string(words[1].text) + "'");
                 ok = false;
+            } else if (ok) {
+                // A count too large to read is past the bound as well.
+                const std::int64_t most = (kMaxVirtualMs - virtualMs) / cycleMs;
+                ok = addTime(words[1], read == Number::OutOfRange || step.count > most
+                                           ? kMaxVirtualMs + 1
+                                           : step.count * cycleMs);
             }
             timeStarted = true;
         } else if (verb == "expect") {
             step.kind = ScenarioStep::Kind::Expect;
+            expects = true;
             if (words.size() == 5 || words.size() == 3) {
                 ok = operand(words[1]) && value(words[2]);
                 if (ok && words.size() == 5) {
@@ -255,7 +338,8 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
                              "expected 'within', found '" + std::string(words[3].text) + "'");
                         ok = false;
                     } else {
-                        ok = duration(words[4], step.durationMs);
+                        ok = duration(words[4], step.durationMs) &&
+                             addTime(words[4], step.durationMs);
                         timeStarted = true;
                     }
                 }
@@ -269,19 +353,22 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
                 fail(words[0], "cycle must come before the first run");
                 ok = false;
             }
-            if (ok && step.durationMs <= 0) {
-                fail(words[1], "the scan cycle must be longer than 0 ms");
+            if (ok && (step.durationMs < kMinCycleMs || step.durationMs > kMaxCycleMs)) {
+                fail(words[1], "the scan cycle must be 1ms to 10s");
                 ok = false;
             }
+            if (ok)
+                cycleMs = step.durationMs;
         } else {
             fail(words[0], "unknown line '" + std::string(words[0].text) +
                                "'; expected set, release, run, scans, expect or cycle");
         }
         if (ok)
             scenario.steps.push_back(std::move(step));
-        if (end == text.size())
-            break;
     }
+    if (!expects && scenario.diagnostics.empty())
+        scenario.diagnostics.push_back(
+            {lang::Severity::Error, 1, 1, "no expectation: a scenario must check something"});
     return scenario;
 }
 

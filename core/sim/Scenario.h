@@ -23,6 +23,12 @@ struct ScenarioStep {
     std::string text; // the line as written, without its comment
 };
 
+// What a scenario may ask for: longer cycles or runs cannot be meant, and
+// would keep the simulator busy for days of real time.
+inline constexpr std::int64_t kMinCycleMs = 1;
+inline constexpr std::int64_t kMaxCycleMs = 10'000;
+inline constexpr std::int64_t kMaxVirtualMs = 30LL * 24 * 60 * 60 * 1000; // 30 days
+
 struct Scenario {
     std::vector<ScenarioStep> steps;
     lang::Diagnostics diagnostics; // syntax errors: the scenario does not run
@@ -45,6 +51,11 @@ private:
     std::vector<int> m_stations;
 };
 
+// Lines end at LF, CRLF or a lone CR; a leading byte-order mark is skipped.
+// Besides syntax, refuses values out of their operand's range, a cycle outside
+// kMinCycleMs..kMaxCycleMs, virtual time past kMaxVirtualMs (each step's and
+// the scenario's in total), text that is not UTF-8, and a scenario that
+// expects nothing.
 Scenario parseScenario(std::string_view text, const OperandNames& names);
 
 // "10ms", "2.5s", "2s50" (the language's notation), "1min"; false when malformed.

@@ -78,7 +78,7 @@ TEST(VarsCli, BadRowsAreErrorsByLineAndNothingIsWritten) {
     const QString out = dir.filePath("out.sps");
     const CliRun run = cli({"vars", "import", project, csv, "-o", out});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.startsWith(csv + ":3: error: ")) << run.err.toStdString();
+    EXPECT_TRUE(run.err.startsWith(csv + ":3:6: error: ")) << run.err.toStdString();
     EXPECT_FALSE(QFile::exists(out));
 }
 

@@ -65,7 +65,7 @@ TEST(ScenarioObserver, ValuesSampledElsewhereGiveTheSameTrace) {
     Compiled c = compileProgram();
     sim::OperandNames names(c.project);
     const sim::Scenario scenario =
-        sim::parseScenario("set I0.0 1\nrun 80ms\nset I0.0 0\nscans 2\n", names);
+        sim::parseScenario("set I0.0 1\nrun 80ms\nset I0.0 0\nscans 2\nexpect I0.0 0\n", names);
     const auto traced = sim::traceSignals(c.images, sim::touchedBy(scenario));
     sim::Simulation simulation(c.images);
     sim::VcdTrace direct(traced);

@@ -122,7 +122,8 @@ TEST(Scenario, SyntaxErrorsAreReportedAndCountAsOneFailure) {
 }
 
 TEST(Scenario, TraceIsStandardVcdAndTheSameEveryRun) {
-    const char* scenario = "set EStop 1\nset I0.13 1\nrun 100ms\nset EStop 0\nrun 20ms\n";
+    const char* scenario =
+        "set EStop 1\nset I0.13 1\nrun 100ms\nset EStop 0\nrun 20ms\nexpect EStop 0\n";
     ScenarioRun first = run(scenario);
     ScenarioRun second = run(scenario);
     EXPECT_EQ(first.vcd, second.vcd);
