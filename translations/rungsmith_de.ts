@@ -274,6 +274,10 @@
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
         <translation>Erstellen &gt; Kompilieren (F7) prüft das Projekt und schreibt die kompilierte Datei.</translation>
     </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation>Fehler: die kompilierte Datei wurde nicht geschrieben: %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ConfigOptionDialog</name>
@@ -1046,6 +1050,14 @@
         <source>No networks in this code.</source>
         <translation>Keine Netzwerke in diesem Code.</translation>
     </message>
+    <message>
+        <source>Could not export to %1.</source>
+        <translation>Export nach %1 nicht möglich.</translation>
+    </message>
+    <message>
+        <source>Could not export to %1: %2</source>
+        <translation>Export nach %1 nicht möglich: %2</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1697,6 +1709,10 @@
         <source>&amp;Autosave every:</source>
         <translation>&amp;Automatisch speichern alle:</translation>
     </message>
+    <message>
+        <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
+        <translation>Von %1 bis %2 Minuten. Ein Absturz kostet höchstens so viel Arbeit.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -1881,6 +1897,10 @@
         <source>Double-click to show line %1 of %2</source>
         <translation>Doppelklicken, um Zeile %1 von %2 zu zeigen</translation>
     </message>
+    <message>
+        <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
+        <translation>%1: abgebrochen bei t = %2 s, bis dahin %3 bestanden, %4 fehlgeschlagen</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationControls</name>
@@ -2043,6 +2063,26 @@
         <source>&amp;Watch %1</source>
         <translation>%1 &amp;beobachten</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop the scenario; the simulation shows where it got</source>
+        <translation>Das Szenario anhalten; die Simulation zeigt, wie weit es kam</translation>
+    </message>
+    <message>
+        <source>Scenario: %1 of %2 s</source>
+        <translation>Szenario: %1 von %2 s</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Es läuft bereits ein Szenario.</translation>
+    </message>
+    <message>
+        <source>Scenario %1 cancelled at t = %2 s.</source>
+        <translation>Szenario %1 bei t = %2 s abgebrochen.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -2076,6 +2116,10 @@
     <message>
         <source>The simulation is not running.</source>
         <translation>Die Simulation läuft nicht.</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Es läuft bereits ein Szenario.</translation>
     </message>
 </context>
 <context>

@@ -274,6 +274,10 @@
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ConfigOptionDialog</name>
@@ -1046,6 +1050,14 @@
         <source>No networks in this code.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Could not export to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1697,6 +1709,10 @@
         <source>&amp;Autosave every:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -1881,6 +1897,10 @@
         <source>Double-click to show line %1 of %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationControls</name>
@@ -2043,6 +2063,26 @@
         <source>&amp;Watch %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the scenario; the simulation shows where it got</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenario: %1 of %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenario %1 cancelled at t = %2 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -2075,6 +2115,10 @@
     </message>
     <message>
         <source>The simulation is not running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -274,6 +274,10 @@
         <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
         <translation>Bygg &gt; Kompilera (F7) kontrollerar projektet och skriver den kompilerade filen.</translation>
     </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation>fel: den kompilerade filen skrevs inte: %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ConfigOptionDialog</name>
@@ -1046,6 +1050,14 @@
         <source>No networks in this code.</source>
         <translation>Inga nätverk i den här koden.</translation>
     </message>
+    <message>
+        <source>Could not export to %1.</source>
+        <translation>Kunde inte exportera till %1.</translation>
+    </message>
+    <message>
+        <source>Could not export to %1: %2</source>
+        <translation>Kunde inte exportera till %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1697,6 +1709,10 @@
         <source>&amp;Autosave every:</source>
         <translation>Spara &amp;automatiskt var:</translation>
     </message>
+    <message>
+        <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
+        <translation>Från %1 till %2 minuter. En krasch förlorar högst så mycket arbete.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -1881,6 +1897,10 @@
         <source>Double-click to show line %1 of %2</source>
         <translation>Dubbelklicka för att visa rad %1 i %2</translation>
     </message>
+    <message>
+        <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
+        <translation>%1: avbrutet vid t = %2 s, %3 godkända, %4 underkända hittills</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationControls</name>
@@ -2043,6 +2063,26 @@
         <source>&amp;Watch %1</source>
         <translation>&amp;Bevaka %1</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Stop the scenario; the simulation shows where it got</source>
+        <translation>Stoppa scenariot; simuleringen visar hur långt det kom</translation>
+    </message>
+    <message>
+        <source>Scenario: %1 of %2 s</source>
+        <translation>Scenario: %1 av %2 s</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Ett scenario körs redan.</translation>
+    </message>
+    <message>
+        <source>Scenario %1 cancelled at t = %2 s.</source>
+        <translation>Scenario %1 avbrutet vid t = %2 s.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -2076,6 +2116,10 @@
     <message>
         <source>The simulation is not running.</source>
         <translation>Simuleringen körs inte.</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Ett scenario körs redan.</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLockFile>
@@ -69,20 +70,21 @@ QString Autosave::write(const ProjectDocument& document) {
         if (lock->tryLock(0))
             locks()[id] = std::move(lock);
     }
-    const QByteArray text = document.fileText();
-    QString error = project::writeTextFile(
-        textPath(document.autosaveId()),
-        std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
-    if (!error.isEmpty())
-        return error;
+    // The index first: a crash between the two writes leaves the index with
+    // the previous copy (or none yet), never a copy that recovery cannot name.
     const QJsonObject info{
         {QStringLiteral("path"), document.path()},
         {QStringLiteral("name"), document.displayName()},
         {QStringLiteral("written"), QDateTime::currentDateTime().toString(Qt::ISODate)}};
     const QByteArray json = QJsonDocument(info).toJson();
+    if (QString error = project::writeTextFile(
+            infoPath(id),
+            std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
+        !error.isEmpty())
+        return error;
+    const QByteArray text = document.fileText();
     return project::writeTextFile(
-        infoPath(document.autosaveId()),
-        std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
+        textPath(id), std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
 }
 
 void Autosave::remove(const QString& id) {
@@ -98,26 +100,30 @@ void Autosave::release(const QString& id) {
 QList<Autosave::Copy> Autosave::copies() {
     QList<Copy> found;
     const QDir folder(directory());
+    // By copy, not by index: a copy whose index is missing or unreadable is
+    // still someone's work.
     for (const QString& name :
-         folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Time)) {
-        QFile file(folder.filePath(name));
-        if (!file.open(QIODevice::ReadOnly))
-            continue;
-        const QJsonObject info = QJsonDocument::fromJson(file.readAll()).object();
+         folder.entryList({QStringLiteral("*.sps")}, QDir::Files, QDir::Time)) {
         Copy copy;
-        copy.id = name.chopped(5);
-        copy.path = info.value(QStringLiteral("path")).toString();
-        copy.displayName = info.value(QStringLiteral("name")).toString();
-        copy.written =
-            QDateTime::fromString(info.value(QStringLiteral("written")).toString(), Qt::ISODate);
-        copy.copyPath = textPath(copy.id);
-        if (!QFile::exists(copy.copyPath))
-            continue;
+        copy.id = name.chopped(4);
+        copy.copyPath = folder.filePath(name);
         // A lock that cannot be taken belongs to a Rungsmith still running.
         auto probe = lockFor(copy.id);
         if (locks().count(copy.id) || !probe->tryLock(0))
             continue;
         probe->unlock();
+        QFile file(infoPath(copy.id));
+        const QJsonObject info = file.open(QIODevice::ReadOnly)
+                                     ? QJsonDocument::fromJson(file.readAll()).object()
+                                     : QJsonObject();
+        copy.path = info.value(QStringLiteral("path")).toString();
+        copy.displayName = info.value(QStringLiteral("name")).toString();
+        copy.written =
+            QDateTime::fromString(info.value(QStringLiteral("written")).toString(), Qt::ISODate);
+        if (copy.displayName.isEmpty())
+            copy.displayName = copy.path.isEmpty() ? name : QFileInfo(copy.path).fileName();
+        if (!copy.written.isValid())
+            copy.written = QFileInfo(copy.copyPath).lastModified();
         found.append(copy);
     }
     return found;

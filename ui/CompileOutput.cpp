@@ -65,7 +65,8 @@ void CompileOutput::showRunning(const QString& projectName) {
 }
 
 void CompileOutput::showResult(const QString& projectName, std::string_view canonicalText,
-                               const compiler::CompileResult& result, const QString& writtenFile) {
+                               const compiler::CompileResult& result, const QString& writtenFile,
+                               const QString& writeError) {
     clear();
     const QIcon errorIcon(QStringLiteral(":/icons/error.svg"));
     const QIcon warningIcon(QStringLiteral(":/icons/warning.svg"));
@@ -91,6 +92,13 @@ void CompileOutput::showResult(const QString& projectName, std::string_view cano
     if (!writtenFile.isEmpty()) {
         auto* written = new QTreeWidgetItem(this);
         written->setText(MessageColumn, tr("Wrote %1").arg(writtenFile));
+    }
+    if (!writeError.isEmpty()) {
+        auto* failed = new QTreeWidgetItem(this);
+        failed->setIcon(PlaceColumn, errorIcon);
+        failed->setText(MessageColumn,
+                        tr("error: the compiled file was not written: %1").arg(writeError));
+        failed->setToolTip(MessageColumn, writeError);
     }
     // The original tool's closing line, word for word.
     auto* closing = new QTreeWidgetItem(this);

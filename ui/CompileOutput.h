@@ -23,9 +23,11 @@ public:
     explicit CompileOutput(QWidget* parent = nullptr);
 
     void showRunning(const QString& projectName);
-    // The findings of compiling a project's canonical text, which the lines count in.
+    // The findings of compiling a project's canonical text, which the lines
+    // count in, and the compiled file written or why it could not be.
     void showResult(const QString& projectName, std::string_view canonicalText,
-                    const compiler::CompileResult& result, const QString& writtenFile);
+                    const compiler::CompileResult& result, const QString& writtenFile,
+                    const QString& writeError = {});
     QString closingLine() const;
 
 signals:

@@ -155,7 +155,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     connect(&m_undoGroup, &QUndoGroup::canRedoChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::undoTextChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::redoTextChanged, this, &MainWindow::updateActions);
-    connect(&m_compileWatcher, &QFutureWatcher<compiler::CompileResult>::finished, this,
+    connect(&m_compileWatcher, &QFutureWatcher<Compiled>::finished, this,
             &MainWindow::compileFinished);
     connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
     m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
@@ -1066,29 +1066,42 @@ void MainWindow::compile() {
     m_outputDock->raise();
     m_progress->show();
     statusBar()->showMessage(tr("Compiling %1...").arg(document->displayName()));
-    m_compileWatcher.setFuture(QtConcurrent::run(
-        [text = m_compiledText, options] { return compiler::compileText(text, options); }));
+    // The image goes beside a project that has a file of its own; it is made
+    // and written on the worker too, as a large one takes a while.
+    QString imagePath;
+    if (!document->path().isEmpty() && !document->path().startsWith(QLatin1Char(':'))) {
+        const QFileInfo info(document->path());
+        imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
+    }
+    m_compileWatcher.setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath] {
+        Compiled compiled{compiler::compileText(text, options), {}, {}};
+        if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
+            try {
+                compiled.imageError =
+                    project::writeTextFile(imagePath, compiler::writeHps(compiled.result.images));
+            } catch (const std::exception& e) {
+                // An image the Intel HEX writer refuses (issue 13): said, not a crash.
+                compiled.imageError = QString::fromUtf8(e.what());
+            }
+            if (compiled.imageError.isEmpty())
+                compiled.imagePath = imagePath;
+        }
+        return compiled;
+    }));
     updateActions();
 }
 
 void MainWindow::compileFinished() {
     m_compileRunning = false;
     m_progress->hide();
-    const compiler::CompileResult result = m_compileWatcher.result();
-    QString written;
+    const Compiled compiled = m_compileWatcher.result();
+    const compiler::CompileResult& result = compiled.result;
     ProjectDocument* document = m_compiling;
-    if (document && result.errors() == 0 && !document->path().isEmpty() &&
-        !document->path().startsWith(QLatin1Char(':'))) {
-        const QFileInfo info(document->path());
-        const QString target =
-            info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
-        const QString error = project::writeTextFile(target, compiler::writeHps(result.images));
-        written = error.isEmpty() ? QDir::toNativeSeparators(target) : QString();
-        if (!error.isEmpty())
-            QMessageBox::warning(this, tr("Compile"), error);
-    }
+    const QString written = QDir::toNativeSeparators(compiled.imagePath);
     m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
-                         written);
+                         written, compiled.imageError);
+    if (!compiled.imageError.isEmpty())
+        QMessageBox::warning(this, tr("Compile"), compiled.imageError);
     if (document && m_ladderPage->document() == document) {
         // The ladder marks the elements the diagnostics of its unit concern.
         lang::Diagnostics onLadder;
@@ -1102,7 +1115,7 @@ void MainWindow::compileFinished() {
         }
         m_ladderPage->setDiagnostics(onLadder);
     }
-    if (document && result.errors() == 0 && written.isEmpty())
+    if (document && result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
         showMessage(tr("Compiled without errors. Save the project to write the compiled file."));
     else
         statusBar()->showMessage(m_output->closingLine(), kStatusMessageMs);

@@ -186,7 +186,14 @@ private:
     QMenu* m_recentMenu = nullptr;
     QToolBar* m_fileToolBar = nullptr;
 
-    QFutureWatcher<compiler::CompileResult> m_compileWatcher;
+    // What the compiler's worker gives back: the findings, and the image
+    // written beside the project (its path; or why it could not be).
+    struct Compiled {
+        compiler::CompileResult result;
+        QString imagePath;
+        QString imageError;
+    };
+    QFutureWatcher<Compiled> m_compileWatcher;
     QPointer<ProjectDocument> m_compiling;
     bool m_compileRunning = false; // from Compile until its result is shown
     std::string m_compiledText;

@@ -2,6 +2,8 @@
 
 #include <QSettings>
 
+#include <algorithm>
+
 namespace rs::ui {
 
 namespace {
@@ -45,8 +47,11 @@ Preferences Preferences::load() {
     p.language = settings.value(kGroup + QStringLiteral("language")).toString();
     p.theme = static_cast<Theme>(
         settings.value(kGroup + QStringLiteral("theme"), static_cast<int>(d.theme)).toInt());
-    p.autosaveMinutes =
-        settings.value(kGroup + QStringLiteral("autosaveMinutes"), d.autosaveMinutes).toInt();
+    // A settings file edited by hand or by an older version: 0 would autosave
+    // on every pass of the event loop, a negative number never.
+    p.autosaveMinutes = std::clamp(
+        settings.value(kGroup + QStringLiteral("autosaveMinutes"), d.autosaveMinutes).toInt(),
+        kMinAutosaveMinutes, kMaxAutosaveMinutes);
     return p;
 }
 

@@ -24,7 +24,10 @@ struct Preferences {
     bool warnUnconfiguredIo = true;
     QString language; // "", the system's, or "en", "sv", "de"
     Theme theme = Theme::System;
-    int autosaveMinutes = 2;
+    // Autosave has no "off": a copy costs little, and a lost afternoon a lot.
+    static constexpr int kMinAutosaveMinutes = 1;
+    static constexpr int kMaxAutosaveMinutes = 60;
+    int autosaveMinutes = 2; // kept within the range above whatever the settings say
 
     static Preferences defaults();
     static Preferences load();

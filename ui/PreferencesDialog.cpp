@@ -81,8 +81,15 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
     m_theme->addItem(tr("Follow the system"), static_cast<int>(Preferences::Theme::System));
     m_theme->addItem(tr("Light"), static_cast<int>(Preferences::Theme::Light));
     m_theme->addItem(tr("Dark"), static_cast<int>(Preferences::Theme::Dark));
-    m_autosave->setRange(1, 60);
+    m_autosave->setRange(Preferences::kMinAutosaveMinutes, Preferences::kMaxAutosaveMinutes);
     m_autosave->setSuffix(tr(" min"));
+    m_autosave->setObjectName(QStringLiteral("autosaveSpin"));
+    const QString autosaveRange = tr("From %1 to %2 minutes. A crash loses at most this much work.")
+                                      .arg(Preferences::kMinAutosaveMinutes)
+                                      .arg(Preferences::kMaxAutosaveMinutes);
+    auto* autosaveNote = new QLabel(autosaveRange, this);
+    autosaveNote->setObjectName(QStringLiteral("autosaveNote"));
+    autosaveNote->setForegroundRole(QPalette::PlaceholderText);
     m_language->setObjectName(QStringLiteral("languageCombo"));
     m_theme->setObjectName(QStringLiteral("themeCombo"));
     m_warnUnconfiguredIo->setObjectName(QStringLiteral("warnUnconfiguredIoCheck"));
@@ -98,6 +105,7 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
     form->addRow(QString(), languageNote);
     form->addRow(tr("&Theme:"), m_theme);
     form->addRow(tr("&Autosave every:"), m_autosave);
+    form->addRow(QString(), autosaveNote);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);

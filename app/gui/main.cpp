@@ -4,6 +4,7 @@
 #include "RungsmithBuildVersion.h"
 #include "Theme.h"
 #include "Translations.h"
+#include "lang/Diagnostic.h"
 #include "sim/SimulationMode.h"
 
 #include <QApplication>
@@ -11,6 +12,7 @@
 #include <QIcon>
 #include <QImageWriter>
 #include <QRegularExpression>
+#include <QSaveFile>
 #include <QTextStream>
 
 #include <optional>
@@ -70,6 +72,32 @@ std::optional<rs::ui::Preferences::Theme> themeOf(const QString& text) {
     if (text == QLatin1String("system"))
         return Theme::System;
     return std::nullopt;
+}
+
+// Prints a scenario's syntax errors as the command line does; true when it had any.
+bool reportSyntaxErrors(const rs::ui::SimulationSession::ScenarioResult& result) {
+    QTextStream err(stderr);
+    for (const rs::lang::Diagnostic& diagnostic : result.syntaxErrors)
+        err << QString::fromStdString(
+                   rs::lang::formatDiagnostic(result.path.toStdString(), diagnostic))
+            << '\n';
+    return !result.syntaxErrors.empty();
+}
+
+// Writes the picture whole or not at all; the message when it cannot.
+QString writePicture(const QImage& picture, const QString& path) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return CommandLine::tr("cannot write %1: %2").arg(path, file.errorString());
+    QImageWriter writer(&file, "png");
+    if (!writer.write(picture)) {
+        file.cancelWriting();
+        return CommandLine::tr("cannot write %1: %2").arg(path, writer.errorString());
+    }
+    // Qt 6.4 commits even when the last buffered bytes found the disk full.
+    if (!file.flush() || !file.commit())
+        return CommandLine::tr("cannot write %1: %2").arg(path, file.errorString());
+    return {};
 }
 
 // Lets the window lay itself out and paint as it would on a screen.
@@ -177,13 +205,15 @@ int main(int argc, char* argv[]) {
             const auto result = window.simulation()->runScenario(parser.value(simulateOption));
             if (!result.error.isEmpty())
                 return usageError(result.error);
+            // A scenario that did not run shows nothing worth a picture.
+            if (reportSyntaxErrors(result))
+                return 1;
         }
         settle();
-        const QString out = parser.value(screenshotOption);
-        QImageWriter writer(out, "png");
-        if (!writer.write(window.grab().toImage()))
-            return usageError(
-                CommandLine::tr("cannot write %1: %2").arg(out, writer.errorString()));
+        if (const QString error =
+                writePicture(window.grab().toImage(), parser.value(screenshotOption));
+            !error.isEmpty())
+            return usageError(error);
         return 0;
     }
 
@@ -197,9 +227,15 @@ int main(int argc, char* argv[]) {
     if (page && !window.showPage(page->kind, page->station, page->sequence))
         complain(noSuchUnit);
     if (parser.isSet(simulateOption)) {
-        const auto result = window.simulation()->runScenario(parser.value(simulateOption));
-        if (!result.error.isEmpty())
-            complain(result.error);
+        QObject::connect(
+            window.simulation()->session(), &rs::ui::SimulationSession::scenarioFinished, &window,
+            [](const rs::ui::SimulationSession::ScenarioResult& result) {
+                if (!result.error.isEmpty())
+                    complain(result.error);
+                reportSyntaxErrors(result);
+            },
+            Qt::SingleShotConnection);
+        window.simulation()->startScenario(parser.value(simulateOption));
     }
     return QApplication::exec();
 }

@@ -1,6 +1,8 @@
 #include "ScenarioRunner.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 
 namespace rs::sim {
 
@@ -25,7 +27,8 @@ std::vector<lang::Address> touchedBy(const Scenario& scenario) {
 }
 
 ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario,
-                           Simulation& simulation, VcdTrace* trace, const ScanObserver& observer) {
+                           Simulation& simulation, VcdTrace* trace, const ScanObserver& observer,
+                           const CancelRequest& cancelled) {
     ScenarioReport report;
     if (!scenario.diagnostics.empty()) {
         for (const auto& diagnostic : scenario.diagnostics)
@@ -41,11 +44,17 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
             observer(simulation);
     };
     sample();
+    // False once the caller cancels; the loops end at the scan it was asked after.
     auto scan = [&] {
         simulation.scan();
         sample();
+        if (cancelled && cancelled())
+            report.cancelled = true;
+        return !report.cancelled;
     };
     for (const auto& step : scenario.steps) {
+        if (report.cancelled)
+            break;
         switch (step.kind) {
         case ScenarioStep::Kind::Cycle:
             simulation.setCycleMs(static_cast<int>(step.durationMs));
@@ -58,21 +67,21 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
             break;
         case ScenarioStep::Kind::Run: {
             const std::int64_t end = simulation.timeMs() + step.durationMs;
-            while (simulation.timeMs() < end)
-                scan();
+            while (simulation.timeMs() < end && scan()) {
+            }
             break;
         }
         case ScenarioStep::Kind::Scans:
-            for (std::int64_t i = 0; i < step.count; ++i)
-                scan();
+            for (std::int64_t i = 0; i < step.count && scan(); ++i) {
+            }
             break;
         case ScenarioStep::Kind::Expect: {
             const std::int64_t deadline = simulation.timeMs() + step.durationMs;
             bool held = simulation.value(step.operand) == step.value;
-            while (!held && simulation.timeMs() < deadline) {
-                scan();
+            while (!held && simulation.timeMs() < deadline && scan())
                 held = simulation.value(step.operand) == step.value;
-            }
+            if (report.cancelled && !held)
+                break;
             if (held) {
                 ++report.passed;
                 break;
@@ -89,6 +98,33 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
         }
     }
     return report;
+}
+
+std::int64_t scenarioLengthMs(const Scenario& scenario, int cycleMs) {
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+    std::int64_t total = 0;
+    // Saturating: the figure is for a progress bar, whatever the file says.
+    auto add = [&](std::int64_t ms) {
+        total = ms > kMax - total ? kMax : total + std::max<std::int64_t>(ms, 0);
+    };
+    for (const auto& step : scenario.steps) {
+        switch (step.kind) {
+        case ScenarioStep::Kind::Cycle:
+            cycleMs = static_cast<int>(step.durationMs);
+            break;
+        case ScenarioStep::Kind::Run:
+        case ScenarioStep::Kind::Expect:
+            add(step.durationMs);
+            break;
+        case ScenarioStep::Kind::Scans:
+            add(cycleMs > 0 && step.count > kMax / cycleMs ? kMax : step.count * cycleMs);
+            break;
+        case ScenarioStep::Kind::Set:
+        case ScenarioStep::Kind::Release:
+            break;
+        }
+    }
+    return total;
 }
 
 } // namespace rs::sim

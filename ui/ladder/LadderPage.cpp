@@ -21,6 +21,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QClipboard>
+#include <QDir>
 #include <QDrag>
 #include <QFileDialog>
 #include <QGraphicsScene>
@@ -30,11 +31,13 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPrintDialog>
 #include <QPrinter>
+#include <QSaveFile>
 #include <QScrollBar>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -1640,12 +1643,33 @@ bool LadderPage::exportPdf(const QString& path) {
         if (file.isEmpty())
             return false;
     }
-    QPdfWriter writer(file);
-    writer.setPageSize(QPageSize(QPageSize::A4));
-    writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-    writer.setResolution(150);
-    writer.setTitle(pageTitle());
-    paintPages(writer, writer.title());
+    // Through a save file: a failed export leaves an older PDF as it was.
+    QSaveFile out(file);
+    QString error;
+    if (out.open(QIODevice::WriteOnly)) {
+        {
+            QPdfWriter writer(&out);
+            writer.setPageSize(QPageSize(QPageSize::A4));
+            writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+            writer.setResolution(150);
+            writer.setTitle(pageTitle());
+            paintPages(writer, writer.title());
+        }
+        // Qt 6.4 commits even when the last buffered bytes found the disk full.
+        if (!out.flush())
+            error = out.errorString();
+        else if (!out.commit())
+            error = out.errorString();
+    } else {
+        error = out.errorString();
+    }
+    if (!error.isEmpty()) {
+        setMessage(tr("Could not export to %1.").arg(QDir::toNativeSeparators(file)));
+        QMessageBox::warning(
+            this, tr("Export PDF"),
+            tr("Could not export to %1: %2").arg(QDir::toNativeSeparators(file), error));
+        return false;
+    }
     setMessage(tr("Exported to %1.").arg(file));
     return true;
 }

@@ -43,6 +43,13 @@ void ScenarioResultsView::addResult(const SimulationSession::ScenarioResult& res
     if (!result.error.isEmpty()) {
         run->setText(0, tr("%1: %2").arg(file, result.error));
         run->setForeground(0, errorTextColor(palette()));
+    } else if (result.cancelled) {
+        run->setText(0, tr("%1: cancelled at t = %2 s, %3 passed, %4 failed so far")
+                            .arg(file)
+                            .arg(static_cast<double>(result.endMs) / 1000.0, 0, 'f', 3)
+                            .arg(result.passed)
+                            .arg(result.failed));
+        run->setForeground(0, errorTextColor(palette()));
     } else {
         run->setText(
             0, tr("%1: %2 passed, %3 failed").arg(file).arg(result.passed).arg(result.failed));

@@ -98,6 +98,10 @@ SimulationControls::SimulationControls(SimulationSession* session, QWidget* wind
             [this] { m_session->setSpeed(m_speed->currentData().toDouble()); });
     connect(m_session, &SimulationSession::stateChanged, this, &SimulationControls::updateActions);
     connect(m_session, &SimulationSession::updated, this, &SimulationControls::showClock);
+    connect(m_session, &SimulationSession::scenarioStarted, this,
+            &SimulationControls::updateActions);
+    connect(m_session, &SimulationSession::scenarioFinished, this,
+            &SimulationControls::updateActions);
     updateActions();
 }
 
@@ -115,14 +119,17 @@ void SimulationControls::showClock() {
 void SimulationControls::updateActions() {
     const SimulationSession::State state = m_session->state();
     const bool active = state != SimulationSession::State::Off;
+    // While a scenario runs, its result will replace the simulation shown:
+    // only leaving simulation mode (which cancels it) is offered.
+    const bool free = !m_session->isRunningScenario();
     m_simulate->setChecked(active);
     m_simulate->setEnabled(active || m_projectAvailable);
-    m_start->setEnabled(state != SimulationSession::State::Running &&
+    m_start->setEnabled(free && state != SimulationSession::State::Running &&
                         (active || m_projectAvailable));
     m_stop->setEnabled(state == SimulationSession::State::Running);
-    m_singleScan->setEnabled(active || m_projectAvailable);
-    m_reset->setEnabled(active);
-    m_runScenario->setEnabled(active || m_projectAvailable);
+    m_singleScan->setEnabled(free && (active || m_projectAvailable));
+    m_reset->setEnabled(free && active);
+    m_runScenario->setEnabled(free && (active || m_projectAvailable));
     showClock();
 }
 

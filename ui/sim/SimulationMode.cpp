@@ -17,11 +17,14 @@
 
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolBar>
@@ -35,6 +38,7 @@ namespace {
 constexpr int kMessageMs = 4000;
 constexpr int kBottomDockHeight = 230;
 constexpr int kErrorCodeRegister = 11; // SR_ErrorCode
+constexpr int kProgressSteps = 1000;
 
 // The operand as the ladder page spells it ("/I0.2" for P(/I0.2)).
 lang::Address addressOf(const QString& spelled) {
@@ -57,7 +61,8 @@ SimulationMode::SimulationMode(MainWindow* window)
       m_bus(new BusStatusView(&m_session, window)),
       m_waveform(new WaveformPanel(&m_session, window)),
       m_scenarios(new ScenarioResultsView(window)), m_viewer(new ScenarioFileViewer(window)),
-      m_unitCode(new QLabel(window)) {
+      m_unitCode(new QLabel(window)), m_scenarioProgress(new QProgressBar(window)),
+      m_cancelScenario(new QPushButton(tr("Cancel"), window)) {
     QMenuBar* menuBar = window->menuBar();
     auto* help = window->findChild<QMenu*>(QStringLiteral("helpMenu"));
     menuBar->insertMenu(help ? help->menuAction() : nullptr, m_controls->menu());
@@ -81,6 +86,36 @@ SimulationMode::SimulationMode(MainWindow* window)
     m_unitCode->hide();
     window->statusBar()->addPermanentWidget(m_unitCode);
 
+    m_scenarioProgress->setObjectName(QStringLiteral("scenarioProgress"));
+    m_scenarioProgress->setRange(0, kProgressSteps);
+    m_scenarioProgress->setMaximumWidth(260);
+    m_scenarioProgress->hide();
+    m_cancelScenario->setObjectName(QStringLiteral("cancelScenarioButton"));
+    m_cancelScenario->setToolTip(tr("Stop the scenario; the simulation shows where it got"));
+    m_cancelScenario->hide();
+    window->statusBar()->addPermanentWidget(m_scenarioProgress);
+    window->statusBar()->addPermanentWidget(m_cancelScenario);
+    connect(m_cancelScenario, &QPushButton::clicked, &m_session,
+            &SimulationSession::cancelScenario);
+    connect(&m_session, &SimulationSession::scenarioStarted, this, [this] {
+        m_scenarioProgress->setValue(0);
+        m_scenarioProgress->show();
+        m_cancelScenario->show();
+    });
+    connect(&m_session, &SimulationSession::scenarioProgress, this,
+            [this](qint64 reachedMs, qint64 totalMs) {
+                // Steps of the bar, as the virtual time may well not fit an int.
+                const double part =
+                    totalMs > 0 ? std::min(1.0, static_cast<double>(reachedMs) / totalMs) : 0.0;
+                m_scenarioProgress->setValue(static_cast<int>(part * kProgressSteps));
+                m_scenarioProgress->setFormat(
+                    tr("Scenario: %1 of %2 s")
+                        .arg(static_cast<double>(reachedMs) / 1000.0, 0, 'f', 1)
+                        .arg(static_cast<double>(totalMs) / 1000.0, 0, 'f', 1));
+            });
+    connect(&m_session, &SimulationSession::scenarioFinished, this,
+            &SimulationMode::scenarioFinished);
+
     connect(m_controls, &SimulationControls::simulateToggled, this, [this](bool on) {
         if (!on) {
             end();
@@ -94,7 +129,7 @@ SimulationMode::SimulationMode(MainWindow* window)
         const QString path = QFileDialog::getOpenFileName(m_window, tr("Run Scenario"), QString(),
                                                           tr("Scenarios (*.scn);;All files (*)"));
         if (!path.isEmpty())
-            runScenario(path);
+            startScenario(path);
     });
     connect(m_scenarios, &ScenarioResultsView::lineActivated, this,
             [this](const QString& path, int line) {
@@ -163,17 +198,29 @@ void SimulationMode::end() {
     m_session.end();
 }
 
+void SimulationMode::startScenario(const QString& path) {
+    if (!m_session.startScenario(m_window->currentDocument(), path))
+        message(tr("A scenario is running already."));
+}
+
 SimulationSession::ScenarioResult SimulationMode::runScenario(const QString& path) {
-    ProjectDocument* document = m_window->currentDocument();
-    const SimulationSession::ScenarioResult result = m_session.runScenario(document, path);
+    return m_session.runScenario(m_window->currentDocument(), path);
+}
+
+void SimulationMode::scenarioFinished(const SimulationSession::ScenarioResult& result) {
+    m_scenarioProgress->hide();
+    m_cancelScenario->hide();
     // A run started from editing is a simulation like any other: its docks come too.
-    if (document && m_session.simulation())
+    if (const ProjectDocument* document = m_session.document(); document && m_session.simulation())
         showSimulationDocks(document);
     m_scenarios->addResult(result);
     m_scenariosDock->show();
     m_scenariosDock->raise();
     m_waveform->view()->zoomToFit();
-    return result;
+    if (result.cancelled)
+        message(tr("Scenario %1 cancelled at t = %2 s.")
+                    .arg(QFileInfo(result.path).fileName())
+                    .arg(static_cast<double>(result.endMs) / 1000.0, 0, 'f', 3));
 }
 
 void SimulationMode::showBottomDocks() {

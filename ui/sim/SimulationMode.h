@@ -11,6 +11,8 @@
 
 class QDockWidget;
 class QLabel;
+class QProgressBar;
+class QPushButton;
 
 namespace rs::ui {
 
@@ -52,8 +54,13 @@ public:
     // Starts simulating the window's current project; the reason when it cannot.
     QString begin();
     void end();
-    // Runs a scenario file on the current project and lists its result.
+    // Starts a scenario file on the current project; the status bar shows its
+    // progress and a Cancel button, and the Scenarios dock lists its result.
+    void startScenario(const QString& path);
+    // The same, waiting for the result (the command line, tests).
     SimulationSession::ScenarioResult runScenario(const QString& path);
+    QProgressBar* scenarioProgress() const { return m_scenarioProgress; }
+    QPushButton* cancelScenarioButton() const { return m_cancelScenario; }
 
     // What a click on an element's operand does: an input toggles.
     void operandClicked(const QString& address);
@@ -67,6 +74,7 @@ private:
     QDockWidget* addDock(QWidget* content, const QString& title, const char* name,
                          bool withProblems = true);
     void stateChanged();
+    void scenarioFinished(const SimulationSession::ScenarioResult& result);
     // The docks of a running simulation, and the status bar's word that it runs.
     void showSimulationDocks(const ProjectDocument* document);
     void showBottomDocks();
@@ -82,6 +90,8 @@ private:
     ScenarioResultsView* m_scenarios;
     ScenarioFileViewer* m_viewer;
     QLabel* m_unitCode;
+    QProgressBar* m_scenarioProgress;
+    QPushButton* m_cancelScenario;
     QDockWidget* m_forcesDock = nullptr;
     QDockWidget* m_watchDock = nullptr;
     QDockWidget* m_busDock = nullptr;

@@ -7,8 +7,12 @@
 #include "project/VariableTable.h"
 #include "sim/Scenario.h"
 
+#include <QEventLoop>
 #include <QFileInfo>
+#include <QtConcurrent/QtConcurrentRun>
 
+#include <atomic>
+#include <optional>
 #include <set>
 
 namespace rs::ui {
@@ -21,6 +25,8 @@ constexpr int kTickMs = 5;
 // leaving the rest of the time to painting and the user.
 constexpr std::int64_t kTickBudgetMs = 4;
 constexpr int kMaxScansPerTick = 2000;
+// How often a running scenario's progress is shown.
+constexpr int kProgressMs = 100;
 
 std::unique_ptr<sim::Simulation> powerOn(const std::vector<compiler::UnitImage>& images,
                                          const project::Project& project) {
@@ -35,14 +41,36 @@ std::unique_ptr<sim::Simulation> powerOn(const std::vector<compiler::UnitImage>&
 
 } // namespace
 
+struct SimulationSession::ScenarioJob {
+    QString path;
+    sim::Scenario scenario;
+    std::unique_ptr<sim::Simulation> simulation;
+    WaveformRecorder recorder;
+    std::int64_t totalMs = 0;
+    sim::ScenarioReport report;
+    std::atomic<bool> cancel = false;
+    std::atomic<std::int64_t> reachedMs = 0;
+};
+
 SimulationSession::SimulationSession(QObject* parent) : QObject(parent) {
     m_ticks.setInterval(kTickMs);
     m_ticks.setTimerType(Qt::PreciseTimer);
     connect(&m_ticks, &QTimer::timeout, this, &SimulationSession::tick);
+    m_jobProgress.setInterval(kProgressMs);
+    connect(&m_jobProgress, &QTimer::timeout, this, [this] {
+        if (m_job)
+            emit scenarioProgress(m_job->reachedMs, m_job->totalMs);
+    });
+    connect(&m_jobWatcher, &QFutureWatcher<void>::finished, this, &SimulationSession::scenarioDone);
     m_wall.start();
 }
 
-SimulationSession::~SimulationSession() = default;
+SimulationSession::~SimulationSession() {
+    if (m_job) {
+        m_job->cancel = true;
+        m_jobWatcher.waitForFinished();
+    }
+}
 
 QString SimulationSession::compile(ProjectDocument* document) {
     if (!document)
@@ -89,17 +117,28 @@ QString SimulationSession::begin(ProjectDocument* document) {
 }
 
 void SimulationSession::end() {
+    std::optional<ScenarioResult> cancelled;
+    if (m_job) {
+        // The run is of the simulation that goes: it stops, and says so.
+        m_job->cancel = true;
+        m_jobWatcher.waitForFinished();
+        m_jobProgress.stop();
+        cancelled = resultOf(*m_job);
+        m_job.reset();
+    }
     m_ticks.stop();
     if (m_document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = nullptr;
-    if (!m_simulation)
-        return;
-    m_simulation.reset();
-    m_images.clear();
-    emit stateChanged();
-    emit forcesChanged();
-    emit updated();
+    if (m_simulation) {
+        m_simulation.reset();
+        m_images.clear();
+        emit stateChanged();
+        emit forcesChanged();
+        emit updated();
+    }
+    if (cancelled)
+        emit scenarioFinished(*cancelled);
 }
 
 ProjectDocument* SimulationSession::document() const {
@@ -267,45 +306,111 @@ QStringList SimulationSession::operandWords() const {
     return {words.begin(), words.end()};
 }
 
-SimulationSession::ScenarioResult SimulationSession::runScenario(ProjectDocument* document,
-                                                                 const QString& path) {
-    ScenarioResult result;
-    result.path = path;
+bool SimulationSession::startScenario(ProjectDocument* document, const QString& path) {
+    if (m_job)
+        return false;
+    ScenarioResult failed;
+    failed.path = path;
     const project::FileText file = project::readTextFile(path);
     if (!file.error.isEmpty()) {
-        result.error = file.error;
-        return result;
+        failed.error = file.error;
+        emit scenarioFinished(failed);
+        return true;
     }
     if (!isActive() || document != m_document) {
         if (QString error = begin(document); !error.isEmpty()) {
-            result.error = error;
-            return result;
+            failed.error = error;
+            emit scenarioFinished(failed);
+            return true;
         }
     }
     stop();
-    const sim::Scenario scenario =
-        sim::parseScenario(file.text, sim::OperandNames(document->project()));
-    m_simulation = powerOn(m_images, document->project());
-    for (const lang::Address& address : sim::traceSignals(m_images, sim::touchedBy(scenario)))
-        m_recorder.add(address);
-    m_recorder.clear();
-    const std::string name = QFileInfo(path).fileName().toStdString();
-    const sim::ScenarioReport report = sim::runScenario(
-        name, scenario, *m_simulation, nullptr,
-        [this](const sim::Simulation& simulation) { m_recorder.sample(simulation); });
-    result.passed = report.passed;
-    result.failed = report.failed;
-    for (std::size_t i = 0; i < report.diagnostics.size() && i < scenario.diagnostics.size(); ++i)
+    // Everything the worker needs is made here, from the project, which the
+    // worker never sees.
+    auto job = std::make_shared<ScenarioJob>();
+    job->path = path;
+    job->scenario = sim::parseScenario(file.text, sim::OperandNames(document->project()));
+    job->simulation = powerOn(m_images, document->project());
+    job->totalMs = sim::scenarioLengthMs(job->scenario, job->simulation->cycleMs());
+    job->recorder = m_recorder;
+    for (const lang::Address& address : sim::traceSignals(m_images, sim::touchedBy(job->scenario)))
+        job->recorder.add(address);
+    job->recorder.clear();
+    m_job = job;
+    m_jobWatcher.setFuture(QtConcurrent::run([job] {
+        job->report = sim::runScenario(
+            QFileInfo(job->path).fileName().toStdString(), job->scenario, *job->simulation, nullptr,
+            [&run = *job](const sim::Simulation& simulation) {
+                run.recorder.sample(simulation);
+                run.reachedMs.store(simulation.timeMs(), std::memory_order_relaxed);
+            },
+            [&run = *job] { return run.cancel.load(std::memory_order_relaxed); });
+    }));
+    m_jobProgress.start();
+    emit scenarioStarted();
+    emit scenarioProgress(0, job->totalMs);
+    return true;
+}
+
+void SimulationSession::cancelScenario() {
+    if (m_job)
+        m_job->cancel = true;
+}
+
+SimulationSession::ScenarioResult SimulationSession::resultOf(const ScenarioJob& job) const {
+    ScenarioResult result;
+    result.path = job.path;
+    result.passed = job.report.passed;
+    result.failed = job.report.failed;
+    result.cancelled = job.report.cancelled;
+    result.endMs = job.reachedMs;
+    result.syntaxErrors = job.scenario.diagnostics;
+    const auto& diagnostics = job.report.diagnostics;
+    for (std::size_t i = 0; i < diagnostics.size() && i < job.scenario.diagnostics.size(); ++i)
         result.failures.push_back(
-            {scenario.diagnostics[i].line, QString::fromStdString(report.diagnostics[i])});
-    for (std::size_t i = 0; i < report.failures.size(); ++i)
+            {job.scenario.diagnostics[i].line, QString::fromStdString(diagnostics[i])});
+    for (std::size_t i = 0; i < job.report.failures.size(); ++i)
         result.failures.push_back(
-            {report.failureLines[i], QString::fromStdString(report.failures[i])});
+            {job.report.failureLines[i], QString::fromStdString(job.report.failures[i])});
+    return result;
+}
+
+void SimulationSession::scenarioDone() {
+    // A run that end() took back already, or a finish meant for an earlier run.
+    if (!m_job || !m_jobWatcher.isFinished())
+        return;
+    m_jobProgress.stop();
+    const std::shared_ptr<ScenarioJob> job = std::exchange(m_job, nullptr);
+    const ScenarioResult result = resultOf(*job);
+    m_simulation = std::move(job->simulation);
+    m_recorder = std::move(job->recorder);
     m_pacer.start(wallMs(), m_simulation->timeMs());
     emit stateChanged();
     emit forcesChanged();
     emit updated();
-    return result;
+    emit scenarioFinished(result);
+}
+
+SimulationSession::ScenarioResult SimulationSession::runScenario(ProjectDocument* document,
+                                                                 const QString& path) {
+    std::optional<ScenarioResult> finished;
+    QEventLoop loop;
+    const auto connection = connect(this, &SimulationSession::scenarioFinished, &loop,
+                                    [&](const ScenarioResult& result) {
+                                        finished = result;
+                                        loop.quit();
+                                    });
+    if (!startScenario(document, path)) {
+        disconnect(connection);
+        ScenarioResult busy;
+        busy.path = path;
+        busy.error = tr("A scenario is running already.");
+        return busy;
+    }
+    if (!finished)
+        loop.exec();
+    disconnect(connection);
+    return *finished;
 }
 
 } // namespace rs::ui

@@ -11,6 +11,7 @@
 #endif
 
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
@@ -99,13 +100,25 @@ public:
         QString path;
         int passed = 0;
         int failed = 0;
-        std::vector<Line> failures; // failures and syntax errors, in file order
-        QString error;              // the file cannot be read, or the project does not compile
+        std::vector<Line> failures;     // failures and syntax errors, in file order
+        lang::Diagnostics syntaxErrors; // the scenario did not run (also in failures)
+        QString error;                  // the file cannot be read, or the project does not compile
+        bool cancelled = false;
+        std::int64_t endMs = 0; // the virtual time the run ended at
     };
-    // Runs a scenario file from power on in a fresh simulation of the
-    // project, which then shows the state the scenario ends in (stopped).
-    // The waveform records the run: everything the scenario touches and the
-    // program writes.
+    // Starts a scenario file from power on in a fresh simulation of the
+    // project, on a thread of its own so that the window stays responsive:
+    // scenarioProgress tells how far it got, cancelScenario stops it, and
+    // scenarioFinished brings the result, after which the simulation shows
+    // the state the scenario ended in (stopped). The waveform records the
+    // run: everything the scenario touches and the program writes. A result
+    // that needs no run (the file or the project has errors) comes at once.
+    // False when a scenario runs already.
+    bool startScenario(ProjectDocument* document, const QString& path);
+    void cancelScenario();
+    bool isRunningScenario() const { return m_job != nullptr; }
+    // startScenario, waiting for the result while the events go on (the
+    // command line, tests).
     ScenarioResult runScenario(ProjectDocument* document, const QString& path);
 
 signals:
@@ -115,8 +128,15 @@ signals:
     void forcesChanged();
     // The simulation ended without the user asking (the project changed or closed).
     void endedBecause(const QString& reason);
+    void scenarioStarted();
+    // Virtual time reached of the most the scenario can run.
+    void scenarioProgress(qint64 reachedMs, qint64 totalMs);
+    void scenarioFinished(const rs::ui::SimulationSession::ScenarioResult& result);
 
 private:
+    struct ScenarioJob;
+    void scenarioDone();
+    ScenarioResult resultOf(const ScenarioJob& job) const;
     QString compile(ProjectDocument* document);
     void tick();
     void scanOnce();
@@ -132,6 +152,11 @@ private:
     QTimer m_ticks;
     std::int64_t m_lastUpdateMs = 0;
     int m_updateMs = 100;
+    // The scenario running on a worker: its own simulation and recording,
+    // which become the session's when it ends; nothing of the project.
+    std::shared_ptr<ScenarioJob> m_job;
+    QFutureWatcher<void> m_jobWatcher;
+    QTimer m_jobProgress;
 };
 
 } // namespace rs::ui
