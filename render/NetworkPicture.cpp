@@ -75,7 +75,8 @@ QString writeNetworkPicture(const QString& path, const ladder::NetworkLayout& la
         file.cancelWriting();
         return error;
     }
-    return project::commitSaveFile(file);
+    const QString reason = project::commitSaveFile(file);
+    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
 }
 
 } // namespace rs::render

@@ -5,6 +5,7 @@
 #include "Theme.h"
 #include "Translations.h"
 #include "lang/Diagnostic.h"
+#include "project/SaveFileCommit.h"
 #include "sim/SimulationMode.h"
 
 #include <QApplication>
@@ -94,10 +95,8 @@ QString writePicture(const QImage& picture, const QString& path) {
         file.cancelWriting();
         return CommandLine::tr("cannot write %1: %2").arg(path, writer.errorString());
     }
-    // Qt 6.4 commits even when the last buffered bytes found the disk full.
-    if (!file.flush() || !file.commit())
-        return CommandLine::tr("cannot write %1: %2").arg(path, file.errorString());
-    return {};
+    const QString reason = rs::project::commitSaveFile(file);
+    return reason.isEmpty() ? QString() : CommandLine::tr("cannot write %1: %2").arg(path, reason);
 }
 
 // Lets the window lay itself out and paint as it would on a screen.

@@ -330,7 +330,8 @@ QString writeTextFile(const QString& path, std::string_view text) {
         file.cancelWriting();
         return error;
     }
-    return commitSaveFile(file);
+    const QString reason = commitSaveFile(file);
+    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
 }
 
 } // namespace rs::project

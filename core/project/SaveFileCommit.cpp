@@ -5,16 +5,13 @@
 namespace rs::project {
 
 QString commitSaveFile(QSaveFile& file) {
-    const auto failure = [&file] {
-        const QString message =
-            QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
+    if (file.error() != QFileDevice::NoError || !file.flush()) {
+        const QString reason = file.errorString();
         file.cancelWriting();
-        return message;
-    };
-    if (file.error() != QFileDevice::NoError || !file.flush())
-        return failure();
+        return reason;
+    }
     if (!file.commit())
-        return QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
+        return file.errorString();
     return {};
 }
 

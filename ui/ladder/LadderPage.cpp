@@ -13,6 +13,7 @@
 #include "ladder/NetworkText.h"
 #include "ladder/TextToLadder.h"
 #include "lang/Parser.h"
+#include "project/SaveFileCommit.h"
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
 #include "project/UnitText.h"
@@ -1655,11 +1656,7 @@ bool LadderPage::exportPdf(const QString& path) {
             writer.setTitle(pageTitle());
             paintPages(writer, writer.title());
         }
-        // Qt 6.4 commits even when the last buffered bytes found the disk full.
-        if (!out.flush())
-            error = out.errorString();
-        else if (!out.commit())
-            error = out.errorString();
+        error = project::commitSaveFile(out);
     } else {
         error = out.errorString();
     }
