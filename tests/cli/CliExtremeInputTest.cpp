@@ -73,6 +73,26 @@ TEST(CliExtremeInput, DeeplyNestedParenthesesAreAnErrorInEveryVerb) {
     EXPECT_FALSE(QFile::exists(dir.filePath("nested.hps")));
 }
 
+TEST(CliExtremeInput, TheDeepestNestingAllowedPassesEveryVerb) {
+    // Each level adds an OR and an AND: the deepest tree 100 parentheses can make.
+    QByteArray condition = "I0.0";
+    for (int level = 0; level < 100; ++level)
+        condition = "I0.1 + I0.2 * (" + condition + ")";
+    QTemporaryDir dir;
+    const QString path = writeTemp(dir, "deep.sps", kHead + "Q0.0 = " + condition + "\n");
+    for (const QStringList& arguments :
+         {QStringList{"check", path}, QStringList{"compile", path, "-o", dir.filePath("deep.hps")},
+          QStringList{"format", path}, QStringList{"roundtrip", path},
+          QStringList{"ladder", path, "--unit", "0", "--network", "1", "-o",
+                      dir.filePath("deep.svg")}}) {
+        const CliRun run = cli(arguments);
+        ASSERT_FALSE(run.crashed) << arguments.front().toStdString();
+        EXPECT_EQ(run.exitCode, 0)
+            << arguments.front().toStdString() << ": " << run.err.left(300).toStdString();
+    }
+    EXPECT_EQ(cli({"roundtrip", path}).out, cli({"format", path}).out);
+}
+
 TEST(CliExtremeInput, ALongFlatChainIsReadAndRefusedAsTooLargeAProgram) {
     QTemporaryDir dir;
     for (char op : {'+', '*'}) {
