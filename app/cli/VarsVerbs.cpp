@@ -1,6 +1,7 @@
 #include "VarsVerbs.h"
 
 #include "Verbs.h"
+#include "lang/Diagnostic.h"
 #include "project/ProjectFile.h"
 #include "project/VariableCsv.h"
 
@@ -65,7 +66,7 @@ int importCsv(const QString& projectPath, const QString& csvPath, const QString&
     const project::CsvImport imported = project::importVariablesCsv(*project, csv.text, {});
     for (const auto& problem : imported.problems)
         std::fprintf(stderr, "%s:%d:%d: error: %s\n", qPrintable(csvPath), problem.line,
-                     problem.column, problem.message.c_str());
+                     problem.column, lang::visibleText(problem.message).c_str());
     if (!imported.problems.empty())
         return Failed;
     return write(out, project::writeProject(imported.project));

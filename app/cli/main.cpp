@@ -4,12 +4,14 @@
 #include "TestVerb.h"
 #include "VarsVerbs.h"
 #include "Verbs.h"
+#include "lang/Diagnostic.h"
 
 #include <QCoreApplication>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 
 namespace {
 
@@ -86,9 +88,7 @@ const rs::cli::Verb kVerbs[] = {
      rs::cli::runRoundtrip},
 };
 
-} // namespace
-
-int main(int argc, char* argv[]) {
+int run(int argc, char* argv[]) {
     const auto app = rs::cli::makeApplication(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("rungsmith-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_BUILD_VERSION));
@@ -141,4 +141,20 @@ int main(int argc, char* argv[]) {
         if (name == QLatin1String(verb.name))
             return finishOutput(verb.run({arguments, parser}));
     return usage(QStringLiteral("unknown verb '%1'").arg(name));
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    // A last resort: a bug must end with a message and the exit code of a
+    // failure the user cannot fix, not with an abort.
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "rungsmith-cli: internal error: %s\n",
+                     rs::lang::visibleText(error.what()).c_str());
+    } catch (...) {
+        std::fprintf(stderr, "rungsmith-cli: internal error: unknown exception\n");
+    }
+    return rs::cli::UsageOrIo;
 }

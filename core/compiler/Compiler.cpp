@@ -6,6 +6,7 @@
 #include "project/ProjectFile.h"
 
 #include <algorithm>
+#include <string>
 #include <tuple>
 
 namespace rs::compiler {
@@ -39,7 +40,21 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         image.sourceCrc = sourceCrc;
         if (project.includeSource)
             image.source = canonical;
+        const std::size_t size = encodeImage(image).size();
+        if (size > kMaxUnitImageBytes) {
+            const lang::SourceLocation at = unit.program->header.location;
+            result.diagnostics.push_back({lang::Severity::Error, at.line, at.column,
+                                          "program of unit " + std::to_string(station) + " is " +
+                                              std::to_string(size) + " bytes; a Pluto " +
+                                              std::string(unit.type->display) + " holds at most " +
+                                              std::to_string(kMaxUnitImageBytes) + " bytes"});
+            continue;
+        }
         result.images.push_back(std::move(image));
+    }
+    if (result.errors()) {
+        result.images.clear();
+        sortByPlace(result.diagnostics);
     }
     return result;
 }

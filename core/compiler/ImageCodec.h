@@ -2,6 +2,7 @@
 
 #include "Image.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -27,6 +28,11 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes);
 // A .hps file: the images of a project's units as Intel HEX, each unit's at
 // its station number times kHpsStationStride.
 inline constexpr std::uint32_t kHpsStationStride = 0x100000;
+
+// The largest image of one unit: what fits before the next station's address.
+// The manuals state no program memory size for any Pluto type, so this is the
+// bound for all of them.
+inline constexpr std::size_t kMaxUnitImageBytes = kHpsStationStride;
 
 std::string writeHps(const std::vector<UnitImage>& images);
 

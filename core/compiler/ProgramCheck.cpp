@@ -88,6 +88,7 @@ private:
     // ----- structure of steps and sequences
     void checkUnit(const UnitSetup& unit) {
         m_unit = &unit;
+        m_otherProjectUnitsWarned.clear();
         m_timers = 0;
         m_doubleRegisters.clear();
         m_coils.clear();
@@ -386,12 +387,8 @@ private:
             return false;
         }
         auto owner = m_units.find(a.unit);
-        if (owner == m_units.end()) {
-            error(at, name + " belongs to unit " + std::to_string(a.unit) +
-                          ", which the project does not have (no '! id_pluto:" + two(a.unit) +
-                          "=...')");
-            return false;
-        }
+        if (owner == m_units.end())
+            return checkOtherProjectOperand(operand, use);
         const UnitSetup& unit = owner->second;
         if (a.kind == AddressKind::DoubleRegister || a.kind == AddressKind::DoubleRegisterLow ||
             a.kind == AddressKind::DoubleRegisterHigh) {
@@ -444,6 +441,33 @@ private:
         checkRegisterHalves(operand);
         checkTerminal(operand, unit, use);
         return true;
+    }
+
+    // A unit that is not in the project may be on the bus with a project of
+    // its own: its globals can be read (language.md), with a warning once per
+    // reading unit, since this project cannot check what they are.
+    bool checkOtherProjectOperand(const Operand& operand, Use use) {
+        const Address& a = operand.address;
+        const bool write = use == Use::WriteBit || use == Use::WriteWord;
+        if (write || !isGlobalOfSomeType(a)) {
+            error(operand.location,
+                  shown(operand) + " belongs to unit " + std::to_string(a.unit) +
+                      ", which the project does not have (no '! id_pluto:" + two(a.unit) +
+                      "=...')" + (write ? "" : "; only its globals can be read"));
+            return false;
+        }
+        if (m_otherProjectUnitsWarned.insert(a.unit).second)
+            warning(operand.location, "unit " + std::to_string(a.unit) +
+                                          " is not in this project; its globals come from "
+                                          "another project on the bus");
+        return true;
+    }
+
+    static bool isGlobalOfSomeType(const Address& a) {
+        return std::any_of(target::unitTypes().begin(), target::unitTypes().end(),
+                           [&](const target::UnitTypeInfo& type) {
+                               return target::hasVariable(type, a, 3) && target::isGlobal(type, a);
+                           });
     }
 
     bool checkWritable(const Operand& operand, const UnitSetup& unit) {
@@ -647,6 +671,7 @@ private:
     std::set<Address> m_used;        // as used
     std::set<Address> m_usedStorage; // the registers those belong to
     std::set<Address> m_unconfigured;
+    std::set<int> m_otherProjectUnitsWarned; // stations not in the project that this unit reads
 };
 
 } // namespace

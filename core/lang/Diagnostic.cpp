@@ -9,11 +9,44 @@ int errorCount(const Diagnostics& diagnostics) {
                                           [](auto& d) { return d.severity == Severity::Error; }));
 }
 
+std::string visibleText(std::string_view text) {
+    std::string shown;
+    shown.reserve(text.size());
+    for (char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte != 0x7F) {
+            shown += c;
+            continue;
+        }
+        switch (c) {
+        case '\0':
+            shown += "\\0";
+            break;
+        case '\t':
+            shown += "\\t";
+            break;
+        case '\n':
+            shown += "\\n";
+            break;
+        case '\r':
+            shown += "\\r";
+            break;
+        default: {
+            static constexpr char kHex[] = "0123456789ABCDEF";
+            shown += "\\x";
+            shown += kHex[byte >> 4];
+            shown += kHex[byte & 0xF];
+        }
+        }
+    }
+    return shown;
+}
+
 std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diagnostic) {
     std::string text = fileName;
     text += ':' + std::to_string(diagnostic.line) + ':' + std::to_string(diagnostic.column) + ": ";
     text += diagnostic.severity == Severity::Error ? "error: " : "warning: ";
-    text += diagnostic.message;
+    text += visibleText(diagnostic.message);
     return text;
 }
 

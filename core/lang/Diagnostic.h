@@ -3,6 +3,7 @@
 #include "SourceLocation.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rs::lang {
@@ -20,7 +21,12 @@ using Diagnostics = std::vector<Diagnostic>;
 
 int errorCount(const Diagnostics& diagnostics);
 
-// "FILE:LINE:COLUMN: error: MESSAGE", the form of the command-line contract.
+// The text with every control character written visibly (\0, \t, \x01), so
+// a message quoting source text is never cut at a NUL or broken across lines.
+std::string visibleText(std::string_view text);
+
+// "FILE:LINE:COLUMN: error: MESSAGE", the form of the command-line contract;
+// the message as visibleText shows it.
 std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diagnostic);
 
 } // namespace rs::lang

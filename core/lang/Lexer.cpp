@@ -71,7 +71,7 @@ void Lexer::advance() {
 void Lexer::skipSpaces() {
     while (m_pos < m_source.size()) {
         char c = m_source[m_pos];
-        if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v')
+        if (c == ' ' || c == '\t' || c == '\f' || c == '\v')
             advance();
         else
             break;
@@ -105,15 +105,19 @@ Token Lexer::next() {
         return token;
     };
     switch (m_source[m_pos]) {
-    case '\n':
+    case '\r':
+    case '\n': {
+        // LF, CRLF and a lone CR each end a line.
+        const std::size_t length = m_source.compare(m_pos, 2, "\r\n") == 0 ? 2 : 1;
         token.kind = TokenKind::EndOfLine;
-        token.text = m_source.substr(start, 1);
-        ++m_pos;
+        token.text = m_source.substr(start, length);
+        m_pos += length;
         ++m_line;
         m_column = 1;
         return token;
+    }
     case ';': {
-        std::size_t end = m_source.find('\n', m_pos);
+        std::size_t end = m_source.find_first_of("\r\n", m_pos);
         if (end == std::string_view::npos)
             end = m_source.size();
         token.kind = TokenKind::Comment;

@@ -94,8 +94,9 @@ private:
     }
     static SourceLocation loc(const Token& token) { return {token.line, token.column}; }
 
-    void report(const Token& token, std::string message, Severity severity = Severity::Error) {
-        m_diagnostics.push_back({severity, token.line, token.column, std::move(message)});
+    void report(const Token& token, const std::string& message,
+                Severity severity = Severity::Error) {
+        m_diagnostics.push_back({severity, token.line, token.column, visibleText(message)});
     }
 
     void skipToLineEnd() {
@@ -119,7 +120,7 @@ private:
     }
 
     static std::string trimmedComment(std::string_view text) {
-        while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+        while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
             text.remove_suffix(1);
         return std::string(text);
     }
@@ -216,12 +217,12 @@ private:
         const char* begin = current().text.data();
         const char* sourceEnd = m_source.data() + m_source.size();
         const char* end = begin;
-        while (end < sourceEnd && *end != '\n' && *end != ';')
+        while (end < sourceEnd && *end != '\n' && *end != '\r' && *end != ';')
             ++end;
         while (!atLineEnd() && current().text.data() < end)
             take();
         std::string_view text(begin, static_cast<std::size_t>(end - begin));
-        while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+        while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
             text.remove_suffix(1);
         return text;
     }
@@ -373,6 +374,7 @@ private:
                               ? "a statement before '! pgm_pluto' and a step header such as S0.0_0"
                               : "a statement outside a step: add a step header such as S" +
                                     std::to_string(m_document.units.back().station()) + ".0_0");
+        m_depth = 0; // a line that failed may have left it raised
         Statement statement = parseStatement();
         auto comment = finishLine("the statement");
         add({std::move(statement), std::move(comment), loc(first)});
@@ -626,10 +628,15 @@ private:
         if (at(TokenKind::LParen)) {
             if (isComparisonAhead())
                 return parseComparison();
+            if (m_depth == kMaxExpressionDepth)
+                fail("expression nested deeper than " + std::to_string(kMaxExpressionDepth) +
+                     " levels");
             take();
             if (at(TokenKind::RParen))
                 fail("empty parentheses: expected an operand");
+            ++m_depth;
             Expr inner = parseExpression();
+            --m_depth;
             expect(TokenKind::RParen, "')'");
             return inner;
         }
@@ -772,6 +779,7 @@ private:
     Section m_section = Section::Preamble;
     bool m_lastWasBlank = false;
     bool m_seenContent = false;
+    int m_depth = 0; // parentheses open around the expression being read
 };
 
 } // namespace

@@ -17,6 +17,13 @@ struct ParseResult {
 // lines around it are still read.
 ParseResult parse(std::string_view source);
 
+// Parentheses an expression may nest. Far beyond any real program, and small
+// enough that every walker of the syntax tree (printer, checks, code
+// generator, ladder conversion and layout) recurses well inside the stack,
+// also under AddressSanitizer. A chain such as a + b + c is one node with
+// many children, however long, so it does not count.
+inline constexpr int kMaxExpressionDepth = 100;
+
 // Lower-case option words an I/O declaration may carry.
 bool isKnownIoOption(std::string_view option);
 

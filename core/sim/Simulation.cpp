@@ -82,15 +82,24 @@ void Simulation::run(std::int64_t ms) {
         scan();
 }
 
+// A unit that is not in the project stands for one of another project on
+// the bus: its global bits are what its bus slot holds, 0 until set.
 std::int64_t Simulation::value(const lang::Address& address) const {
-    const UnitEngine* engine = unit(address.unit);
-    return engine ? engine->read(address) : 0;
+    if (const UnitEngine* engine = unit(address.unit))
+        return engine->read(address);
+    if (address.unit < 0 || address.unit > 31)
+        return 0;
+    return bitRef((*m_bus)[static_cast<std::size_t>(address.unit)], address, false).read();
 }
 
 void Simulation::set(const lang::Address& address, std::int64_t value) {
     UnitEngine* engine = unit(address.unit);
-    if (!engine)
+    if (!engine) {
+        if (address.unit >= 0 && address.unit <= 31)
+            bitRef((*m_bus)[static_cast<std::size_t>(address.unit)], address, true)
+                .write(value != 0);
         return;
+    }
     if (isOutsideValue(address))
         engine->write(address, value);
     else

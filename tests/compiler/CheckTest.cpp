@@ -815,13 +815,14 @@ TEST(AddressCheck, B46HasMoreTerminals) {
 // ===== Access: other units, inputs, system variables
 
 TEST(AccessCheck, UnitNotInTheProject) {
+    // Its globals may come from another project on the bus (language.md); its locals may not.
     EXPECT_EQ(checkUnit("A20,is3", {"S0.0_0", "M0.0 = I5.0", "GM0.1 = GM7.1", "(R0.1 = R3.1)"}),
-              (Lines{"5:8: error: I5.0 belongs to unit 5, which the project does not have (no "
-                     "'! id_pluto:05=...')",
-                     "6:9: error: GM7.1 belongs to unit 7, which the project does not have (no "
-                     "'! id_pluto:07=...')",
+              (Lines{"5:8: warning: unit 5 is not in this project; its globals come from another "
+                     "project on the bus",
+                     "6:9: warning: unit 7 is not in this project; its globals come from another "
+                     "project on the bus",
                      "7:9: error: R3.1 belongs to unit 3, which the project does not have (no "
-                     "'! id_pluto:03=...')"}));
+                     "'! id_pluto:03=...'); only its globals can be read"}));
     EXPECT_EQ(checkUnit("A20,is3", {"S0.0_0", "Q12.2 = M0.0"}),
               (Lines{"5:1: error: Q12.2 belongs to unit 12, which the project does not have (no "
                      "'! id_pluto:12=...')"}));
