@@ -1,6 +1,7 @@
 #include "ImageCodec.h"
 
 #include "IntelHex.h"
+#include "project/ProjectFile.h"
 
 #include <zlib.h>
 
@@ -12,6 +13,9 @@ constexpr char kMagic[4] = {'R', 'S', 'I', 'M'};
 constexpr std::uint16_t kVersion = 1;
 constexpr std::size_t kInstructionSize = 28;
 constexpr std::uint8_t kHasSource = 1;
+// The included source was a project file, which no reader takes above this;
+// a damaged length must not make the reader allocate gigabytes.
+constexpr std::uint32_t kMaxIncludedSourceBytes = project::kMaxTextFileBytes;
 
 class Writer {
 public:
@@ -199,12 +203,22 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
             in.statement = r.u32();
             if (in.op < Op::Rung || in.op > Op::Arith)
                 return ImageError{0, 0, "unknown instruction " + std::to_string(int(in.op))};
+            // The engine indexes its tables with these: a damaged image must
+            // stop here, not there.
+            if ((in.op == Op::Timer && in.aux > std::uint8_t(lang::TimerKind::OffDelay)) ||
+                (in.op == Op::Compare && in.aux > std::uint8_t(lang::CompareOp::LessEqual)) ||
+                (in.op == Op::Arith && in.aux > std::uint8_t(ArithOp::DivAB)))
+                return ImageError{0, 0,
+                                  "unknown variant " + std::to_string(int(in.aux)) +
+                                      " of instruction " + std::to_string(int(in.op))};
         }
         for (const auto& step : image.steps)
             if (step.first > image.code.size() || step.count > image.code.size() - step.first)
                 return ImageError{0, 0, "a step's code lies outside the image"};
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();
+            if (length > kMaxIncludedSourceBytes)
+                return ImageError{0, 0, "the included source code is larger than 64 MB"};
             const std::string packed = r.bytes(r.u32());
             if (!uncompress(packed, length, image.source))
                 return ImageError{0, 0, "the included source code cannot be unpacked"};

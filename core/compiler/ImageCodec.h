@@ -27,9 +27,10 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes);
 
 // A .hps file: the images of a project's units as Intel HEX, each unit's at
 // its station number times kHpsStationStride.
-inline constexpr std::uint32_t kHpsStationStride = 0x100000;
+inline constexpr std::uint32_t kHpsStationStride = 0x1000000;
 
-// The largest image of one unit: what fits before the next station's address.
+// The largest image of one unit: what fits before the next station's address,
+// 16 MiB, about 14,000 statements of 40 contacts or 130,000 ordinary ones.
 // The manuals state no program memory size for any Pluto type, so this is the
 // bound for all of them.
 inline constexpr std::size_t kMaxUnitImageBytes = kHpsStationStride;

@@ -129,8 +129,8 @@ TEST(Image, EveryUnitIsStoredAtItsStation) {
     auto images = compileOk(two);
     ASSERT_EQ(images.size(), 2u);
     const std::string hps = compiler::writeHps(images);
-    EXPECT_NE(hps.find(":020000040030CA\n"), std::string::npos); // unit 3 at 0x300000
-    EXPECT_NE(hps.find(":0200000400C03A\n"), std::string::npos); // unit 12 at 0xC00000
+    EXPECT_NE(hps.find(":020000040300F7\n"), std::string::npos); // unit 3 at 0x3000000
+    EXPECT_NE(hps.find(":020000040C00EE\n"), std::string::npos); // unit 12 at 0xC000000
     auto read = std::get<std::vector<compiler::UnitImage>>(compiler::readHps(hps));
     ASSERT_EQ(read.size(), 2u);
     EXPECT_EQ(read[0].station, 3);
@@ -165,4 +165,26 @@ TEST(Image, ProjectsWithErrorsGiveNoImage) {
         compiler::compileText("! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\nJ(1)\n");
     EXPECT_EQ(result.errors(), 1);
     EXPECT_TRUE(result.images.empty());
+}
+
+// The engine indexes its tables with a timer's kind, a comparison and an
+// arithmetic operation: an image that names one it does not know is refused
+// when read, whatever its checksum says.
+TEST(Image, UnknownVariantsOfAnInstructionAreRejected) {
+    const auto images = compileOk("! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n"
+                                  "Q0.0 = TON(0s50) * (R0.1 > 5)\n(R0.2 += 1) = I0.1\n");
+    int tried = 0;
+    for (std::size_t i = 0; i < images[0].code.size(); ++i) {
+        const compiler::Op op = images[0].code[i].op;
+        if (op != compiler::Op::Timer && op != compiler::Op::Compare && op != compiler::Op::Arith)
+            continue;
+        auto damaged = images[0];
+        damaged.code[i].aux = 200;
+        const auto result = compiler::decodeImage(compiler::encodeImage(damaged));
+        ASSERT_TRUE(std::holds_alternative<compiler::ImageError>(result));
+        EXPECT_EQ(std::get<compiler::ImageError>(result).message,
+                  "unknown variant 200 of instruction " + std::to_string(int(op)));
+        ++tried;
+    }
+    EXPECT_EQ(tried, 3);
 }

@@ -26,19 +26,23 @@ compiler::CheckOptions quiet() {
     return options;
 }
 
-// Unit 0 with `statements` lines of code, then unit 1 with one line.
+// Unit 0 with `statements` lines of code, each a series of 40 contacts (1,176
+// bytes of image), then unit 1 with one line.
 std::string twoUnits(int statements) {
+    std::string series = "I0.0";
+    for (int i = 1; i < 40; ++i)
+        series += " * I0." + std::to_string(i % 8);
     std::string text = "! id_pluto:00=000000000000\n! id_pluto:01=000000000000\n"
                        "! pgm_pluto:00\nS0.0_0\n";
     for (int i = 0; i < statements; ++i)
-        text += "M0." + std::to_string(i % 16) + " = I0." + std::to_string(i % 8) + "\n";
+        text += "M0." + std::to_string(i % 16) + " = " + series + "\n";
     return text + "! pgm_pluto:01\nS1.0_0\nQ1.0 = I1.0\n";
 }
 
 } // namespace
 
 TEST(ProgramSize, AProgramThatFitsItsUnitCompiles) {
-    const compiler::CompileResult result = compiler::compileText(twoUnits(10000), quiet());
+    const compiler::CompileResult result = compiler::compileText(twoUnits(14000), quiet());
     EXPECT_EQ(result.errors(), 0);
     ASSERT_EQ(result.images.size(), 2u);
     EXPECT_LE(compiler::encodeImage(result.images[0]).size(), compiler::kMaxUnitImageBytes);
@@ -46,14 +50,14 @@ TEST(ProgramSize, AProgramThatFitsItsUnitCompiles) {
 }
 
 TEST(ProgramSize, AProgramTooLargeForItsUnitIsAnErrorAtItsPgmPlutoLine) {
-    // 3 instructions of 28 bytes a line: 15,000 lines take 1,260,000 bytes and more.
+    // 15,000 lines take 17,640,000 bytes and more.
     const compiler::CompileResult result = compiler::compileText(twoUnits(15000), quiet());
     ASSERT_EQ(result.errors(), 1) << lines(result.diagnostics).front();
     const auto& error = result.diagnostics.front();
     EXPECT_EQ(error.line, 3);
     EXPECT_EQ(error.column, 1);
     EXPECT_TRUE(error.message.starts_with("program of unit 0 is ")) << error.message;
-    EXPECT_TRUE(error.message.ends_with(" bytes; a Pluto A20 holds at most 1048576 bytes"))
+    EXPECT_TRUE(error.message.ends_with(" bytes; a Pluto A20 holds at most 16777216 bytes"))
         << error.message;
     EXPECT_TRUE(result.images.empty());
 }

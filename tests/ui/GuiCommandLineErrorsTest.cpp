@@ -49,7 +49,8 @@ TEST_F(GuiCommandLineErrors, AScenarioWithSyntaxErrorsIsReportedAndNothingDrawn)
     const GuiRun run = gui({kMuting, QStringLiteral("--simulate"), scenario,
                             QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
     EXPECT_EQ(run.exitCode, 1) << run.err.toStdString();
-    EXPECT_TRUE(run.err.contains(scenario + QStringLiteral(":2:5: error: "))) << run.err.toStdString();
+    EXPECT_TRUE(run.err.contains(scenario + QStringLiteral(":2:5: error: ")))
+        << run.err.toStdString();
     EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
 }
 

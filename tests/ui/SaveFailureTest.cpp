@@ -2,9 +2,9 @@
 
 #include "Autosave.h"
 #include "CompileOutput.h"
+#include "FullFileSystem.h"
 #include "MessageBoxAnswerer.h"
 #include "ProjectDocument.h"
-#include "FullFileSystem.h"
 #include "ladder/LadderPage.h"
 
 #include <QAction>

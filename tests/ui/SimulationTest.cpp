@@ -416,8 +416,9 @@ TEST_F(SimulationTest, BusStatusListsTheUnitsAndTheStatusBarTheCode) {
 
 TEST_F(SimulationTest, CommandLineScreenshotShowsTheStateAScenarioEndsIn) {
     const QString scenario =
-        writeFile(QStringLiteral("reset.scn"), "set I0.12 1\nset I0.13 1\nset I0.2 1\nrun 50ms\n"
-                                               "set I0.14 1\nrun 20ms\nset I0.14 0\nrun 20ms\nexpect I0.14 0\n");
+        writeFile(QStringLiteral("reset.scn"),
+                  "set I0.12 1\nset I0.13 1\nset I0.2 1\nrun 50ms\n"
+                  "set I0.14 1\nrun 20ms\nset I0.14 0\nrun 20ms\nexpect I0.14 0\n");
     const QString out = directory.filePath(QStringLiteral("live.png"));
     QProcess gui;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
