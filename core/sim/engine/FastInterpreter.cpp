@@ -35,7 +35,7 @@ void FastInterpreter::translate(UnitState& unit) {
     m_ops.clear();
     m_stepStart.clear();
     m_byteEdges.clear();
-    // runFast points into m_byteEdges: it must not grow once filled.
+    // m_ops points into m_byteEdges: it must not grow once filled.
     m_byteEdges.reserve(static_cast<std::size_t>(
         std::count_if(unit.code.begin(), unit.code.end(),
                       [](const DecodedInstruction& d) { return d.handler == HEdge; })));
