@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-namespace rs::sim {
+namespace rs::sim::engine {
 
 // Machine code for straight runs of a scan's instructions, made at load
 // time. The common instructions (contacts, edges, coils, parallel branches,
@@ -36,6 +36,7 @@ public:
         Next,       // any |= power, power = in
         Close,      // power |= any
         Arithmetic, // if power: *word = saturated(x <operation> y), *state = overflow
+                    // (InstructionMeaning.h)
     };
     enum class Condition : std::uint8_t { Equal, Greater, Less, GreaterEqual, LessEqual };
     enum class Operation : std::uint8_t { Add, Subtract, Multiply };
@@ -80,4 +81,4 @@ private:
     std::vector<Entry> m_entries;
 };
 
-} // namespace rs::sim
+} // namespace rs::sim::engine

@@ -1,5 +1,7 @@
 #include "ScanMachineCode.h"
 
+#include "InstructionMeaning.h"
+
 #include <bit>
 #include <climits>
 #include <cstdlib>
@@ -10,7 +12,7 @@
 #include <asmjit/x86.h>
 #endif
 
-namespace rs::sim {
+namespace rs::sim::engine {
 
 #if defined(RUNGSMITH_JIT) && defined(__x86_64__) && !defined(_WIN32)
 
@@ -260,14 +262,15 @@ private:
             a.imul(x86::rax, x86::rdx);
             break;
         }
-        a.lea(x86::rdx, x86::ptr(x86::rax, 32768));
-        a.cmp(x86::rdx, 65535);
-        a.seta(x86::dl); // outside -32768..32767
+        constexpr Bounds bounds = kRegisterBounds;
+        a.lea(x86::rdx, x86::ptr(x86::rax, static_cast<std::int32_t>(-bounds.low)));
+        a.cmp(x86::rdx, bounds.high - bounds.low);
+        a.seta(x86::dl); // outside(rax, bounds)
         a.movzx(x86::edx, x86::dl);
-        a.mov(x86::esi, 32767);
+        a.mov(x86::esi, bounds.high);
         a.cmp(x86::rax, x86::rsi);
         a.cmovg(x86::rax, x86::rsi);
-        a.mov(x86::rsi, -32768);
+        a.mov(x86::rsi, bounds.low);
         a.cmp(x86::rax, x86::rsi);
         a.cmovl(x86::rax, x86::rsi);
         const x86::Mem overflow = at(in.state, 1, x86::r11);
@@ -350,4 +353,4 @@ std::unique_ptr<ScanMachineCode> ScanMachineCode::compile(const std::vector<Run>
 
 #endif
 
-} // namespace rs::sim
+} // namespace rs::sim::engine
