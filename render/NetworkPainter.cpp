@@ -9,8 +9,8 @@ namespace rs::render {
 
 namespace {
 
+using ladder::ElementKind;
 using ladder::ElementLayout;
-using ladder::Symbol;
 
 constexpr qreal kBubbleRadius = 4; // the circle that negates a box's output
 
@@ -69,48 +69,50 @@ private:
         m_painter.setPen(pen);
         m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
         const QRectF& r = e.symbolRect;
-        switch (e.symbol) {
-        case Symbol::NormallyOpen:
+        switch (e.kind) {
+        case ElementKind::NormallyOpen:
             contact(r, {}, false);
             break;
-        case Symbol::NormallyClosed:
+        case ElementKind::NormallyClosed:
             contact(r, {}, true);
             break;
-        case Symbol::PositiveEdge:
+        case ElementKind::PositiveEdge:
             contact(r, QStringLiteral("P"), false);
             break;
-        case Symbol::NegativeEdge:
+        case ElementKind::NegativeEdge:
             contact(r, QStringLiteral("N"), false);
             break;
         // An inverted edge is written as the text writes it: a slash through
         // the letter would hide it.
-        case Symbol::NotPositiveEdge:
+        case ElementKind::NotPositiveEdge:
             contact(r, QStringLiteral("/P"), false);
             break;
-        case Symbol::NotNegativeEdge:
+        case ElementKind::NotNegativeEdge:
             contact(r, QStringLiteral("/N"), false);
             break;
-        case Symbol::Coil:
+        case ElementKind::Coil:
             coil(r, {});
             break;
-        case Symbol::Set:
+        case ElementKind::Set:
             coil(r, QStringLiteral("S"));
             break;
-        case Symbol::Reset:
+        case ElementKind::Reset:
             coil(r, QStringLiteral("R"));
             break;
-        case Symbol::Toggle:
+        case ElementKind::Toggle:
             coil(r, QStringLiteral("T"));
             break;
-        case Symbol::Jump:
+        case ElementKind::Jump:
             coil(r, QStringLiteral("J"));
             break;
-        case Symbol::SequenceReset:
+        case ElementKind::SequenceReset:
             coil(r, QStringLiteral("RS"));
             break;
-        case Symbol::Timer:
-        case Symbol::Comparison:
-        case Symbol::Arithmetic:
+        case ElementKind::OnDelayTimer:
+        case ElementKind::PulseTimer:
+        case ElementKind::OffDelayTimer:
+        case ElementKind::Comparison:
+        case ElementKind::Arithmetic:
             box(r, e.text, e.negated);
             break;
         }

@@ -1,6 +1,7 @@
 #include "PlutoLexer.h"
 
 #include "lang/Address.h"
+#include "lang/Keywords.h"
 #include "lang/Lexer.h"
 #include "lang/Parser.h"
 
@@ -9,7 +10,6 @@
 #include <QFontDatabase>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <string>
 #include <string_view>
@@ -37,15 +37,9 @@ std::string lowerCase(std::string_view text) {
     return lower;
 }
 
-bool isInstructionKeyword(std::string_view lower) {
-    static constexpr std::array<std::string_view, 10> keywords = {"p", "n",   "s",   "r",   "t",
-                                                                  "j", "ton", "tps", "tof", "it"};
-    return std::find(keywords.begin(), keywords.end(), lower) != keywords.end();
-}
-
-bool isDeclarationKeyword(std::string_view lower) {
-    return lower == "id_pluto" || lower == "id_pluto_double" || lower == "id_pluto_asi" ||
-           lower == "id_pluto_b42_asi" || lower == "type_pluto" || lower == "pgm_pluto";
+bool isOneOf(const std::vector<std::string_view>& words, std::string_view lower) {
+    return std::any_of(words.begin(), words.end(),
+                       [lower](std::string_view word) { return lowerCase(word) == lower; });
 }
 
 bool isHexDigits(std::string_view text) {
@@ -79,18 +73,20 @@ PlutoLexer::Style wordStyle(const std::vector<Token>& tokens, std::size_t i, Lin
     const std::string lower = lowerCase(token.text);
     if (kind == LineKind::Declaration) {
         if (i == 1)
-            return isDeclarationKeyword(lower) ? PlutoLexer::Declaration : PlutoLexer::Name;
+            return isOneOf(lang::declarationWords(), lower) ? PlutoLexer::Declaration
+                                                            : PlutoLexer::Name;
         if (lang::isKnownIoOption(lower) || !lang::canonicalUnitType(lower).empty() ||
-            lower == "is2" || lower == "is3")
+            lang::instructionSetOf(lower) != 0)
             return PlutoLexer::Option;
         // The IDFIX number of "! id_pluto:00=000034AD4AE1".
-        if (lowerCase(tokens[1].text).starts_with("id_pluto") &&
+        if (lowerCase(tokens[1].text)
+                .starts_with(lowerCase(lang::idKeyword(lang::UnitFamily::Pluto))) &&
             tokens[i - 1].kind == TokenKind::Equal && isHexDigits(token.text))
             return PlutoLexer::Number;
         return PlutoLexer::Name;
     }
     if (i + 1 < tokens.size() && tokens[i + 1].kind == TokenKind::LParen &&
-        isInstructionKeyword(lower))
+        isOneOf(lang::instructionWords(), lower))
         return PlutoLexer::Keyword;
     return PlutoLexer::Name;
 }

@@ -1,5 +1,7 @@
 #include "UnitSetup.h"
 
+#include "lang/Keywords.h"
+
 #include <algorithm>
 
 namespace rs::compiler {
@@ -7,20 +9,6 @@ namespace rs::compiler {
 namespace {
 
 using lang::AddressKind;
-
-std::string_view familyKeyword(lang::UnitFamily family) {
-    switch (family) {
-    case lang::UnitFamily::Pluto:
-        return "id_pluto";
-    case lang::UnitFamily::Double:
-        return "id_pluto_Double";
-    case lang::UnitFamily::ASi:
-        return "id_pluto_ASi";
-    case lang::UnitFamily::B42ASi:
-        return "id_pluto_B42_ASi";
-    }
-    return "id_pluto";
-}
 
 std::string two(int station) {
     return (station < 10 ? "0" : "") + std::to_string(station);
@@ -94,9 +82,9 @@ public:
                 continue; // the parser has reported the unknown type
             if (info->family != m_families[station]) {
                 error(typed.at, target::withArticle(*info) + " is declared with '! " +
-                                    std::string(familyKeyword(info->family)) + ":" + two(station) +
-                                    "=...', not with '! " +
-                                    std::string(familyKeyword(m_families[station])) + "'");
+                                    std::string(lang::idKeyword(info->family)) + ":" +
+                                    two(station) + "=...', not with '! " +
+                                    std::string(lang::idKeyword(m_families[station])) + "'");
             }
             unit->second.type = info;
             if (typed.declaration->instructionSet)

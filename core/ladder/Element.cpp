@@ -2,8 +2,9 @@
 
 namespace rs::ladder {
 
-bool isEdge(ContactKind kind) {
-    return kind != ContactKind::NormallyOpen && kind != ContactKind::NormallyClosed;
+bool isEdge(ElementKind kind) {
+    return kind == ElementKind::PositiveEdge || kind == ElementKind::NegativeEdge ||
+           kind == ElementKind::NotPositiveEdge || kind == ElementKind::NotNegativeEdge;
 }
 
 } // namespace rs::ladder

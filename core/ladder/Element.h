@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ElementKind.h"
 #include "lang/Ast.h"
 
 #include <cstdint>
@@ -9,20 +10,12 @@
 // of the language's expression tree, so the two convert without loss.
 namespace rs::ladder {
 
-enum class ContactKind : std::uint8_t {
-    NormallyOpen,    // x
-    NormallyClosed,  // /x
-    PositiveEdge,    // P(x)
-    NegativeEdge,    // N(x)
-    NotPositiveEdge, // /P(x), instruction set 3
-    NotNegativeEdge, // /N(x), instruction set 3
-};
-
-bool isEdge(ContactKind kind);
+// An edge contact: P(x), N(x), /P(x), /N(x).
+bool isEdge(ElementKind kind);
 
 // A contact on a bit: an input, output, memory or register bit.
 struct Contact {
-    ContactKind kind = ContactKind::NormallyOpen;
+    ElementKind kind = ElementKind::NormallyOpen; // a contact's or an edge's
     lang::Operand operand;
     bool operandNegated = false; // edges only: P(/x) sees the edges of the inverted bit
     friend bool operator==(const Contact&, const Contact&) = default;

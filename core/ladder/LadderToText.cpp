@@ -1,5 +1,7 @@
 #include "LadderToText.h"
 
+#include "ElementVocabulary.h"
+
 #include "project/Annotation.h"
 
 #include <algorithm>
@@ -13,27 +15,10 @@ using lang::ExprKind;
 
 struct ElementToExpr {
     Expr operator()(const Contact& contact) const {
-        Expr expr;
-        expr.operand = contact.operand;
-        switch (contact.kind) {
-        case ContactKind::NormallyOpen:
-        case ContactKind::NormallyClosed:
-            expr.kind = ExprKind::Contact;
-            expr.negated = contact.kind == ContactKind::NormallyClosed;
-            return expr;
-        case ContactKind::PositiveEdge:
-        case ContactKind::NegativeEdge:
-        case ContactKind::NotPositiveEdge:
-        case ContactKind::NotNegativeEdge:
-            break;
-        }
-        expr.kind = ExprKind::Edge;
-        expr.operandNegated = contact.operandNegated;
-        expr.risingEdge = contact.kind == ContactKind::PositiveEdge ||
-                          contact.kind == ContactKind::NotPositiveEdge;
-        expr.negated = contact.kind == ContactKind::NotPositiveEdge ||
-                       contact.kind == ContactKind::NotNegativeEdge;
-        return expr;
+        ElementParts parts;
+        parts.operand = contact.operand;
+        parts.operandNegated = contact.operandNegated;
+        return std::get<Expr>(makeNode(contact.kind, parts));
     }
     Expr operator()(const TimerBox& timer) const {
         Expr expr;
@@ -53,17 +38,6 @@ struct ElementToExpr {
         return expr;
     }
 };
-
-lang::Statement toStatement(const Output& output) {
-    lang::Statement statement;
-    statement.kind = output.kind;
-    statement.target = output.target;
-    statement.relativeJump = output.relativeJump;
-    statement.jumpStep = output.jumpStep;
-    statement.assignment = output.assignment;
-    statement.location = output.location;
-    return statement;
-}
 
 bool needsOwnRecord(const Network& network) {
     return network.record || !network.comment.empty() || statementCount(network) != 1 ||
@@ -98,6 +72,17 @@ lang::Line recordLine(const Network& network) {
 }
 
 } // namespace
+
+lang::Statement toStatement(const Output& output) {
+    lang::Statement statement;
+    statement.kind = output.kind;
+    statement.target = output.target;
+    statement.relativeJump = output.relativeJump;
+    statement.jumpStep = output.jumpStep;
+    statement.assignment = output.assignment;
+    statement.location = output.location;
+    return statement;
+}
 
 Expr toExpr(const Circuit& circuit) {
     if (circuit.isElement()) {

@@ -7,6 +7,8 @@
 namespace rs::ladder {
 
 lang::Expr toExpr(const Circuit& circuit);
+// The statement of an output, without a condition.
+lang::Statement toStatement(const Output& output);
 
 // The statements of a rung, one per output, each with its own copy of the
 // condition and the output's trailing comment.

@@ -1,5 +1,8 @@
 #include "Layout.h"
 
+#include "ElementVocabulary.h"
+
+#include "lang/Keywords.h"
 #include "lang/Printer.h"
 
 #include <QStringList>
@@ -22,109 +25,17 @@ QString text(const std::string& utf8) {
     return QString::fromUtf8(utf8.data(), static_cast<qsizetype>(utf8.size()));
 }
 
-QString timerWord(lang::TimerSpelling spelling) {
-    switch (spelling) {
-    case lang::TimerSpelling::TON:
-        return QStringLiteral("TON");
-    case lang::TimerSpelling::TPS:
-        return QStringLiteral("TPS");
-    case lang::TimerSpelling::TOF:
-        return QStringLiteral("TOF");
-    case lang::TimerSpelling::T:
-        return QStringLiteral("T");
-    case lang::TimerSpelling::IT:
-        return QStringLiteral("IT");
-    }
-    return {};
-}
-
-QString compareWord(lang::CompareOp op) {
-    switch (op) {
-    case lang::CompareOp::Equal:
-        return QStringLiteral("=");
-    case lang::CompareOp::Greater:
-        return QStringLiteral(">");
-    case lang::CompareOp::Less:
-        return QStringLiteral("<");
-    case lang::CompareOp::GreaterEqual:
-        return QStringLiteral(">=");
-    case lang::CompareOp::LessEqual:
-        return QStringLiteral("<=");
-    }
-    return {};
+QString word(std::string_view keyword) {
+    return QString::fromLatin1(keyword.data(), static_cast<qsizetype>(keyword.size()));
 }
 
 QString valueText(const lang::Value& value) {
-    return value.operand ? text(lang::printOperand(*value.operand))
-                         : QString::number(value.constant);
-}
-
-// What an arithmetic box does to its target, as the text writes it after the target.
-QString assignmentText(const lang::Assignment& a) {
-    switch (a.op) {
-    case lang::AssignOp::Increment:
-        return QStringLiteral("++");
-    case lang::AssignOp::Decrement:
-        return QStringLiteral("--");
-    case lang::AssignOp::AddAssign:
-        return "+= " + valueText(a.left);
-    case lang::AssignOp::SubAssign:
-        return "-= " + valueText(a.left);
-    case lang::AssignOp::MulAssign:
-        return "*= " + valueText(a.left);
-    case lang::AssignOp::DivAssign:
-        return "/= " + valueText(a.left);
-    case lang::AssignOp::Copy:
-        return "= " + valueText(a.left);
-    case lang::AssignOp::Binary: {
-        static const char* const ops[] = {" + ", " - ", " * ", " / "};
-        return "= " + valueText(a.left) + ops[static_cast<int>(a.binary)] + valueText(a.right);
-    }
-    }
-    return {};
-}
-
-Symbol contactSymbol(ContactKind kind) {
-    switch (kind) {
-    case ContactKind::NormallyOpen:
-        return Symbol::NormallyOpen;
-    case ContactKind::NormallyClosed:
-        return Symbol::NormallyClosed;
-    case ContactKind::PositiveEdge:
-        return Symbol::PositiveEdge;
-    case ContactKind::NegativeEdge:
-        return Symbol::NegativeEdge;
-    case ContactKind::NotPositiveEdge:
-        return Symbol::NotPositiveEdge;
-    case ContactKind::NotNegativeEdge:
-        return Symbol::NotNegativeEdge;
-    }
-    return Symbol::NormallyOpen;
-}
-
-Symbol outputSymbol(lang::StatementKind kind) {
-    switch (kind) {
-    case lang::StatementKind::Coil:
-        return Symbol::Coil;
-    case lang::StatementKind::Set:
-        return Symbol::Set;
-    case lang::StatementKind::Reset:
-        return Symbol::Reset;
-    case lang::StatementKind::Toggle:
-        return Symbol::Toggle;
-    case lang::StatementKind::Jump:
-        return Symbol::Jump;
-    case lang::StatementKind::SequenceReset:
-        return Symbol::SequenceReset;
-    case lang::StatementKind::Assign:
-        return Symbol::Arithmetic;
-    }
-    return Symbol::Coil;
+    return text(lang::printValue(value));
 }
 
 // The labels of an element before it has a place.
 struct Labels {
-    Symbol symbol = Symbol::NormallyOpen;
+    ElementKind kind = ElementKind::NormallyOpen;
     bool negated = false;
     QString name;
     QString address;
@@ -179,8 +90,8 @@ private:
 
     Labels labels(const Element& element) const {
         Labels l;
+        l.kind = kindOf(element);
         if (const auto* contact = std::get_if<Contact>(&element)) {
-            l.symbol = contactSymbol(contact->kind);
             l.name = nameOf(contact->operand);
             l.address = addressOf(contact->operand);
             if (contact->operandNegated) {
@@ -190,9 +101,8 @@ private:
                 l.address.prepend(u'/');
             }
         } else if (const auto* timer = std::get_if<TimerBox>(&element)) {
-            l.symbol = Symbol::Timer;
             l.negated = timer->negated;
-            l.text = timerWord(timer->spelling);
+            l.text = word(lang::timerWord(timer->spelling));
             if (timer->preset.registerOperand) {
                 l.name = nameOf(*timer->preset.registerOperand);
                 l.address = addressOf(*timer->preset.registerOperand);
@@ -201,18 +111,17 @@ private:
             }
         } else {
             const auto& box = std::get<ComparisonBox>(element);
-            l.symbol = Symbol::Comparison;
             l.negated = box.negated;
             l.name = nameOf(box.left);
             l.address = addressOf(box.left);
-            l.text = compareWord(box.op) + u' ' + valueText(box.right);
+            l.text = word(lang::compareWord(box.op)) + u' ' + valueText(box.right);
         }
         return l;
     }
 
     Labels labels(const Output& output) const {
         Labels l;
-        l.symbol = outputSymbol(output.kind);
+        l.kind = kindOf(output);
         switch (output.kind) {
         case lang::StatementKind::Jump:
             l.address =
@@ -223,7 +132,7 @@ private:
         case lang::StatementKind::Assign:
             l.name = nameOf(output.assignment.target);
             l.address = addressOf(output.assignment.target);
-            l.text = assignmentText(output.assignment);
+            l.text = text(lang::printAssignmentOperation(output.assignment));
             break;
         default:
             l.name = nameOf(output.target);
@@ -235,7 +144,7 @@ private:
 
     // A box whose text does not fit one column takes two.
     int span(const Labels& l) const {
-        if (!isBox(l.symbol))
+        if (!isBox(l.kind))
             return 1;
         return l.text.size() * m_metrics.charWidth > m_metrics.cellWidth - 2 * kBoxInset ? 2 : 1;
     }
@@ -295,14 +204,14 @@ private:
 
     ElementLayout& place(const Labels& l, qreal left, qreal top, int column, int row, int columns) {
         ElementLayout e;
-        e.symbol = l.symbol;
+        e.kind = l.kind;
         e.negated = l.negated;
         e.column = column;
         e.row = row;
         e.columnSpan = columns;
         e.cell = QRectF(left, top, columns * m_metrics.cellWidth, m_metrics.cellHeight);
         const qreal middle = e.cell.center().y();
-        if (isBox(l.symbol))
+        if (isBox(l.kind))
             e.symbolRect = QRectF(e.cell.left() + kBoxInset, middle - kBoxHeight / 2,
                                   e.cell.width() - 2 * kBoxInset, kBoxHeight);
         else
@@ -506,14 +415,6 @@ private:
 };
 
 } // namespace
-
-bool isBox(Symbol symbol) {
-    return symbol == Symbol::Timer || symbol == Symbol::Comparison || symbol == Symbol::Arithmetic;
-}
-
-bool isOutput(Symbol symbol) {
-    return symbol >= Symbol::Coil;
-}
 
 NetworkLayout layoutNetwork(const Network& network, const LayoutContext& context) {
     return Layouter(network, context).run();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Editing.h"
+#include "ElementKind.h"
 #include "Network.h"
 #include "SymbolTable.h"
 
@@ -26,29 +27,8 @@ struct LayoutMetrics {
     int minimumConditionColumns = 2;
 };
 
-enum class Symbol : std::uint8_t {
-    NormallyOpen,
-    NormallyClosed,
-    PositiveEdge,
-    NegativeEdge,
-    NotPositiveEdge,
-    NotNegativeEdge,
-    Timer,
-    Comparison,
-    Coil,
-    Set,
-    Reset,
-    Toggle,
-    Jump,
-    SequenceReset,
-    Arithmetic,
-};
-
-bool isBox(Symbol symbol);    // Timer, Comparison, Arithmetic
-bool isOutput(Symbol symbol); // Coil .. Arithmetic
-
 struct ElementLayout {
-    Symbol symbol = Symbol::NormallyOpen;
+    ElementKind kind = ElementKind::NormallyOpen;
     bool negated = false; // a timer or comparison box that passes power when it is false
     // The compiler's numbering: the statement's number in the unit and the
     // element in it (0 the output, 1.. the condition's nodes in pre-order).

@@ -1,5 +1,7 @@
 #include "TextToLadder.h"
 
+#include "ElementVocabulary.h"
+
 #include "project/Annotation.h"
 
 namespace rs::ladder {
@@ -8,26 +10,21 @@ namespace {
 
 using lang::ExprKind;
 
-ContactKind edgeKind(const lang::Expr& edge) {
-    if (edge.risingEdge)
-        return edge.negated ? ContactKind::NotPositiveEdge : ContactKind::PositiveEdge;
-    return edge.negated ? ContactKind::NotNegativeEdge : ContactKind::NegativeEdge;
-}
-
 Element toElement(const lang::Expr& expr) {
     switch (expr.kind) {
     case ExprKind::Edge:
-        return Contact{edgeKind(expr), expr.operand, expr.operandNegated};
+        return Contact{*kindOf(ElementNode{expr}), expr.operand, expr.operandNegated};
     case ExprKind::Timer:
         return TimerBox{expr.timer, expr.preset, expr.negated};
     case ExprKind::Compare:
         return ComparisonBox{expr.operand, expr.compare, expr.right, expr.negated};
     case ExprKind::Contact:
+        return Contact{*kindOf(ElementNode{expr}), expr.operand, false};
     case ExprKind::Or:
     case ExprKind::And:
         break;
     }
-    return Contact{expr.negated ? ContactKind::NormallyClosed : ContactKind::NormallyOpen,
+    return Contact{expr.negated ? ElementKind::NormallyClosed : ElementKind::NormallyOpen,
                    expr.operand, false};
 }
 

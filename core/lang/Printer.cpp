@@ -1,5 +1,7 @@
 #include "Printer.h"
 
+#include "Keywords.h"
+
 #include <cstdio>
 
 namespace rs::lang {
@@ -14,68 +16,9 @@ int characterCount(const std::string& text) {
     return count;
 }
 
-std::string_view timerName(TimerSpelling spelling) {
-    switch (spelling) {
-    case TimerSpelling::TON:
-        return "TON";
-    case TimerSpelling::TPS:
-        return "TPS";
-    case TimerSpelling::TOF:
-        return "TOF";
-    case TimerSpelling::T:
-        return "T";
-    case TimerSpelling::IT:
-        return "IT";
-    }
-    return "TON";
-}
-
-std::string_view compareText(CompareOp op) {
-    switch (op) {
-    case CompareOp::Equal:
-        return "=";
-    case CompareOp::Greater:
-        return ">";
-    case CompareOp::Less:
-        return "<";
-    case CompareOp::GreaterEqual:
-        return ">=";
-    case CompareOp::LessEqual:
-        return "<=";
-    }
-    return "=";
-}
-
-std::string printValue(const Value& value) {
-    if (value.operand)
-        return printOperand(*value.operand);
-    return std::to_string(value.constant);
-}
-
 std::string printAssignment(const Assignment& a) {
-    std::string target = printOperand(a.target);
-    switch (a.op) {
-    case AssignOp::Increment:
-        return target + "++";
-    case AssignOp::Decrement:
-        return target + "--";
-    case AssignOp::AddAssign:
-        return target + " += " + printValue(a.left);
-    case AssignOp::SubAssign:
-        return target + " -= " + printValue(a.left);
-    case AssignOp::MulAssign:
-        return target + " *= " + printValue(a.left);
-    case AssignOp::DivAssign:
-        return target + " /= " + printValue(a.left);
-    case AssignOp::Copy:
-        return target + " = " + printValue(a.left);
-    case AssignOp::Binary: {
-        static constexpr const char* ops[] = {" + ", " - ", " * ", " / "};
-        return target + " = " + printValue(a.left) + ops[static_cast<int>(a.binary)] +
-               printValue(a.right);
-    }
-    }
-    return target;
+    const bool step = a.op == AssignOp::Increment || a.op == AssignOp::Decrement;
+    return printOperand(a.target) + (step ? "" : " ") + printAssignmentOperation(a);
 }
 
 std::string station(int number) {
@@ -84,32 +27,19 @@ std::string station(int number) {
     return buffer;
 }
 
-std::string_view idKeyword(UnitFamily family) {
-    switch (family) {
-    case UnitFamily::Pluto:
-        return "id_pluto";
-    case UnitFamily::Double:
-        return "id_pluto_Double";
-    case UnitFamily::ASi:
-        return "id_pluto_ASi";
-    case UnitFamily::B42ASi:
-        return "id_pluto_B42_ASi";
-    }
-    return "id_pluto";
-}
-
 struct DeclarationPrinter {
     std::string operator()(const IdDeclaration& d) const {
         return "! " + std::string(idKeyword(d.family)) + ":" + station(d.station) + "=" + d.idfix;
     }
     std::string operator()(const TypeDeclaration& d) const {
-        std::string text = "! type_pluto:" + station(d.station) + "=" + d.type;
+        std::string text =
+            "! " + std::string(kTypeKeyword) + ":" + station(d.station) + "=" + d.type;
         if (d.instructionSet)
-            text += ",is" + std::to_string(d.instructionSet);
+            text += "," + std::string(instructionSetWord(d.instructionSet));
         return text;
     }
     std::string operator()(const ProgramDeclaration& d) const {
-        return "! pgm_pluto:" + station(d.station);
+        return "! " + std::string(kProgramKeyword) + ":" + station(d.station);
     }
     std::string operator()(const IoDeclaration& d) const {
         std::string text = "! " + printOperand(d.io);
@@ -182,6 +112,26 @@ std::string printOperand(const Operand& operand) {
     return operand.isName() ? operand.name : toString(operand.address);
 }
 
+std::string printValue(const Value& value) {
+    if (value.operand)
+        return printOperand(*value.operand);
+    return std::to_string(value.constant);
+}
+
+std::string printAssignmentOperation(const Assignment& a) {
+    const std::string op(assignWord(a.op));
+    switch (a.op) {
+    case AssignOp::Increment:
+    case AssignOp::Decrement:
+        return op;
+    case AssignOp::Binary:
+        return op + " " + printValue(a.left) + " " + std::string(binaryWord(a.binary)) + " " +
+               printValue(a.right);
+    default:
+        return op + " " + printValue(a.left);
+    }
+}
+
 std::string printExpression(const Expr& expr) {
     std::string text = expr.negated ? "/" : "";
     switch (expr.kind) {
@@ -206,16 +156,16 @@ std::string printExpression(const Expr& expr) {
     case ExprKind::Contact:
         return text + printOperand(expr.operand);
     case ExprKind::Edge:
-        return text + (expr.risingEdge ? "P(" : "N(") + (expr.operandNegated ? "/" : "") +
-               printOperand(expr.operand) + ")";
+        return text + std::string(expr.risingEdge ? kRisingEdgeWord : kFallingEdgeWord) + "(" +
+               (expr.operandNegated ? "/" : "") + printOperand(expr.operand) + ")";
     case ExprKind::Timer:
-        text += timerName(expr.timer);
+        text += timerWord(expr.timer);
         text += '(';
         text += expr.preset.registerOperand ? printOperand(*expr.preset.registerOperand)
                                             : formatTime(expr.preset.hundredths);
         return text + ")";
     case ExprKind::Compare:
-        return text + "(" + printOperand(expr.operand) + std::string(compareText(expr.compare)) +
+        return text + "(" + printOperand(expr.operand) + std::string(compareWord(expr.compare)) +
                printValue(expr.right) + ")";
     }
     return text;
@@ -228,17 +178,14 @@ std::string printStatement(const Statement& statement) {
         text = printOperand(statement.target);
         break;
     case StatementKind::Set:
-        text = "S(" + printOperand(statement.target) + ")";
-        break;
     case StatementKind::Reset:
     case StatementKind::SequenceReset:
-        text = "R(" + printOperand(statement.target) + ")";
-        break;
     case StatementKind::Toggle:
-        text = "T(" + printOperand(statement.target) + ")";
+        text =
+            std::string(statementWord(statement.kind)) + "(" + printOperand(statement.target) + ")";
         break;
     case StatementKind::Jump:
-        text = "J(";
+        text = std::string(kJumpWord) + "(";
         if (statement.relativeJump)
             text += statement.jumpStep < 0 ? "-" : "+";
         text += std::to_string(statement.jumpStep < 0 ? -statement.jumpStep : statement.jumpStep);

@@ -17,6 +17,9 @@ std::string print(const Document& document);
 std::string printStatement(const Statement& statement);
 std::string printExpression(const Expr& expr);
 std::string printOperand(const Operand& operand);
+std::string printValue(const Value& value);
+// What an assignment does to its target, as written after it: "++", "+= 2", "= R0.1 * 3".
+std::string printAssignmentOperation(const Assignment& assignment);
 std::string printDeclaration(const Declaration& declaration);
 
 // Hundredths of a second in the language's notation: 510 -> "5s10".

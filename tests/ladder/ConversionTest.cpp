@@ -38,10 +38,10 @@ TEST(TextToLadder, ContactsAndEdgesKeepTheirKindAndOperand) {
     const OnlyRung only = onlyRung(body);
     const Rung& rung = only.rung();
     ASSERT_EQ(rung.condition->kind, Circuit::Kind::Series);
-    const ContactKind kinds[] = {ContactKind::NormallyOpen,    ContactKind::NormallyClosed,
-                                 ContactKind::PositiveEdge,    ContactKind::NegativeEdge,
-                                 ContactKind::NotPositiveEdge, ContactKind::NotNegativeEdge,
-                                 ContactKind::PositiveEdge};
+    const ElementKind kinds[] = {ElementKind::NormallyOpen,    ElementKind::NormallyClosed,
+                                 ElementKind::PositiveEdge,    ElementKind::NegativeEdge,
+                                 ElementKind::NotPositiveEdge, ElementKind::NotNegativeEdge,
+                                 ElementKind::PositiveEdge};
     for (std::size_t i = 0; i < std::size(kinds); ++i) {
         const auto& contact = std::get<Contact>(elementAt(*rung.condition, i));
         EXPECT_EQ(contact.kind, kinds[i]) << i;

@@ -19,7 +19,7 @@ std::string textOf(const Network& network) {
     return rs::test::printLines(toLines(StepLadder{{}, {network}}));
 }
 
-Contact contact(int input, ContactKind kind = ContactKind::NormallyOpen) {
+Contact contact(int input, ElementKind kind = ElementKind::NormallyOpen) {
     return {kind, {{}, Address{AddressKind::Input, 0, input}, {}}, false};
 }
 
@@ -84,9 +84,9 @@ TEST(Editing, RemovingCollapsesGroupsAndCanLeaveNoCondition) {
 
 TEST(Editing, ReplacingChangesKindOrOperand) {
     Network n = networkOf("Q0.1 = I0.1 * P(/I0.2)\n");
-    ASSERT_TRUE(replaceElement(n, {0, {0}}, contact(1, ContactKind::NotNegativeEdge)).done());
+    ASSERT_TRUE(replaceElement(n, {0, {0}}, contact(1, ElementKind::NotNegativeEdge)).done());
     Contact normal = std::get<Contact>(std::get<Rung>(n.items[0]).condition->parts[1].element);
-    normal.kind = ContactKind::NormallyClosed; // an ordinary contact has no inverted edge operand
+    normal.kind = ElementKind::NormallyClosed; // an ordinary contact has no inverted edge operand
     ASSERT_TRUE(replaceElement(n, {0, {1}}, normal).done());
     EXPECT_EQ(textOf(n), "Q0.1 = /N(I0.1) * /I0.2\n");
     ComparisonBox box{{{}, Address{AddressKind::Register, 0, 1}, {}},
@@ -148,7 +148,7 @@ TEST(Editing, ASharedConditionHoldsNoMemoryAndReadsNoOutputOfItsRung) {
     const Network before = shared;
     const TimerBox timer{rs::lang::TimerSpelling::TON, {std::nullopt, 100}, false};
     EXPECT_FALSE(insertInSeries(shared, {0, {}}, timer, Side::After).done());
-    EXPECT_FALSE(replaceElement(shared, {0, {}}, contact(1, ContactKind::PositiveEdge)).done());
+    EXPECT_FALSE(replaceElement(shared, {0, {}}, contact(1, ElementKind::PositiveEdge)).done());
     EXPECT_EQ(shared, before);
 }
 

@@ -127,7 +127,7 @@ TEST(Steps, ALadderIsWrittenBackIntoItsStep) {
     rs::lang::UnitProgram& unit = rs::project::programOf(project, 0);
     StepLadder ladder = toLadder(unit.steps.front());
     ASSERT_TRUE(insertInSeries(ladder.networks.front(), {0, {}},
-                               Contact{ContactKind::NormallyClosed,
+                               Contact{ElementKind::NormallyClosed,
                                        {{}, Address{AddressKind::Input, 0, 3}, {}},
                                        false},
                                Side::After)

@@ -2,6 +2,7 @@
 #include "ManualNetworks.h"
 #include "StepText.h"
 #include "compiler/Compiler.h"
+#include "ladder/ElementVocabulary.h"
 #include "ladder/UnitLadder.h"
 
 #include <gtest/gtest.h>
@@ -70,12 +71,12 @@ TEST(Layout, TheMutingStartCircuitOnTheGrid) {
         EXPECT_EQ(e.address, x.address);
         EXPECT_EQ(e.statement, 0U);
     }
-    EXPECT_EQ(find(l, 8).symbol, Symbol::PositiveEdge);
+    EXPECT_EQ(find(l, 8).kind, ElementKind::PositiveEdge);
     EXPECT_EQ(find(l, 2).symbolRect, QRectF(60, 57, 24, 26));
     EXPECT_EQ(find(l, 2).name, "EStop")
         << "the name comes from the table when the text uses the address";
     const ElementLayout& coil = find(l, 0, 0);
-    EXPECT_EQ(coil.symbol, Symbol::Coil);
+    EXPECT_EQ(coil.kind, ElementKind::Coil);
     EXPECT_EQ(coil.cell, QRectF(520, 34, 128, 72));
     EXPECT_EQ(coil.path.item, 0U);
     // The short branch Q0.2 is drawn out to the join, which any branch end powers.
@@ -99,12 +100,12 @@ TEST(Layout, LabelsShowNameAndAddressAndWhatABoxDoes) {
     EXPECT_FALSE(find(l, 3).negated);
     EXPECT_TRUE(find(l, 4).negated);
     EXPECT_EQ(find(l, 4).address, "R0.4");
-    EXPECT_EQ(find(l, 5).symbol, Symbol::Comparison);
+    EXPECT_EQ(find(l, 5).kind, ElementKind::Comparison);
     EXPECT_EQ(find(l, 5).text, ">= 4");
     EXPECT_EQ(find(l, 5).address, "R0.98");
     EXPECT_EQ(find(l, 6).address, "/I0.3");
     const ElementLayout& box = find(l, 0, 0);
-    EXPECT_EQ(box.symbol, Symbol::Arithmetic);
+    EXPECT_EQ(box.kind, ElementKind::Arithmetic);
     EXPECT_EQ(box.text, "+= 77");
     EXPECT_EQ(box.address, "R0.1");
     EXPECT_EQ(l.texts.at(0).text, "Network 1");
@@ -119,7 +120,7 @@ TEST(Layout, OutputsLineUpAtTheRightAndStackWhenARungHasSeveral) {
     EXPECT_EQ(l.conditionColumns, 3);
     std::vector<const ElementLayout*> outputs;
     for (const auto& e : l.elements)
-        if (isOutput(e.symbol))
+        if (isOutput(e.kind))
             outputs.push_back(&e);
     ASSERT_EQ(outputs.size(), 4U);
     for (const auto* output : outputs)
@@ -135,7 +136,7 @@ TEST(Layout, OutputsLineUpAtTheRightAndStackWhenARungHasSeveral) {
     EXPECT_EQ(outputs[2]->row, 1);
     EXPECT_EQ(outputs[2]->output, 1);
     EXPECT_EQ(find(l, 1).statement, 1U) << "I0.4, numbered in the rung's first statement";
-    EXPECT_EQ(outputs[3]->symbol, Symbol::Jump);
+    EXPECT_EQ(outputs[3]->kind, ElementKind::Jump);
     EXPECT_EQ(outputs[3]->address, "step +1");
     // The note stands between the rungs; the trailing comment beside its output.
     const auto note = std::find_if(l.texts.begin(), l.texts.end(), [](const TextLayout& t) {

@@ -170,21 +170,18 @@ bool power(const Circuit& c, bool input, Evaluation& at) {
         break;
     }
     if (const auto* contact = std::get_if<ladder::Contact>(&c.element)) {
-        using ladder::ContactKind;
+        using ladder::ElementKind;
         switch (contact->kind) {
-        case ContactKind::NormallyOpen:
+        case ElementKind::NormallyOpen:
             return input && at.atom(bitAtom(contact->operand));
-        case ContactKind::NormallyClosed:
+        case ElementKind::NormallyClosed:
             return input && !at.atom(bitAtom(contact->operand));
-        case ContactKind::PositiveEdge:
-        case ContactKind::NegativeEdge:
-        case ContactKind::NotPositiveEdge:
-        case ContactKind::NotNegativeEdge:
+        default: // an edge, the only other kind a contact has
             break;
         }
         const bool seen = at.nextEdge(); // counted even where no power reaches it
-        const bool inverted = contact->kind == ContactKind::NotPositiveEdge ||
-                              contact->kind == ContactKind::NotNegativeEdge;
+        const bool inverted = contact->kind == ElementKind::NotPositiveEdge ||
+                              contact->kind == ElementKind::NotNegativeEdge;
         return input && (seen != inverted);
     }
     if (const auto* timer = std::get_if<ladder::TimerBox>(&c.element)) {

@@ -129,12 +129,12 @@ protected:
     }
 
     // Where the element drawn with this address (and, if given, symbol) is on screen.
-    QPoint where(const QString& address, std::optional<rs::ladder::Symbol> symbol = {}) {
+    QPoint where(const QString& address, std::optional<rs::ladder::ElementKind> symbol = {}) {
         for (int s = 0; s < page().stepCount(); ++s)
             for (int n = 0; n < page().networkCount(s); ++n) {
                 rs::ui::NetworkItem* item = page().networkItem(s, n);
                 for (const auto& element : item->layout().elements)
-                    if (element.address == address && (!symbol || element.symbol == *symbol)) {
+                    if (element.address == address && (!symbol || element.kind == *symbol)) {
                         const QRectF rect = item->mapRectToScene(item->elementRect(element));
                         page().view()->ensureVisible(rect);
                         return page().view()->mapFromScene(rect.center());
@@ -144,7 +144,7 @@ protected:
         return {};
     }
 
-    void click(const QString& address, std::optional<rs::ladder::Symbol> symbol = {}) {
+    void click(const QString& address, std::optional<rs::ladder::ElementKind> symbol = {}) {
         QTest::mouseClick(viewport(), Qt::LeftButton, {}, where(address, symbol));
     }
 
@@ -170,7 +170,7 @@ TEST_F(LadderPageTest, BuildsTheManualsMutingProgramFromAnEmptyProject) {
     open(kEmptyProject);
     clickNode({PageRef::Kind::Ladder, document(), 0, 0});
     page().view()->setFocus();
-    using rs::ladder::Symbol;
+    using rs::ladder::ElementKind;
 
     // The empty page says how to begin.
     auto hintShown = [&] {

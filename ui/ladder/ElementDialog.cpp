@@ -32,12 +32,12 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
     m_value->setObjectName(QStringLiteral("value"));
     m_value->setPlaceholderText(tr("such as >= 5, = R0.2, += 2, ++"));
     m_negated->setObjectName(QStringLiteral("negated"));
-    for (const ElementKindInfo& info : ElementKinds::all())
+    for (const ElementKindInfo& info : ladder::elementKinds())
         if (info.output == output)
             m_kind->addItem(ElementKinds::name(info.kind), static_cast<int>(info.kind));
     m_kind->setCurrentIndex(m_kind->findData(static_cast<int>(fields.kind)));
-    m_operand->setText(fields.operand);
-    m_value->setText(fields.value);
+    m_operand->setText(QString::fromStdString(fields.operand));
+    m_value->setText(QString::fromStdString(fields.value));
     m_negated->setChecked(fields.negated);
 
     auto* form = new QFormLayout;
@@ -51,7 +51,7 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
     form->addRow(m_valueLabel, m_value);
     form->addRow(QString(), m_negated);
     if (output) {
-        m_comment = new QLineEdit(fields.comment, this);
+        m_comment = new QLineEdit(QString::fromStdString(fields.comment), this);
         m_comment->setObjectName(QStringLiteral("comment"));
         form->addRow(tr("&Comment:"), m_comment);
     }
@@ -96,9 +96,10 @@ void ElementDialog::fillCompletion() {
 void ElementDialog::kindChanged() {
     const auto kind = static_cast<ElementKind>(m_kind->currentData().toInt());
     m_operandLabel->setText(ElementKinds::operandLabel(kind));
-    m_valueLabel->setVisible(ElementKinds::hasValue(kind));
-    m_value->setVisible(ElementKinds::hasValue(kind));
-    m_negated->setVisible(ElementKinds::canNegate(kind));
+    const ElementKindInfo& info = ladder::infoOf(kind);
+    m_valueLabel->setVisible(info.hasValue);
+    m_value->setVisible(info.hasValue);
+    m_negated->setVisible(info.canNegate);
     m_problem->clear();
 }
 
@@ -160,8 +161,17 @@ void ElementDialog::accept() {
     if (!m_document)
         return QDialog::reject();
     const auto kind = static_cast<ElementKind>(m_kind->currentData().toInt());
-    const QString text = ElementKinds::compose(kind, m_operand->text(), m_value->text(),
-                                               m_negated->isVisible() && m_negated->isChecked());
+    ladder::ElementFields fields;
+    fields.kind = kind;
+    fields.operand = m_operand->text().toStdString();
+    fields.value = m_value->text().toStdString();
+    fields.negated = m_negated->isChecked();
+    const ladder::FieldsText made = ladder::textOf(fields);
+    if (made.text.empty()) {
+        m_problem->setText(QString::fromStdString(made.error));
+        return;
+    }
+    const QString text = QString::fromStdString(made.text);
     const lang::Document& program = m_document->project().program;
     if (m_isOutput) {
         ladder::OutputReading read = ladder::readOutput(program, m_station, text.toStdString());

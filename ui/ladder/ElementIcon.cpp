@@ -1,6 +1,7 @@
 #include "ElementIcon.h"
 
 #include "NetworkPainter.h"
+#include "ladder/ElementVocabulary.h"
 
 #include <QPainter>
 #include <QPixmap>
@@ -9,65 +10,18 @@ namespace rs::ui {
 
 namespace {
 
-using ladder::Symbol;
-
-struct Picture {
-    Symbol symbol;
-    const char* text; // inside a box
-};
-
-Picture pictureOf(ElementKind kind) {
-    switch (kind) {
-    case ElementKind::NormallyOpen:
-        return {Symbol::NormallyOpen, ""};
-    case ElementKind::NormallyClosed:
-        return {Symbol::NormallyClosed, ""};
-    case ElementKind::PositiveEdge:
-        return {Symbol::PositiveEdge, ""};
-    case ElementKind::NegativeEdge:
-        return {Symbol::NegativeEdge, ""};
-    case ElementKind::NotPositiveEdge:
-        return {Symbol::NotPositiveEdge, ""};
-    case ElementKind::NotNegativeEdge:
-        return {Symbol::NotNegativeEdge, ""};
-    case ElementKind::OnDelayTimer:
-        return {Symbol::Timer, "TON"};
-    case ElementKind::PulseTimer:
-        return {Symbol::Timer, "TPS"};
-    case ElementKind::OffDelayTimer:
-        return {Symbol::Timer, "TOF"};
-    case ElementKind::Comparison:
-        return {Symbol::Comparison, ">="};
-    case ElementKind::Coil:
-        return {Symbol::Coil, ""};
-    case ElementKind::Set:
-        return {Symbol::Set, ""};
-    case ElementKind::Reset:
-        return {Symbol::Reset, ""};
-    case ElementKind::Toggle:
-        return {Symbol::Toggle, ""};
-    case ElementKind::Jump:
-        return {Symbol::Jump, ""};
-    case ElementKind::SequenceReset:
-        return {Symbol::SequenceReset, ""};
-    case ElementKind::Arithmetic:
-        return {Symbol::Arithmetic, "+="};
-    }
-    return {Symbol::NormallyOpen, ""};
-}
-
 // The element alone on a short piece of wire, in layout units, the
 // proportions of kElementIconSize.
-ladder::NetworkLayout layoutOf(const Picture& picture) {
+ladder::NetworkLayout layoutOf(ElementKind kind) {
     constexpr qreal kWidth = 54;
     constexpr qreal kHeight = kWidth * kElementIconSize.height() / kElementIconSize.width();
     const qreal middle = kHeight / 2;
-    const bool box = ladder::isBox(picture.symbol);
+    const bool box = ladder::isBox(kind);
     const qreal symbolWidth = box ? 50 : 24;
     const qreal symbolHeight = box ? 28 : 26;
     ladder::ElementLayout element;
-    element.symbol = picture.symbol;
-    element.text = QString::fromLatin1(picture.text);
+    element.kind = kind;
+    element.text = QString::fromLatin1(ladder::infoOf(kind).boxWord);
     element.symbolRect =
         QRectF((kWidth - symbolWidth) / 2, middle - symbolHeight / 2, symbolWidth, symbolHeight);
     element.cell = element.symbolRect;
@@ -83,7 +37,7 @@ ladder::NetworkLayout layoutOf(const Picture& picture) {
 } // namespace
 
 QIcon elementIcon(ElementKind kind, const render::LadderStyle& style) {
-    const ladder::NetworkLayout layout = layoutOf(pictureOf(kind));
+    const ladder::NetworkLayout layout = layoutOf(kind);
     render::LadderStyle transparent = style;
     transparent.background = Qt::transparent;
     // Letters in the symbols large enough to read at the toolbar's scale.

@@ -55,7 +55,7 @@ constexpr qreal kNetworkGap = 4;
 
 QString signatureOf(const ladder::ElementLayout& element) {
     return QStringLiteral("%1|%2|%3|%4|%5")
-        .arg(static_cast<int>(element.symbol))
+        .arg(static_cast<int>(element.kind))
         .arg(element.name, element.address, element.text)
         .arg(element.output >= 0);
 }
@@ -183,13 +183,14 @@ void LadderPage::createActions() {
         m_toolBar->addAction(action);
     }
     m_toolBar->addSeparator();
-    for (const ElementKindInfo& info : ElementKinds::all()) {
+    for (const ElementKindInfo& info : ladder::elementKinds()) {
         QAction* action = add(
             QStringLiteral("insert%1Action").arg(static_cast<int>(info.kind)),
-            QString::fromLatin1(info.label),
+            QString::fromLatin1(info.picture),
             tr("%1 (key %2)")
-                .arg(ElementKinds::name(info.kind),
-                     QKeySequence(QLatin1String(info.shortcut)).toString(QKeySequence::NativeText)),
+                .arg(
+                    ElementKinds::name(info.kind),
+                    QKeySequence(QLatin1String(info.insertKey)).toString(QKeySequence::NativeText)),
             [this, kind = info.kind] { insertElement(kind); });
         m_toolBar->addAction(action);
         if (info.kind == ElementKind::Comparison)
@@ -263,7 +264,7 @@ void LadderPage::changeEvent(QEvent* event) {
 }
 
 void LadderPage::drawElementIcons() {
-    for (const ElementKindInfo& info : ElementKinds::all())
+    for (const ElementKindInfo& info : ladder::elementKinds())
         action(QStringLiteral("insert%1Action").arg(static_cast<int>(info.kind)))
             ->setIcon(elementIcon(info.kind, m_drawing.style));
 }
@@ -960,8 +961,8 @@ bool LadderPage::handleKey(QKeyEvent* event) {
     }
     const QString text = event->text();
     const bool shift = modifiers & Qt::ShiftModifier;
-    for (const ElementKindInfo& info : ElementKinds::all()) {
-        QString shortcut = QLatin1String(info.shortcut);
+    for (const ElementKindInfo& info : ladder::elementKinds()) {
+        QString shortcut = QLatin1String(info.insertKey);
         const bool needsShift = shortcut.startsWith(QLatin1String("Shift+"));
         if (needsShift)
             shortcut = shortcut.mid(6);
@@ -1077,13 +1078,13 @@ void LadderPage::insertElement(ElementKind kind) {
     if (!cursor.valid())
         return;
     const ladder::Network& network = m_steps[cursor.step].ladder.networks[cursor.network];
-    const bool output = ElementKinds::isOutput(kind);
+    const bool output = ladder::isOutput(kind);
     ElementFields fields;
     fields.kind = kind;
     if (kind == ElementKind::SequenceReset)
-        fields.operand = QStringLiteral("S%1.1").arg(m_station);
+        fields.operand = QStringLiteral("S%1.1").arg(m_station).toStdString();
     if (kind == ElementKind::Jump)
-        fields.operand = QStringLiteral("+1");
+        fields.operand = "+1";
     ElementDialog dialog(m_document, m_station, output, fields, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
