@@ -13,18 +13,18 @@ const char* kProgram = "! id_pluto:00=000000000000\n"
                        "S0.0_0\n"
                        "Q0.2 = I0.0\n";
 
-struct Run {
+struct CancelledRun {
     sim::ScenarioReport report;
     std::int64_t endMs = 0;
 };
 
-Run run(const std::string& text, const sim::CancelRequest& cancelled) {
+CancelledRun run(const std::string& text, const sim::CancelRequest& cancelled) {
     const auto compiled = compiler::compileText(kProgram);
     EXPECT_EQ(compiled.errors(), 0);
     const sim::Scenario scenario =
         sim::parseScenario(text, sim::OperandNames(project::readProject(kProgram).project));
     sim::Simulation simulation(compiled.images);
-    Run result{sim::runScenario("t.scn", scenario, simulation, nullptr, {}, cancelled), 0};
+    CancelledRun result{sim::runScenario("t.scn", scenario, simulation, nullptr, {}, cancelled), 0};
     result.endMs = simulation.timeMs();
     return result;
 }
@@ -33,7 +33,7 @@ Run run(const std::string& text, const sim::CancelRequest& cancelled) {
 
 TEST(ScenarioCancel, StopsAtTheScanItIsAskedAfterAndSaysSo) {
     int asked = 0;
-    const Run cancelled =
+    const CancelledRun cancelled =
         run("set I0.0 1\nrun 20000min\nexpect Q0.2 1\n", [&] { return ++asked == 5; });
     EXPECT_TRUE(cancelled.report.cancelled);
     EXPECT_EQ(cancelled.endMs, 50); // five scans of 10 ms
@@ -42,15 +42,15 @@ TEST(ScenarioCancel, StopsAtTheScanItIsAskedAfterAndSaysSo) {
 
 TEST(ScenarioCancel, AnExpectationWaitingWhenCancelledCountsNeither) {
     int asked = 0;
-    const Run cancelled = run("expect Q0.2 1 within 10s\n", [&] { return ++asked == 3; });
+    const CancelledRun cancelled = run("expect Q0.2 1 within 10s\n", [&] { return ++asked == 3; });
     EXPECT_TRUE(cancelled.report.cancelled);
     EXPECT_EQ(cancelled.report.passed + cancelled.report.failed, 0);
 }
 
 TEST(ScenarioCancel, ARunNeverCancelledGivesTheSameReport) {
     const std::string text = "set I0.0 1\nscans 3\nexpect Q0.2 1\nexpect Q0.2 0 within 50ms\n";
-    const Run plain = run(text, {});
-    const Run asked = run(text, [] { return false; });
+    const CancelledRun plain = run(text, {});
+    const CancelledRun asked = run(text, [] { return false; });
     EXPECT_FALSE(asked.report.cancelled);
     EXPECT_EQ(asked.report.passed, plain.report.passed);
     EXPECT_EQ(asked.report.failures, plain.report.failures);
