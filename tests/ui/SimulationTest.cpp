@@ -277,7 +277,7 @@ TEST_F(SimulationTest, WaveformRecordsTheRunAndExportsVcd) {
     click(QStringLiteral("I0.12"));
     for (int i = 0; i < 5; ++i)
         singleScan();
-    const ui::WaveformRecorder& recorder = session()->recorder();
+    const sim::WaveformRecorder& recorder = session()->recorder();
     EXPECT_EQ(recorder.endMs(), 50);
     const auto& traces = recorder.traces();
     const auto input = std::find_if(traces.begin(), traces.end(),
@@ -416,8 +416,9 @@ TEST_F(SimulationTest, BusStatusListsTheUnitsAndTheStatusBarTheCode) {
 
 TEST_F(SimulationTest, CommandLineScreenshotShowsTheStateAScenarioEndsIn) {
     const QString scenario =
-        writeFile(QStringLiteral("reset.scn"), "set I0.12 1\nset I0.13 1\nset I0.2 1\nrun 50ms\n"
-                                               "set I0.14 1\nrun 20ms\nset I0.14 0\nrun 20ms\nexpect I0.14 0\n");
+        writeFile(QStringLiteral("reset.scn"),
+                  "set I0.12 1\nset I0.13 1\nset I0.2 1\nrun 50ms\n"
+                  "set I0.14 1\nrun 20ms\nset I0.14 0\nrun 20ms\nexpect I0.14 0\n");
     const QString out = directory.filePath(QStringLiteral("live.png"));
     QProcess gui;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
