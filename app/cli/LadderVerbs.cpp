@@ -1,12 +1,15 @@
 #include "LadderVerbs.h"
 
+#include "LivePower.h"
 #include "NetworkPicture.h"
 #include "Verbs.h"
+#include "compiler/Compiler.h"
 #include "ladder/LadderToText.h"
 #include "ladder/Layout.h"
 #include "ladder/TextToLadder.h"
 #include "ladder/UnitLadder.h"
 #include "project/ProjectFile.h"
+#include "sim/ScenarioRunner.h"
 
 #include <QGuiApplication>
 
@@ -40,6 +43,7 @@ std::optional<int> number(const Invocation& invocation, const char* name, int lo
 
 struct ReadProject {
     project::Project project;
+    std::string text;
     int status = Ok; // UsageOrIo when unreadable, Failed on errors
 };
 
@@ -47,13 +51,50 @@ ReadProject read(const QString& path) {
     project::FileText file = project::readTextFile(path);
     if (!file.error.isEmpty()) {
         std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
-        return {{}, UsageOrIo};
+        return {{}, {}, UsageOrIo};
     }
     project::ProjectReadResult result = project::readProject(file.text);
     const std::string name = path.toStdString();
     for (const auto& diagnostic : result.diagnostics)
         std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
-    return {std::move(result.project), result.ok() ? Ok : Failed};
+    return {std::move(result.project), std::move(file.text), result.ok() ? Ok : Failed};
+}
+
+struct ScenarioPower {
+    render::PowerSnapshot power;
+    int status = Ok;       // UsageOrIo when unreadable, Failed on errors or failed expectations
+    bool drawable = false; // the scenario ran to its end
+};
+
+// Compiles the project, runs the scenario from power on and takes the power
+// picture of unit `station` as the scenario leaves it. Failed expectations
+// are printed as `test` prints them; the state they end in is still drawn.
+ScenarioPower runToEnd(const QString& projectPath, const ReadProject& loaded,
+                       const QString& scenarioPath, int station) {
+    const project::FileText text = project::readTextFile(scenarioPath);
+    if (!text.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(text.error));
+        return {{}, UsageOrIo, false};
+    }
+    const compiler::CompileResult compiled = compiler::compileText(loaded.text);
+    if (compiled.errors()) {
+        for (const auto& diagnostic : compiled.diagnostics)
+            if (diagnostic.severity == lang::Severity::Error)
+                std::fprintf(stderr, "%s\n",
+                             lang::formatDiagnostic(projectPath.toStdString(), diagnostic).c_str());
+        return {{}, Failed, false};
+    }
+    const sim::Scenario scenario = sim::parseScenario(text.text, sim::OperandNames(loaded.project));
+    sim::Simulation simulation(compiled.images);
+    const sim::ScenarioReport report =
+        sim::runScenario(scenarioPath.toStdString(), scenario, simulation);
+    for (const auto& line : report.diagnostics)
+        std::fprintf(stderr, "%s\n", line.c_str());
+    if (!report.diagnostics.empty())
+        return {{}, Failed, false};
+    for (const auto& line : report.failures)
+        std::fprintf(stdout, "%s\n", line.c_str());
+    return {render::powerSnapshot(*simulation.unit(station)), report.failed ? Failed : Ok, true};
 }
 
 QString stepName(const lang::StepAddress& step) {
@@ -119,12 +160,20 @@ int runLadder(const Invocation& invocation) {
     const ladder::NetworkLayout layout =
         ladder::layoutNetwork(page->ladder.networks[index], context);
     const QString title = QStringLiteral("%1 network %2").arg(stepName(wanted)).arg(*networkNumber);
-    const QString error = render::writeNetworkPicture(output, layout, {}, nullptr, title);
+    const bool simulated = invocation.options.isSet(QStringLiteral("scenario"));
+    ScenarioPower live;
+    if (simulated) {
+        live = runToEnd(path, loaded, invocation.options.value(QStringLiteral("scenario")), *unit);
+        if (!live.drawable)
+            return live.status;
+    }
+    const QString error =
+        render::writeNetworkPicture(output, layout, {}, simulated ? &live.power : nullptr, title);
     if (!error.isEmpty()) {
         std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
         return UsageOrIo;
     }
-    return Ok;
+    return live.status;
 }
 
 int runRoundtrip(const Invocation& invocation) {

@@ -8,9 +8,12 @@
 
 namespace rs::cli {
 
-// `ladder FILE.sps --unit U [--sequence S --step N] --network K -o OUT.svg|.png`:
-// draws one network of a step (the unit's PLC code S<U>.0_0 by default) as
-// the editor does. Networks are numbered from 1 within their step.
+// `ladder FILE.sps --unit U [--sequence S --step N] --network K
+// [--scenario SCN.scn] -o OUT.svg|.png`: draws one network of a step (the
+// unit's PLC code S<U>.0_0 by default) as the editor does. Networks are
+// numbered from 1 within their step. With a scenario, the project is
+// compiled and the scenario run from power on, and the network is drawn
+// with the power it has when the scenario ends.
 int runLadder(const Invocation& invocation);
 
 // `roundtrip FILE.sps`: turns every network into the ladder model and back

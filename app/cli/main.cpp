@@ -81,7 +81,8 @@ const rs::cli::Verb kVerbs[] = {
      rs::cli::runVars},
     {"ladder",
      "ladder FILE.sps --unit U [--sequence S --step N] --network K -o OUT.svg|.png\n"
-     "                                 draw one network as the editor does",
+     "                                 draw one network as the editor does\n"
+     "  ladder FILE.sps ... --scenario SCN.scn  draw it in the state the scenario ends in",
      rs::cli::runLadder},
     {"roundtrip",
      "roundtrip FILE.sps             every network to the ladder model and back; print the text",
@@ -118,6 +119,10 @@ int run(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("network"),
                       QStringLiteral("ladder: the network's number in its step, from 1."),
                       QStringLiteral("K")});
+    parser.addOption({QStringLiteral("scenario"),
+                      QStringLiteral("ladder: run this scenario first and draw the power it "
+                                     "leaves."),
+                      QStringLiteral("SCN.scn")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

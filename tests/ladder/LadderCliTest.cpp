@@ -1,10 +1,13 @@
+#include "LadderStyle.h"
 #include "ManualNetworks.h"
 
+#include <QColor>
 #include <QDir>
 #include <QFile>
 #include <QImage>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -114,6 +117,100 @@ TEST(LadderCli, WhatTheProjectDoesNotHaveExits1) {
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_TRUE(run.err.contains("bad.sps:3:"));
     EXPECT_FALSE(QFile::exists(png));
+}
+
+// Step 1 of sequence 1 runs only after I0.3 took the sequence there.
+const QByteArray kTwoSteps = "! id_pluto:00=000000000000\n! pgm_pluto:00\n"
+                             "S0.0_0\nQ0.1 = I0.2\n"
+                             "S0.1_0\nJ(+1) = I0.3\n"
+                             "S0.1_1\nQ0.2 = I0.4\n";
+
+// The style's powered colour, as the SVG spells it.
+const QByteArray kPoweredInk = QColor(rs::render::LadderStyle{}.powered).name().toLatin1();
+
+QByteArray drawAfter(const QTemporaryDir& dir, const QString& project, const QByteArray& scenario,
+                     const QStringList& where) {
+    static int count = 0;
+    const QString name = QStringLiteral("s%1").arg(++count);
+    const QString scn = writeTemp(dir, name + ".scn", scenario);
+    const QString svg = dir.filePath(name + ".svg");
+    CliRun run =
+        cli(QStringList{"ladder", project, "--scenario", scn, "-o", svg, "--unit", "0"} + where);
+    EXPECT_EQ(run.exitCode, 0) << run.err.toStdString() << run.out.toStdString();
+    QFile file(svg);
+    EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << name.toStdString();
+    return file.readAll();
+}
+
+TEST(LadderCli, AfterAScenarioDrawsThePowerItLeaves) {
+    QTemporaryDir dir;
+    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QStringList step1 = {"--sequence", "1", "--step", "1", "--network", "1"};
+    const QByteArray ran =
+        drawAfter(dir, project, "set I0.3 1\nset I0.4 1\nexpect Q0.2 1 within 30ms\n", step1);
+    const QByteArray idle = drawAfter(dir, project, "run 30ms\nexpect Q0.2 0\n", step1);
+    EXPECT_NE(ran, idle);
+    EXPECT_TRUE(ran.contains(kPoweredInk)); // the active step's rung conducts
+    EXPECT_FALSE(idle.contains(kPoweredInk)) << "a step that is not active did not run";
+
+    const QStringList plcCode = {"--network", "1"};
+    const QByteArray on =
+        drawAfter(dir, project, "set I0.2 1\nexpect Q0.1 1 within 20ms\n", plcCode);
+    const QByteArray off = drawAfter(dir, project, "run 20ms\nexpect Q0.1 0\n", plcCode);
+    EXPECT_NE(on, off);
+    EXPECT_GT(on.count(kPoweredInk), off.count(kPoweredInk)); // the rail is live in both
+    const QString plain = dir.filePath("plain.svg");
+    ASSERT_EQ(cli({"ladder", project, "--unit", "0", "--network", "1", "-o", plain}).exitCode, 0);
+    QFile file(plain);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_FALSE(file.readAll().contains(kPoweredInk)); // without a scenario nothing runs
+}
+
+TEST(LadderCli, AFailedExpectationIsReportedAndTheEndStateStillDrawn) {
+    QTemporaryDir dir;
+    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString scn = writeTemp(dir, "wrong.scn", "set I0.2 1\nrun 20ms\nexpect Q0.1 0\n");
+    const QString svg = dir.filePath("wrong.svg");
+    CliRun run =
+        cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario", scn, "-o", svg});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(run.out.contains("wrong.scn:3:")) << run.out.toStdString();
+    QFile file(svg);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(file.readAll().contains(kPoweredInk));
+}
+
+TEST(LadderCli, AScenarioWithErrorsExits1AndDrawsNothing) {
+    QTemporaryDir dir;
+    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString svg = dir.filePath("x.svg");
+    const QString bad = writeTemp(dir, "bad.scn", "set I0.2 1\nexpect NoSuchName 1\n");
+    CliRun run =
+        cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario", bad, "-o", svg});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(run.err.contains(QRegularExpression("bad\\.scn:2:\\d+: error: ")))
+        << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(svg));
+
+    const QString broken = writeTemp(dir, "broken.sps",
+                                     "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n"
+                                     "Q0.1 = I0.2\nJ(+1) = I0.3\n");
+    const QString fine = writeTemp(dir, "fine.scn", "expect Q0.1 0\n");
+    run = cli({"ladder", broken, "--unit", "0", "--network", "1", "--scenario", fine, "-o", svg});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(run.err.contains("broken.sps:")) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(svg));
+}
+
+TEST(LadderCli, AScenarioThatCannotBeReadExits2) {
+    QTemporaryDir dir;
+    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString svg = dir.filePath("x.svg");
+    CliRun run = cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario",
+                      dir.filePath("missing.scn"), "-o", svg});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.err.contains("missing.scn")) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(svg));
 }
 
 // The round trip through the ladder model prints exactly the canonical text,

@@ -144,7 +144,7 @@ done
 man_text() { gzip -dc "$share/man/man1/$1.1.gz" | groff -man -Tutf8 -P-cbou 2>&1; }
 cli_page=$(man_text rungsmith-cli)
 for word in check compile format test 'vars export' 'vars import' ladder roundtrip \
-    --output --vcd --unit --sequence --step --network --no-io-warnings --help --version \
+    --output --vcd --unit --sequence --step --network --scenario --no-io-warnings --help --version \
     'EXIT STATUS'; do
     grep -qF -- "$word" <<<"$cli_page" || fail "the rungsmith-cli man page lacks '$word'"
 done

@@ -277,7 +277,7 @@ TEST_F(SimulationTest, WaveformRecordsTheRunAndExportsVcd) {
     click(QStringLiteral("I0.12"));
     for (int i = 0; i < 5; ++i)
         singleScan();
-    const ui::WaveformRecorder& recorder = session()->recorder();
+    const sim::WaveformRecorder& recorder = session()->recorder();
     EXPECT_EQ(recorder.endMs(), 50);
     const auto& traces = recorder.traces();
     const auto input = std::find_if(traces.begin(), traces.end(),

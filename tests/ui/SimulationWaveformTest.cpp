@@ -1,8 +1,8 @@
-#include "sim/WaveformRecorder.h"
 #include "sim/WaveformView.h"
 
 #include "compiler/Compiler.h"
 #include "sim/Simulation.h"
+#include "sim/WaveformRecorder.h"
 
 #include <QImage>
 #include <QScrollBar>
@@ -18,13 +18,13 @@ lang::Address addressOf(const char* word) {
 }
 
 // Q0.2 follows I0.0, which comes on at 50 ms; R0.1 counts the scans from then.
-ui::WaveformRecorder record() {
+sim::WaveformRecorder record() {
     const auto compiled = compiler::compileText("! id_pluto:00=000000000000\n! pgm_pluto:00\n"
                                                 "! I0.0,a_pulse\nS0.0_0\nQ0.2 = I0.0\n"
                                                 "(R0.1 += 1) = I0.0\n");
     EXPECT_EQ(compiled.errors(), 0);
     sim::Simulation simulation(compiled.images);
-    ui::WaveformRecorder recorder;
+    sim::WaveformRecorder recorder;
     recorder.add(addressOf("Q0.2"));
     recorder.add(addressOf("R0.1"));
     recorder.sample(simulation);
@@ -48,27 +48,8 @@ bool inked(const QImage& image, int x, int y, QRgb base) {
 
 } // namespace
 
-TEST(SimulationWaveform, RecordsChangesOnlyStampedWithTheNextScansTime) {
-    const ui::WaveformRecorder recorder = record();
-    EXPECT_EQ(recorder.startMs(), 0);
-    EXPECT_EQ(recorder.endMs(), 100);
-    const auto& q = recorder.traces()[0].changes;
-    ASSERT_EQ(q.size(), 2u);
-    EXPECT_EQ(q[1].timeMs, 60); // the scan at 50 ms sees I0.0 and ends at 60 ms
-    EXPECT_EQ(q[1].value, 1);
-    EXPECT_EQ(recorder.traces()[1].changes.back().value, 5);
-}
-
-TEST(SimulationWaveform, VcdHoldsEveryChange) {
-    const std::string vcd = record().vcd("t");
-    EXPECT_NE(vcd.find("$var wire 1 ! Q2 $end"), std::string::npos) << vcd;
-    EXPECT_NE(vcd.find("$var integer 32 \" R1 $end"), std::string::npos);
-    EXPECT_NE(vcd.find("#60\n1!\nb1 \"\n"), std::string::npos);
-    EXPECT_NE(vcd.find("#100\nb101 \"\n"), std::string::npos);
-}
-
 TEST(SimulationWaveform, BitsAreDrawnLowThenHighAndNumbersAsBands) {
-    const ui::WaveformRecorder recorder = record();
+    const sim::WaveformRecorder recorder = record();
     ui::WaveformView view(&recorder);
     view.resize(ui::WaveformView::kNameWidth + 420, 200);
     view.zoomToFit();

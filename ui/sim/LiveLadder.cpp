@@ -5,7 +5,6 @@
 #include <QStringList>
 
 #include <algorithm>
-#include <cstring>
 
 namespace rs::ui {
 
@@ -15,57 +14,15 @@ QString seconds(std::int64_t ms) {
     return QStringLiteral("%1 s").arg(static_cast<double>(ms) / 1000.0, 0, 'f', 2);
 }
 
-// Adds what the instructions [first, first + count) of one statement did to
-// its power; false when none of them ran.
-bool statementPower(const sim::UnitEngine& unit, std::size_t first, std::size_t count,
-                    render::StatementPower& power) {
-    const auto& code = unit.image().code;
-    const auto& conduction = unit.conduction();
-    bool ran = false;
-    for (std::size_t i = first; i < first + count; ++i) {
-        if (conduction[i] == sim::Conduction::NotRun)
-            continue;
-        ran = true;
-        const bool on = conduction[i] == sim::Conduction::On;
-        const std::uint16_t element = code[i].element;
-        if (element == 0)
-            power.energised = on; // the rung's start and its output; the output comes last
-        else if (on)
-            power.conducting.insert(element);
-        else
-            power.conducting.erase(element);
-    }
-    return ran;
-}
-
 } // namespace
-
-render::PowerSnapshot powerSnapshot(const sim::UnitEngine& unit) {
-    render::PowerSnapshot snapshot;
-    const auto& code = unit.image().code;
-    for (std::size_t first = 0; first < code.size();) {
-        std::size_t end = first + 1;
-        while (end < code.size() && code[end].statement == code[first].statement)
-            ++end;
-        auto [power, added] = snapshot.statements.try_emplace(code[first].statement);
-        if (!statementPower(unit, first, end - first, power->second) && added)
-            snapshot.statements.erase(power);
-        first = end;
-    }
-    return snapshot;
-}
 
 void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& unit) {
     m_unit = &unit;
     const auto& code = unit.image().code;
-    m_statements.clear();
+    m_instructions = code.size();
     m_boxes.clear();
     for (std::size_t i = 0; i < code.size(); ++i) {
         const compiler::Instruction& in = code[i];
-        if (m_statements.empty() || m_statements.back().number != in.statement ||
-            m_statements.back().first + m_statements.back().count != i)
-            m_statements.push_back({in.statement, i, 0});
-        ++m_statements.back().count;
         const bool timer = in.op == compiler::Op::Timer;
         const bool operand = (in.op == compiler::Op::LoadA || in.op == compiler::Op::LoadB ||
                               in.op == compiler::Op::Arith) &&
@@ -77,16 +34,17 @@ void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& u
             m_boxes.push_back({key, {}, {}});
         m_boxes.back().instructions.push_back(i);
     }
-    state.power = powerSnapshot(unit);
     state.annotations.clear();
     for (Box& box : m_boxes) {
         box.values.clear();
         readValues(unit, box);
         state.annotations[box.key] = textOf(unit, box);
     }
-    const auto& conduction = unit.conduction();
-    m_conduction.resize(conduction.size());
-    std::memcpy(m_conduction.data(), conduction.data(), conduction.size());
+}
+
+void LiveLadderBuilder::reset() {
+    m_unit = nullptr;
+    m_power.reset();
 }
 
 bool LiveLadderBuilder::readValues(const sim::UnitEngine& unit, Box& box) const {
@@ -139,33 +97,13 @@ void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& si
     const sim::UnitEngine* unit = simulation.unit(station);
     if (!unit) {
         state = LadderLiveState{};
-        m_unit = nullptr;
+        reset();
         return;
     }
-    if (unit != m_unit || m_conduction.size() != unit->conduction().size()) {
+    m_power.update(state.power, *unit);
+    if (unit != m_unit || m_instructions != unit->image().code.size()) {
         rebuild(state, *unit);
     } else {
-        const auto* now = reinterpret_cast<const std::uint8_t*>(unit->conduction().data());
-        std::uint8_t* before = m_conduction.data();
-        const std::size_t size = m_conduction.size();
-        // Only where the marks differ: usually a few statements of thousands.
-        std::size_t at = 0;
-        while (at < size) {
-            const std::size_t differs = static_cast<std::size_t>(
-                std::mismatch(before + at, before + size, now + at).first - before);
-            if (differs == size)
-                break;
-            const auto statement = std::prev(std::upper_bound(
-                m_statements.begin(), m_statements.end(), differs,
-                [](std::size_t index, const Statement& s) { return index < s.first; }));
-            std::memcpy(before + statement->first, now + statement->first, statement->count);
-            render::StatementPower power;
-            if (statementPower(*unit, statement->first, statement->count, power))
-                state.power.statements[statement->number] = std::move(power);
-            else
-                state.power.statements.erase(statement->number);
-            at = statement->first + statement->count;
-        }
         for (Box& box : m_boxes)
             if (readValues(*unit, box))
                 state.annotations[box.key] = textOf(*unit, box);

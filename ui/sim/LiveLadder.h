@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LivePower.h"
 #include "ladder/LadderLiveState.h"
 
 #include <vector>
@@ -11,23 +12,17 @@ class UnitEngine;
 
 namespace rs::ui {
 
-// The ladder page's picture of one unit after the last scan, taken from what
-// the engine reported (per-instruction conduction, timers, memory), never
-// from evaluating the logic again.
-
-// Per statement that ran, the elements with power at their right side and
-// whether the output was driven: the last instruction of an element tells.
-render::PowerSnapshot powerSnapshot(const sim::UnitEngine& unit);
-
 // Keeps a page's live state of station `station` up to date scan after
-// scan (power, box values, forces, active steps), touching only the
-// statements whose conduction changed and the boxes whose values did: a
-// page of thousands of networks costs little when little changes.
+// scan, from what the engine reported (conduction, timers, memory), never
+// from evaluating the logic again: power (render::LivePower), box values,
+// forces, active steps. It touches only the statements whose conduction
+// changed and the boxes whose values did: a page of thousands of networks
+// costs little when little changes.
 class LiveLadderBuilder {
 public:
     void update(LadderLiveState& state, const sim::Simulation& simulation, int station);
     // The next update builds everything afresh (a new simulation began).
-    void reset() { m_unit = nullptr; }
+    void reset();
 
 private:
     struct Box {
@@ -35,20 +30,15 @@ private:
         std::vector<std::size_t> instructions; // the box's timer or operands, in code order
         std::vector<std::int64_t> values;      // what the text shows now
     };
-    struct Statement {
-        std::uint32_t number = 0;
-        std::size_t first = 0;
-        std::size_t count = 0;
-    };
     void rebuild(LadderLiveState& state, const sim::UnitEngine& unit);
     // Reads the box's values again; whether any changed.
     bool readValues(const sim::UnitEngine& unit, Box& box) const;
     QString textOf(const sim::UnitEngine& unit, const Box& box) const;
 
     const sim::UnitEngine* m_unit = nullptr;
-    std::vector<std::uint8_t> m_conduction; // as of the last update
-    std::vector<Statement> m_statements;
+    std::size_t m_instructions = 0; // in the code the boxes were found in
     std::vector<Box> m_boxes;
+    render::LivePower m_power;
 };
 
 } // namespace rs::ui

@@ -45,7 +45,7 @@ struct SimulationSession::ScenarioJob {
     QString path;
     sim::Scenario scenario;
     std::unique_ptr<sim::Simulation> simulation;
-    WaveformRecorder recorder;
+    sim::WaveformRecorder recorder;
     std::int64_t totalMs = 0;
     sim::ScenarioReport report;
     std::atomic<bool> cancel = false;

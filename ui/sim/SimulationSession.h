@@ -3,11 +3,11 @@
 // Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
 // it needs only the names.
 #ifndef Q_MOC_RUN
-#include "WaveformRecorder.h"
 #include "compiler/Image.h"
 #include "sim/RealTimePacer.h"
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
+#include "sim/WaveformRecorder.h"
 #endif
 
 #include <QElapsedTimer>
@@ -89,8 +89,8 @@ public:
     QStringList operandWords() const;
 
     // What the waveform shows.
-    WaveformRecorder& recorder() { return m_recorder; }
-    const WaveformRecorder& recorder() const { return m_recorder; }
+    sim::WaveformRecorder& recorder() { return m_recorder; }
+    const sim::WaveformRecorder& recorder() const { return m_recorder; }
 
     struct ScenarioResult {
         struct Line {
@@ -147,7 +147,7 @@ private:
     std::vector<compiler::UnitImage> m_images;
     std::unique_ptr<sim::Simulation> m_simulation;
     sim::RealTimePacer m_pacer;
-    WaveformRecorder m_recorder;
+    sim::WaveformRecorder m_recorder;
     QElapsedTimer m_wall;
     QTimer m_ticks;
     std::int64_t m_lastUpdateMs = 0;

@@ -1,7 +1,7 @@
 #include "WaveformView.h"
 
 #include "StatusColors.h"
-#include "WaveformRecorder.h"
+#include "sim/WaveformRecorder.h"
 
 #include <QMouseEvent>
 #include <QPainter>
@@ -46,7 +46,7 @@ std::int64_t tickStep(double minimum) {
 
 } // namespace
 
-WaveformView::WaveformView(const WaveformRecorder* recorder, QWidget* parent)
+WaveformView::WaveformView(const sim::WaveformRecorder* recorder, QWidget* parent)
     : QAbstractScrollArea(parent), m_recorder(recorder) {
     setObjectName(QStringLiteral("waveformView"));
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
@@ -199,7 +199,7 @@ void WaveformView::paintEvent(QPaintEvent*) {
     int y = kRulerHeight;
     for (int row = verticalScrollBar()->value();
          row < static_cast<int>(traces.size()) && y < viewport()->height(); ++row) {
-        const WaveformRecorder::Trace& trace = traces[static_cast<std::size_t>(row)];
+        const sim::WaveformRecorder::Trace& trace = traces[static_cast<std::size_t>(row)];
         const QRect nameRect(0, y, kNameWidth, kRowHeight);
         painter.fillRect(nameRect, row == m_selected ? pal.color(QPalette::Highlight)
                                                      : pal.color(QPalette::Window));
@@ -218,7 +218,7 @@ void WaveformView::paintEvent(QPaintEvent*) {
         const auto& changes = trace.changes;
         auto it = std::upper_bound(
             changes.begin(), changes.end(), first,
-            [](std::int64_t t, const WaveformRecorder::Change& c) { return t < c.timeMs; });
+            [](std::int64_t t, const sim::WaveformRecorder::Change& c) { return t < c.timeMs; });
         if (it != changes.begin())
             --it;
         const double high = y + 5;

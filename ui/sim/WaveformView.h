@@ -9,9 +9,11 @@ namespace rs::lang {
 struct Address;
 }
 
-namespace rs::ui {
-
+namespace rs::sim {
 class WaveformRecorder;
+}
+
+namespace rs::ui {
 
 // Draws what the recorder holds over virtual time: bits as 0/1 traces,
 // numbers as bands with their value. Time runs left to right; the scroll bar
@@ -24,7 +26,7 @@ public:
     static constexpr int kRulerHeight = 22;
     static constexpr int kRowHeight = 28;
 
-    explicit WaveformView(const WaveformRecorder* recorder, QWidget* parent = nullptr);
+    explicit WaveformView(const sim::WaveformRecorder* recorder, QWidget* parent = nullptr);
 
     // The symbolic name shown beside a trace's address, empty for none.
     void setNames(std::function<QString(const lang::Address&)> names);
@@ -60,7 +62,7 @@ private:
     double xOf(std::int64_t timeMs) const;
     void paintRuler(QPainter& painter, int width);
 
-    const WaveformRecorder* m_recorder;
+    const sim::WaveformRecorder* m_recorder;
     std::function<QString(const lang::Address&)> m_names;
     double m_msPerPixel = 1.0;
     bool m_follow = true;

@@ -1,14 +1,14 @@
 #include "WaveformRecorder.h"
 
-#include "sim/Simulation.h"
-#include "sim/VcdTrace.h"
+#include "Simulation.h"
+#include "VcdTrace.h"
 
 #include <algorithm>
 #include <set>
 
-namespace rs::ui {
+namespace rs::sim {
 
-bool WaveformRecorder::add(const lang::Address& address, const sim::Simulation* simulation) {
+bool WaveformRecorder::add(const lang::Address& address, const Simulation* simulation) {
     if (contains(address))
         return false;
     m_traces.push_back({address, {}});
@@ -37,7 +37,7 @@ void WaveformRecorder::clear() {
     m_startMs = m_endMs = 0;
 }
 
-void WaveformRecorder::sample(const sim::Simulation& simulation) {
+void WaveformRecorder::sample(const Simulation& simulation) {
     const std::int64_t now = simulation.timeMs();
     if (!m_sampled) {
         m_startMs = now;
@@ -64,7 +64,7 @@ std::string WaveformRecorder::vcd(const std::string& title) const {
         for (const Change& change : trace->changes)
             times.insert(change.timeMs);
     }
-    sim::VcdTrace out(addresses);
+    VcdTrace out(addresses);
     // Replays the changes in time order; a variable added during the run has
     // its first recorded value before that.
     std::vector<std::size_t> next(sorted.size(), 0);
@@ -83,4 +83,4 @@ std::string WaveformRecorder::vcd(const std::string& title) const {
     return out.text(title);
 }
 
-} // namespace rs::ui
+} // namespace rs::sim

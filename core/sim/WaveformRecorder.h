@@ -7,13 +7,11 @@
 #include <vector>
 
 namespace rs::sim {
-class Simulation;
-}
 
-namespace rs::ui {
+class Simulation;
 
 // What chosen variables did over virtual time, scan by scan, kept as their
-// changes only: the waveform panel draws it and exports it as VCD. A sample
+// changes only: the IDE's waveform panel draws it and exports it as VCD. A sample
 // is stamped as the VCD trace of a scenario stamps it: power on at its time,
 // each scan's results at the time the next scan starts.
 class WaveformRecorder {
@@ -29,7 +27,7 @@ public:
 
     // Records the variable from the next sample on, or from the last one when
     // the simulation is given; false when it is recorded already.
-    bool add(const lang::Address& address, const sim::Simulation* simulation = nullptr);
+    bool add(const lang::Address& address, const Simulation* simulation = nullptr);
     void remove(const lang::Address& address);
     // Stops recording every variable: a large run's traces cost time each scan.
     void removeAll();
@@ -37,7 +35,7 @@ public:
     // Forgets what was recorded (power on again, a new run) but keeps the variables.
     void clear();
 
-    void sample(const sim::Simulation& simulation);
+    void sample(const Simulation& simulation);
 
     const std::vector<Trace>& traces() const { return m_traces; }
     // The time of the first and the last sample; equal when nothing was recorded.
@@ -55,4 +53,4 @@ private:
     bool m_sampled = false;
 };
 
-} // namespace rs::ui
+} // namespace rs::sim

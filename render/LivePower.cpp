@@ -1,0 +1,96 @@
+#include "LivePower.h"
+
+#include "sim/UnitEngine.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace rs::render {
+
+namespace {
+
+// Adds what the instructions [first, first + count) of one statement did to
+// its power; false when none of them ran.
+bool statementPower(const sim::UnitEngine& unit, std::size_t first, std::size_t count,
+                    StatementPower& power) {
+    const auto& code = unit.image().code;
+    const auto& conduction = unit.conduction();
+    bool ran = false;
+    for (std::size_t i = first; i < first + count; ++i) {
+        if (conduction[i] == sim::Conduction::NotRun)
+            continue;
+        ran = true;
+        const bool on = conduction[i] == sim::Conduction::On;
+        const std::uint16_t element = code[i].element;
+        if (element == 0)
+            power.energised = on; // the rung's start and its output; the output comes last
+        else if (on)
+            power.conducting.insert(element);
+        else
+            power.conducting.erase(element);
+    }
+    return ran;
+}
+
+} // namespace
+
+PowerSnapshot powerSnapshot(const sim::UnitEngine& unit) {
+    PowerSnapshot snapshot;
+    const auto& code = unit.image().code;
+    for (std::size_t first = 0; first < code.size();) {
+        std::size_t end = first + 1;
+        while (end < code.size() && code[end].statement == code[first].statement)
+            ++end;
+        auto [power, added] = snapshot.statements.try_emplace(code[first].statement);
+        if (!statementPower(unit, first, end - first, power->second) && added)
+            snapshot.statements.erase(power);
+        first = end;
+    }
+    return snapshot;
+}
+
+void LivePower::rebuild(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
+    m_unit = &unit;
+    const auto& code = unit.image().code;
+    m_statements.clear();
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        if (m_statements.empty() || m_statements.back().number != code[i].statement ||
+            m_statements.back().first + m_statements.back().count != i)
+            m_statements.push_back({code[i].statement, i, 0});
+        ++m_statements.back().count;
+    }
+    snapshot = powerSnapshot(unit);
+    const auto& conduction = unit.conduction();
+    m_conduction.resize(conduction.size());
+    std::memcpy(m_conduction.data(), conduction.data(), conduction.size());
+}
+
+void LivePower::update(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
+    if (&unit != m_unit || m_conduction.size() != unit.conduction().size()) {
+        rebuild(snapshot, unit);
+        return;
+    }
+    const auto* now = reinterpret_cast<const std::uint8_t*>(unit.conduction().data());
+    std::uint8_t* before = m_conduction.data();
+    const std::size_t size = m_conduction.size();
+    // Only where the marks differ: usually a few statements of thousands.
+    std::size_t at = 0;
+    while (at < size) {
+        const std::size_t differs = static_cast<std::size_t>(
+            std::mismatch(before + at, before + size, now + at).first - before);
+        if (differs == size)
+            break;
+        const auto statement = std::prev(std::upper_bound(
+            m_statements.begin(), m_statements.end(), differs,
+            [](std::size_t index, const Statement& s) { return index < s.first; }));
+        std::memcpy(before + statement->first, now + statement->first, statement->count);
+        StatementPower power;
+        if (statementPower(unit, statement->first, statement->count, power))
+            snapshot.statements[statement->number] = std::move(power);
+        else
+            snapshot.statements.erase(statement->number);
+        at = statement->first + statement->count;
+    }
+}
+
+} // namespace rs::render
