@@ -1,5 +1,6 @@
 #include "ElementIcon.h"
 
+#include "LadderStyle.h"
 #include "NetworkPainter.h"
 #include "ladder/ElementVocabulary.h"
 
