@@ -1,5 +1,8 @@
 #include "CompileOutput.h"
 
+#include "compiler/Compiler.h"
+#include "project/TextPlace.h"
+
 #include <QHeaderView>
 #include <QIcon>
 #include <QPainter>

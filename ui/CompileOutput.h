@@ -1,13 +1,13 @@
 #pragma once
 
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
-#ifndef Q_MOC_RUN
-#include "compiler/Compiler.h"
-#include "project/TextPlace.h"
-#endif
-
 #include <QTreeWidget>
+
+namespace rs::compiler {
+struct CompileResult;
+}
+namespace rs::project {
+struct TextPlace;
+}
 
 namespace rs::ui {
 

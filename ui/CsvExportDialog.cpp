@@ -1,5 +1,7 @@
 #include "CsvExportDialog.h"
 
+#include "project/VariableCsv.h"
+
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDialogButtonBox>

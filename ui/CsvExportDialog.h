@@ -1,16 +1,14 @@
 #pragma once
 
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
-#ifndef Q_MOC_RUN
-#include "project/VariableCsv.h"
-#endif
-
 #include <QDialog>
 
 class QButtonGroup;
 class QComboBox;
 class QLineEdit;
+
+namespace rs::project {
+struct CsvExportOptions;
+}
 
 namespace rs::ui {
 

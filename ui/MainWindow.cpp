@@ -239,8 +239,8 @@ void MainWindow::createActions() {
     connect(m_redoAction, &QAction::triggered, this, &MainWindow::redo);
 
     // The clipboard commands act on whatever text field has the focus.
-    auto forward = [this](const char* slot) {
-        return [this, slot] {
+    auto forward = [](const char* slot) {
+        return [slot] {
             if (QWidget* focus = QApplication::focusWidget())
                 QMetaObject::invokeMethod(focus, slot);
         };

@@ -3,8 +3,8 @@
 #include "PageRef.h"
 #include "Preferences.h"
 #include "RecentFiles.h"
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
+// Holds core types by value, so their headers come in here; Qt 6.4's moc cannot
+// parse the C++20 standard headers they bring in (<concepts>) and needs only the names.
 #ifndef Q_MOC_RUN
 #include "compiler/Compiler.h"
 #include "lang/Diagnostic.h"

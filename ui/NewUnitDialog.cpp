@@ -1,6 +1,8 @@
 #include "NewUnitDialog.h"
 
 #include "UnitSettingsForm.h"
+#include "project/Project.h"
+#include "project/UnitSettings.h"
 
 #include <QDialogButtonBox>
 #include <QLabel>

@@ -1,15 +1,13 @@
 #pragma once
 
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
-#ifndef Q_MOC_RUN
-#include "project/Project.h"
-#include "project/UnitSettings.h"
-#endif
-
 #include <QDialog>
 
 class QDialogButtonBox;
+
+namespace rs::project {
+struct Project;
+struct UnitSettings;
+} // namespace rs::project
 
 namespace rs::ui {
 

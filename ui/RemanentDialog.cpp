@@ -1,5 +1,6 @@
 #include "RemanentDialog.h"
 
+#include "lang/Address.h"
 #include "project/RemanentVariables.h"
 
 #include <QCheckBox>

@@ -1,18 +1,18 @@
 #pragma once
 
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
-#ifndef Q_MOC_RUN
-#include "lang/Address.h"
-#endif
-
 #include <QDialog>
 
+#include <cstdint>
 #include <set>
 #include <vector>
 
 class QCheckBox;
 class QLabel;
+
+namespace rs::lang {
+enum class AddressKind : std::uint8_t;
+struct Address;
+} // namespace rs::lang
 
 namespace rs::ui {
 

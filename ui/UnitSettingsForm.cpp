@@ -1,6 +1,7 @@
 #include "UnitSettingsForm.h"
 
 #include "StatusColors.h"
+#include "project/UnitSettings.h"
 
 #include <QButtonGroup>
 #include <QComboBox>

@@ -1,11 +1,5 @@
 #pragma once
 
-// Qt 6.4's moc cannot parse the C++20 standard headers that the core brings in;
-// it needs only the names.
-#ifndef Q_MOC_RUN
-#include "project/UnitSettings.h"
-#endif
-
 #include <QWidget>
 
 #include <vector>
@@ -15,6 +9,10 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QRadioButton;
+
+namespace rs::project {
+struct UnitSettings;
+}
 
 namespace rs::ui {
 

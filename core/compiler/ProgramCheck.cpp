@@ -1,5 +1,6 @@
 #include "ProgramCheck.h"
 
+#include "lang/Keywords.h"
 #include "lang/Printer.h"
 #include "lang/SymbolicName.h"
 
@@ -571,8 +572,8 @@ private:
     void checkAnalogUse(const Operand& operand, const TerminalDeclaration& declared, Use use) {
         const bool value =
             std::any_of(declared.options.begin(), declared.options.end(), [](auto& o) {
-                return o == "voltage" || o == "current" || o == "counter_up" ||
-                       o == "counter_updown";
+                return o == lang::kVoltageOption || o == lang::kCurrentOption ||
+                       o == lang::kCounterUpOption || o == lang::kCounterUpDownOption;
             });
         const std::string line = std::to_string(declared.location.line);
         if (value && use == Use::ReadBit)

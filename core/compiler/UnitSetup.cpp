@@ -15,7 +15,8 @@ std::string two(int station) {
 }
 
 bool isPulse(const std::string& option) {
-    return option == "a_pulse" || option == "b_pulse" || option == "c_pulse";
+    return option == lang::kAPulseOption || option == lang::kBPulseOption ||
+           option == lang::kCPulseOption;
 }
 
 std::string terminalName(const lang::Address& address) {
@@ -181,25 +182,27 @@ private:
             }
             seen.push_back(option);
         }
-        const auto pulses = std::count_if(io.options.begin(), io.options.end(),
-                                          [](auto& o) { return isPulse(o) || o == "static"; });
+        const auto pulses = std::count_if(io.options.begin(), io.options.end(), [](auto& o) {
+            return isPulse(o) || o == lang::kStaticOption;
+        });
         auto signalRules = [&](bool allowSwitches, bool allowCrossTalk) {
             if (pulses != 1) {
                 error(at, name + " needs exactly one signal: a_pulse, b_pulse, c_pulse or static");
                 return false;
             }
             for (const auto& option : io.options) {
-                if (isPulse(option) || option == "static")
+                if (isPulse(option) || option == lang::kStaticOption)
                     continue;
-                if ((option == "non_inv" || option == "no_filt") && allowSwitches) {
-                    if (option == "non_inv" && has("static")) {
+                if ((option == lang::kNonInvertedOption || option == lang::kNoFilterOption) &&
+                    allowSwitches) {
+                    if (option == lang::kNonInvertedOption && has(lang::kStaticOption)) {
                         error(at, name + ": non_inv applies to dynamic signals (a_pulse, b_pulse, "
                                          "c_pulse), not to static");
                         return false;
                     }
                     continue;
                 }
-                if (option == "x_talk" && allowCrossTalk && !has("static"))
+                if (option == lang::kCrossTalkOption && allowCrossTalk && !has(lang::kStaticOption))
                     continue;
                 error(at, name + " cannot take the option '" + option + "'");
                 return false;
@@ -216,7 +219,7 @@ private:
             if (!signalRules(true, target::contains(type.configurableTerminals, a.index)))
                 return false;
             // The manual's footnote to I_.10..I_.17.
-            if (has("static") && a.index >= 10 && a.index <= 17)
+            if (has(lang::kStaticOption) && a.index >= 10 && a.index <= 17)
                 warning(at, name + ",static does not fulfil category 4 (EN 954-1) as a stand-alone "
                                    "input");
             return true;
@@ -225,7 +228,7 @@ private:
                 error(at, typeName + " has no output " + name);
                 return false;
             }
-            if ((a.index == 2 || a.index == 3) && has("no_test_pulse")) {
+            if ((a.index == 2 || a.index == 3) && has(lang::kNoTestPulseOption)) {
                 if (!type.testPulsesCanBeDisabled ||
                     !target::contains(type.globalSafetyOutputs, a.index)) {
                     error(at, "the test pulses of " + name + " cannot be disabled on " + typeName);
@@ -249,7 +252,7 @@ private:
                 error(at, typeName + " has no terminal " + name);
                 return false;
             }
-            if (pulses != 1 || has("static") || io.options.size() != 1) {
+            if (pulses != 1 || has(lang::kStaticOption) || io.options.size() != 1) {
                 error(at,
                       name +
                           ", an illuminated push button, takes one of a_pulse, b_pulse, c_pulse");
@@ -261,8 +264,8 @@ private:
                 error(at, typeName + " has no analogue input " + name);
                 return false;
             }
-            const bool counter = has("counter_up") || has("counter_updown");
-            const bool analogue = has("voltage") || has("current");
+            const bool counter = has(lang::kCounterUpOption) || has(lang::kCounterUpDownOption);
+            const bool analogue = has(lang::kVoltageOption) || has(lang::kCurrentOption);
             if (counter && !target::contains(type.counterInputs, a.index)) {
                 error(at, name + " cannot count pulses on " + typeName +
                               (type.counterInputs.empty() ? "" : " (only IA0..IA3)"));

@@ -1,6 +1,7 @@
 #include "ElementVocabulary.h"
 
 #include "LadderToText.h"
+#include "lang/Keywords.h"
 
 #include <algorithm>
 
@@ -112,7 +113,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isEdge(n, false, true);
          }},
         {ElementKind::OnDelayTimer, false, Shape::Box, OperandRole::Preset, false, true, "O",
-         "[TON]", "TON",
+         "[TON]", lang::timerWord(lang::TimerSpelling::TON),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::OnDelay, lang::TimerSpelling::TON);
          },
@@ -120,7 +121,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::OnDelay);
          }},
         {ElementKind::PulseTimer, false, Shape::Box, OperandRole::Preset, false, true, "U", "[TPS]",
-         "TPS",
+         lang::timerWord(lang::TimerSpelling::TPS),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::Pulse, lang::TimerSpelling::TPS);
          },
@@ -128,7 +129,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::Pulse);
          }},
         {ElementKind::OffDelayTimer, false, Shape::Box, OperandRole::Preset, false, true, "F",
-         "[TOF]", "TOF",
+         "[TOF]", lang::timerWord(lang::TimerSpelling::TOF),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::OffDelay, lang::TimerSpelling::TOF);
          },
@@ -136,7 +137,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::OffDelay);
          }},
         {ElementKind::Comparison, false, Shape::Box, OperandRole::Register, true, true, "=", "[>=]",
-         ">=",
+         lang::compareWord(lang::CompareOp::GreaterEqual),
          [](const ElementParts& p) -> ElementNode {
              Expr expr;
              expr.kind = ExprKind::Compare;
@@ -192,7 +193,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isStatement(n, StatementKind::SequenceReset);
          }},
         {ElementKind::Arithmetic, true, Shape::Box, OperandRole::TargetRegister, true, false, "+",
-         "[+=]", "+=",
+         "[+=]", lang::assignWord(lang::AssignOp::AddAssign),
          [](const ElementParts& p) -> ElementNode {
              Statement made = statement(p, StatementKind::Assign);
              made.target = {};

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -52,11 +53,11 @@ struct ElementKindInfo {
     bool output; // stands at a rung's right end
     Shape shape;
     OperandRole operandRole;
-    bool hasValue;         // besides its operand: a comparison's, an assignment's
-    bool canNegate;        // passes power when false: /TON(t), /(R0.1>=5)
-    const char* insertKey; // the key inserting it, as QKeySequence spells it
-    const char* picture;   // the symbol in characters, for a toolbar button
-    const char* boxWord;   // what a box shows when it stands for the kind alone
+    bool hasValue;            // besides its operand: a comparison's, an assignment's
+    bool canNegate;           // passes power when false: /TON(t), /(R0.1>=5)
+    const char* insertKey;    // the key inserting it, as QKeySequence spells it
+    const char* picture;      // the symbol in characters, for a toolbar button
+    std::string_view boxWord; // what a box shows when it stands for the kind alone
     ElementNode (*make)(const ElementParts& parts);
     bool (*reads)(const ElementNode& node); // whether the node is of the kind
 };

@@ -140,6 +140,18 @@ int instructionSetOf(std::string_view word) {
     return 0;
 }
 
+std::string canonicalUnitType(std::string_view type) {
+    const std::string upper = toUpper(type);
+    for (auto known : kUnitTypeWords)
+        if (toUpper(known) == upper)
+            return std::string(known);
+    return {};
+}
+
+bool isKnownIoOption(std::string_view option) {
+    return std::find(kIoOptionWords.begin(), kIoOptionWords.end(), option) != kIoOptionWords.end();
+}
+
 std::string_view compareWord(CompareOp op) {
     return wordOf(kCompareWords, op);
 }

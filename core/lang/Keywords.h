@@ -2,7 +2,9 @@
 
 #include "Ast.h"
 
+#include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +40,33 @@ const std::vector<std::string_view>& declarationWords();
 // "is2" / "is3" after a unit type; 0 for a word that is neither.
 std::string_view instructionSetWord(int instructionSet);
 int instructionSetOf(std::string_view word);
+
+// Unit types after "type_pluto:NN=", in the order of rs::target::UnitType, which
+// takes its names from here.
+inline constexpr std::array<std::string_view, 13> kUnitTypeWords{
+    "A16", "A20", "B16", "B20", "S20", "B22", "D20", "O2", "B46", "S46", "D45", "ASi", "B42_ASi"};
+// Canonical spelling of a unit type ("b42_asi" -> "B42_ASi"), empty if unknown.
+std::string canonicalUnitType(std::string_view type);
+
+// I/O options after "! I0.5,": lower case, as written.
+inline constexpr std::string_view kStaticOption = "static";
+inline constexpr std::string_view kAPulseOption = "a_pulse";
+inline constexpr std::string_view kBPulseOption = "b_pulse";
+inline constexpr std::string_view kCPulseOption = "c_pulse";
+inline constexpr std::string_view kNonInvertedOption = "non_inv";
+inline constexpr std::string_view kNoFilterOption = "no_filt";
+inline constexpr std::string_view kCrossTalkOption = "x_talk";
+inline constexpr std::string_view kNoTestPulseOption = "no_test_pulse";
+inline constexpr std::string_view kVoltageOption = "voltage";
+inline constexpr std::string_view kCurrentOption = "current";
+inline constexpr std::string_view kCounterUpOption = "counter_up";
+inline constexpr std::string_view kCounterUpDownOption = "counter_updown";
+inline constexpr std::array kIoOptionWords{
+    kAPulseOption,      kBPulseOption,   kCPulseOption,    kStaticOption,
+    kNonInvertedOption, kNoFilterOption, kCrossTalkOption, kNoTestPulseOption,
+    kVoltageOption,     kCurrentOption,  kCounterUpOption, kCounterUpDownOption};
+// Whether a lower-case word is one of kIoOptionWords.
+bool isKnownIoOption(std::string_view option);
 
 // Operators.
 std::string_view compareWord(CompareOp op); // "=", ">", "<", ">=", "<="

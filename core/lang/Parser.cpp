@@ -1,5 +1,6 @@
 #include "Parser.h"
 
+#include "Keywords.h"
 #include "Lexer.h"
 #include "TextCase.h"
 
@@ -10,12 +11,28 @@ namespace rs::lang {
 
 namespace {
 
-constexpr std::array<std::string_view, 13> kUnitTypes{
-    "A16", "A20", "B16", "B20", "S20", "B22", "D20", "O2", "B46", "S46", "D45", "ASi", "B42_ASi"};
+// "A16 A20 ... B42_ASi": the unit types as a message lists them.
+std::string unitTypeList() {
+    std::string list;
+    for (auto word : kUnitTypeWords)
+        list += (list.empty() ? "" : " ") + std::string(word);
+    return list;
+}
 
-constexpr std::array<std::string_view, 12> kIoOptions{
-    "a_pulse", "b_pulse",       "c_pulse", "static",  "non_inv",    "no_filt",
-    "x_talk",  "no_test_pulse", "voltage", "current", "counter_up", "counter_updown"};
+// "a_pulse, b_pulse, ... counter_up or counter_updown".
+std::string ioOptionList() {
+    std::string list;
+    for (std::size_t i = 0; i < kIoOptionWords.size(); ++i)
+        list += (i == 0                           ? ""
+                 : i + 1 == kIoOptionWords.size() ? " or "
+                                                  : ", ") +
+                std::string(kIoOptionWords[i]);
+    return list;
+}
+
+bool isWord(std::string_view lower, std::string_view keyword) {
+    return lower == toLower(keyword);
+}
 
 // Thrown inside one line; the line is reported and skipped.
 struct LineError {
@@ -199,7 +216,8 @@ private:
 
     void parseDirective(const Token& dollar) {
         if (m_section != Section::Preamble)
-            failAt(dollar, "a '$' directive belongs at the top of the file, before '! pgm_pluto'");
+            failAt(dollar, "a '$' directive belongs at the top of the file, before '! " +
+                               std::string(kProgramKeyword) + "'");
         Token keyword = expect(TokenKind::Word, "a directive name such as 'name' after '$'");
         Directive directive{toLower(keyword.text), std::string(takeFreeText())};
         if (directive.keyword != "name")
@@ -229,8 +247,8 @@ private:
 
     void parseStepHeader(const Token& token, StepAddress step) {
         if (m_document.units.empty())
-            failAt(token, "step " + toString(step) +
-                              " before '! pgm_pluto': declare which unit the code is for first");
+            failAt(token, "step " + toString(step) + " before '! " + std::string(kProgramKeyword) +
+                              "': declare which unit the code is for first");
         auto& unit = m_document.units.back();
         if (step.unit != unit.station())
             failAt(token, "step " + toString(step) + " is in the code of unit " +
@@ -250,13 +268,9 @@ private:
         std::string lower = toLower(word.text);
         Declaration declaration;
         declaration.location = loc(bang);
-        if (lower == "id_pluto" || lower == "id_pluto_double" || lower == "id_pluto_asi" ||
-            lower == "id_pluto_b42_asi") {
+        if (const auto family = familyOfIdKeyword(lower)) {
             IdDeclaration id;
-            id.family = lower == "id_pluto"          ? UnitFamily::Pluto
-                        : lower == "id_pluto_double" ? UnitFamily::Double
-                        : lower == "id_pluto_asi"    ? UnitFamily::ASi
-                                                     : UnitFamily::B42ASi;
+            id.family = *family;
             id.station = parseStation();
             expect(TokenKind::Equal, "'=' and the 12-digit IDFIX number");
             if (!at(TokenKind::Word) && !at(TokenKind::Number))
@@ -272,7 +286,7 @@ private:
             id.idfix = toUpper(idfix.text);
             declaration.body = std::move(id);
             requireDeclarationSection(bang);
-        } else if (lower == "type_pluto") {
+        } else if (isWord(lower, kTypeKeyword)) {
             TypeDeclaration type;
             type.station = parseStation();
             expect(TokenKind::Equal, "'=' and a unit type such as B46");
@@ -282,22 +296,21 @@ private:
             take();
             type.type = canonicalUnitType(typeWord.text);
             if (type.type.empty())
-                failAt(typeWord,
-                       "unknown unit type '" + std::string(typeWord.text) +
-                           "'; expected one of A16 A20 B16 B20 S20 B22 D20 O2 B46 S46 D45 "
-                           "ASi B42_ASi");
+                failAt(typeWord, "unknown unit type '" + std::string(typeWord.text) +
+                                     "'; expected one of " + unitTypeList());
             if (at(TokenKind::Comma)) {
                 take();
                 Token set = current();
-                std::string setText = at(TokenKind::Word) ? toLower(set.text) : std::string();
-                if (setText != "is2" && setText != "is3")
-                    fail("expected the instruction set 'is2' or 'is3' after ','");
+                const int instructionSet = at(TokenKind::Word) ? instructionSetOf(set.text) : 0;
+                if (instructionSet == 0)
+                    fail("expected the instruction set '" + std::string(instructionSetWord(2)) +
+                         "' or '" + std::string(instructionSetWord(3)) + "' after ','");
                 take();
-                type.instructionSet = setText == "is2" ? 2 : 3;
+                type.instructionSet = instructionSet;
             }
             declaration.body = std::move(type);
             requireDeclarationSection(bang);
-        } else if (lower == "pgm_pluto") {
+        } else if (isWord(lower, kProgramKeyword)) {
             ProgramDeclaration program{parseStation()};
             declaration.body = program;
             auto comment = finishLine("the declaration");
@@ -313,10 +326,10 @@ private:
             if (address.shape == AddressWord::Shape::Malformed)
                 failAt(word, address.error);
             if (address.shape != AddressWord::Shape::Variable)
-                failAt(word,
-                       "expected an address (such as I0.5) or id_pluto, type_pluto, pgm_pluto "
-                       "after '!', found '" +
-                           std::string(word.text) + "'");
+                failAt(word, "expected an address (such as I0.5) or " +
+                                 std::string(idKeyword(UnitFamily::Pluto)) + ", " +
+                                 std::string(kTypeKeyword) + ", " + std::string(kProgramKeyword) +
+                                 " after '!', found '" + std::string(word.text) + "'");
             Operand operand{{}, address.address, loc(word)};
             if (at(TokenKind::Equal)) {
                 take();
@@ -337,15 +350,13 @@ private:
                     std::string text = toLower(option.text);
                     if (!isKnownIoOption(text))
                         failAt(option, "unknown I/O option '" + std::string(option.text) +
-                                           "'; expected a_pulse, b_pulse, c_pulse, static, "
-                                           "non_inv, no_filt, x_talk, no_test_pulse, voltage, "
-                                           "current, counter_up or counter_updown");
+                                           "'; expected " + ioOptionList());
                     io.options.push_back(std::move(text));
                 }
                 declaration.body = std::move(io);
                 if (m_section == Section::Preamble)
-                    failAt(bang, "I/O declarations belong to a unit's code: put them after "
-                                 "'! pgm_pluto:NN'");
+                    failAt(bang, "I/O declarations belong to a unit's code: put them after '! " +
+                                     std::string(kProgramKeyword) + ":NN'");
                 requireDeclarationSection(bang);
             } else {
                 fail("expected '=' and a symbolic name, or ',' and I/O options after '" +
@@ -371,7 +382,8 @@ private:
     void parseStatementLine(const Token& first) {
         if (m_section != Section::Steps)
             failAt(first, m_document.units.empty()
-                              ? "a statement before '! pgm_pluto' and a step header such as S0.0_0"
+                              ? "a statement before '! " + std::string(kProgramKeyword) +
+                                    "' and a step header such as S0.0_0"
                               : "a statement outside a step: add a step header such as S" +
                                     std::to_string(m_document.units.back().station()) + ".0_0");
         m_depth = 0; // a line that failed may have left it raised
@@ -393,11 +405,11 @@ private:
             std::string keyword = toUpper(first.text);
             take();
             take();
-            if (keyword == "S" || keyword == "R" || keyword == "T") {
+            if (keyword == kSetWord || keyword == kResetWord || keyword == kToggleWord) {
                 statement.target = parseOperand("an output or memory");
-                if (keyword == "S")
+                if (keyword == kSetWord)
                     statement.kind = StatementKind::Set;
-                else if (keyword == "T")
+                else if (keyword == kToggleWord)
                     statement.kind = StatementKind::Toggle;
                 else if (statement.target.address.kind == AddressKind::Sequence)
                     statement.kind = StatementKind::SequenceReset;
@@ -408,7 +420,7 @@ private:
                 if (statement.target.address.kind == AddressKind::Sequence &&
                     statement.kind != StatementKind::SequenceReset)
                     failAt(first, "only R(...) applies to a sequence");
-            } else if (keyword == "J") {
+            } else if (keyword == kJumpWord) {
                 statement.kind = StatementKind::Jump;
                 int sign = 0;
                 if (at(TokenKind::Plus) || at(TokenKind::Minus))
@@ -416,8 +428,8 @@ private:
                 Token step = expect(TokenKind::Number, "a step number in J(...)");
                 statement.relativeJump = sign != 0;
                 statement.jumpStep = (sign < 0 ? -1 : 1) * toInt(step.text);
-            } else if (keyword == "P" || keyword == "N" || keyword == "TON" || keyword == "TPS" ||
-                       keyword == "TOF" || keyword == "IT") {
+            } else if (keyword == kRisingEdgeWord || keyword == kFallingEdgeWord ||
+                       timerSpellingOf(keyword)) {
                 failAt(first, "a statement cannot start with " + keyword +
                                   "(...); write the output first, as in Q0.1 = " + keyword +
                                   "(...)");
@@ -699,9 +711,9 @@ private:
         std::string keyword = toUpper(name.text);
         Expr expr;
         expr.location = loc(name);
-        if (keyword == "P" || keyword == "N") {
+        if (keyword == kRisingEdgeWord || keyword == kFallingEdgeWord) {
             expr.kind = ExprKind::Edge;
-            expr.risingEdge = keyword == "P";
+            expr.risingEdge = keyword == kRisingEdgeWord;
             if (at(TokenKind::Slash)) {
                 take();
                 expr.operandNegated = true;
@@ -709,16 +721,11 @@ private:
             Token operandToken = current();
             expr.operand = parseOperand("an operand");
             requireBitOperand(expr.operand, operandToken);
-        } else if (keyword == "TON" || keyword == "TPS" || keyword == "TOF" || keyword == "T" ||
-                   keyword == "IT") {
+        } else if (const auto spelling = timerSpellingOf(keyword)) {
             expr.kind = ExprKind::Timer;
-            expr.timer = keyword == "TON"   ? TimerSpelling::TON
-                         : keyword == "TPS" ? TimerSpelling::TPS
-                         : keyword == "TOF" ? TimerSpelling::TOF
-                         : keyword == "T"   ? TimerSpelling::T
-                                            : TimerSpelling::IT;
+            expr.timer = *spelling;
             expr.preset = parseTimerPreset(keyword);
-        } else if (keyword == "S" || keyword == "R" || keyword == "J") {
+        } else if (keyword == kSetWord || keyword == kResetWord || keyword == kJumpWord) {
             failAt(name, keyword + "(...) is an instruction, not a condition: it can only start a "
                                    "statement");
         } else {
@@ -751,7 +758,7 @@ private:
         if (at(TokenKind::Word)) {
             Operand operand = parseOperand("a time or a register");
             if (!operand.isName() && operand.address.isBit() && !operand.address.isWord())
-                failAt(token, keyword == "T"
+                failAt(token, keyword == timerWord(TimerSpelling::T)
                                   ? "T(" + std::string(token.text) +
                                         ") toggles an output; it can only start a statement: "
                                         "T(" +
@@ -804,21 +811,6 @@ TimerKind timerKind(TimerSpelling spelling) {
         return TimerKind::OffDelay;
     }
     return TimerKind::OnDelay;
-}
-
-bool isKnownIoOption(std::string_view option) {
-    for (auto known : kIoOptions)
-        if (known == option)
-            return true;
-    return false;
-}
-
-std::string canonicalUnitType(std::string_view type) {
-    std::string upper = toUpper(type);
-    for (auto known : kUnitTypes)
-        if (toUpper(known) == upper)
-            return std::string(known);
-    return {};
 }
 
 ParseResult parse(std::string_view source) {

@@ -24,10 +24,4 @@ ParseResult parse(std::string_view source);
 // many children, however long, so it does not count.
 inline constexpr int kMaxExpressionDepth = 100;
 
-// Lower-case option words an I/O declaration may carry.
-bool isKnownIoOption(std::string_view option);
-
-// Canonical spelling of a unit type ("b42_asi" -> "B42_ASi"), empty if unknown.
-std::string canonicalUnitType(std::string_view type);
-
 } // namespace rs::lang

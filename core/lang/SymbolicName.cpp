@@ -1,5 +1,6 @@
 #include "SymbolicName.h"
 
+#include "Keywords.h"
 #include "TextCase.h"
 
 #include <QChar>
@@ -58,9 +59,6 @@ constexpr std::array<SystemEntry, 35> kSystemNames{{
     {"SR_I3_VOLT", AddressKind::SystemRegister, 46},
 }};
 
-constexpr std::array<std::string_view, 10> kInstructionWords{"P", "N",   "S",   "R",   "T",
-                                                             "J", "TON", "TPS", "TOF", "IT"};
-
 } // namespace
 
 std::string foldName(std::string_view name) {
@@ -102,7 +100,7 @@ std::optional<std::string> checkSymbolicName(std::string_view name, int instruct
     if (name.back() == '.')
         return (quoted + " ends with '.'").toStdString();
     const std::string upper = toUpper(name);
-    for (auto word : kInstructionWords)
+    for (auto word : instructionWords())
         if (upper == word)
             return (quoted + " is an instruction of the language").toStdString();
     if (readAddressWord(name).shape != AddressWord::Shape::NotAnAddress)

@@ -2,6 +2,7 @@
 
 #include "BlankLines.h"
 #include "UnitSettings.h"
+#include "lang/Keywords.h"
 
 #include <algorithm>
 
@@ -24,13 +25,13 @@ bool isDynamic(SignalShape shape) {
 std::string_view shapeWord(SignalShape shape) {
     switch (shape) {
     case SignalShape::Static:
-        return "static";
+        return lang::kStaticOption;
     case SignalShape::APulse:
-        return "a_pulse";
+        return lang::kAPulseOption;
     case SignalShape::BPulse:
-        return "b_pulse";
+        return lang::kBPulseOption;
     case SignalShape::CPulse:
-        return "c_pulse";
+        return lang::kCPulseOption;
     case SignalShape::None:
         break;
     }
@@ -182,7 +183,7 @@ std::optional<lang::IoDeclaration> ioDeclaration(const Terminal& terminal,
         if (!setting.noTestPulse)
             return std::nullopt;
         declaration.io.address.kind = AddressKind::Output;
-        words.push_back("no_test_pulse");
+        words.emplace_back(lang::kNoTestPulseOption);
         return declaration;
     }
     const bool analogue = terminal.kind == TerminalKind::Analogue;
@@ -193,11 +194,11 @@ std::optional<lang::IoDeclaration> ioDeclaration(const Terminal& terminal,
         declaration.io.address.kind = analogue ? AddressKind::AnalogInput : AddressKind::Input;
         words.emplace_back(shapeWord(setting.shape));
         if (setting.nonInverted)
-            words.push_back("non_inv");
+            words.emplace_back(lang::kNonInvertedOption);
         if (setting.noFilter)
-            words.push_back("no_filt");
+            words.emplace_back(lang::kNoFilterOption);
         if (setting.crossTalk)
-            words.push_back("x_talk");
+            words.emplace_back(lang::kCrossTalkOption);
         return declaration;
     case SignalType::Output:
         declaration.io.address.kind = AddressKind::Output;
@@ -212,10 +213,10 @@ std::optional<lang::IoDeclaration> ioDeclaration(const Terminal& terminal,
     case SignalType::CounterUp:
     case SignalType::CounterUpDown:
         declaration.io.address.kind = AddressKind::AnalogInput;
-        words.push_back(setting.type == SignalType::Voltage     ? "voltage"
-                        : setting.type == SignalType::Current   ? "current"
-                        : setting.type == SignalType::CounterUp ? "counter_up"
-                                                                : "counter_updown");
+        words.emplace_back(setting.type == SignalType::Voltage     ? lang::kVoltageOption
+                           : setting.type == SignalType::Current   ? lang::kCurrentOption
+                           : setting.type == SignalType::CounterUp ? lang::kCounterUpOption
+                                                                   : lang::kCounterUpDownOption);
         return declaration;
     }
     return std::nullopt;
@@ -266,7 +267,7 @@ TerminalSetting settingOf(const Terminal& terminal, const lang::IoDeclaration& d
         return has(words, std::string(w));
     };
     if (terminal.kind == TerminalKind::SafetyOutput) {
-        setting.noTestPulse = word("no_test_pulse");
+        setting.noTestPulse = word(lang::kNoTestPulseOption);
         return setting;
     }
     for (const auto& w : words)
@@ -282,14 +283,14 @@ TerminalSetting settingOf(const Terminal& terminal, const lang::IoDeclaration& d
     default:
         break;
     }
-    setting.type = word("voltage")          ? SignalType::Voltage
-                   : word("current")        ? SignalType::Current
-                   : word("counter_up")     ? SignalType::CounterUp
-                   : word("counter_updown") ? SignalType::CounterUpDown
-                                            : SignalType::Input;
-    setting.nonInverted = word("non_inv");
-    setting.noFilter = word("no_filt");
-    setting.crossTalk = word("x_talk");
+    setting.type = word(lang::kVoltageOption)         ? SignalType::Voltage
+                   : word(lang::kCurrentOption)       ? SignalType::Current
+                   : word(lang::kCounterUpOption)     ? SignalType::CounterUp
+                   : word(lang::kCounterUpDownOption) ? SignalType::CounterUpDown
+                                                      : SignalType::Input;
+    setting.nonInverted = word(lang::kNonInvertedOption);
+    setting.noFilter = word(lang::kNoFilterOption);
+    setting.crossTalk = word(lang::kCrossTalkOption);
     return setting;
 }
 

@@ -1,5 +1,6 @@
 #include "UnitType.h"
 
+#include "lang/Keywords.h"
 #include "lang/SymbolicName.h"
 #include "lang/TextCase.h"
 
@@ -59,11 +60,18 @@ std::vector<SystemVariable> with(std::vector<SystemVariable> extra, int plutoBIn
     return list;
 }
 
+static_assert(lang::kUnitTypeWords.size() == static_cast<std::size_t>(UnitType::B42ASi) + 1);
+
+// The name type_pluto gives the type, from the language's table of words.
+std::string_view typeWord(UnitType type) {
+    return lang::kUnitTypeWords[static_cast<std::size_t>(type)];
+}
+
 constexpr int kA20PlutoB = 84;   // "A20 family only"
 constexpr int kOtherPlutoB = 15; // "B46, D45, AS-i and B42 AS-i only"
 
-UnitTypeInfo a20Family(UnitType type, std::string_view name, std::vector<SystemVariable> extra) {
-    UnitTypeInfo info{type, name, name, lang::UnitFamily::Pluto};
+UnitTypeInfo a20Family(UnitType type, std::vector<SystemVariable> extra) {
+    UnitTypeInfo info{type, typeWord(type), typeWord(type), lang::UnitFamily::Pluto};
     info.globalInputs = {{0, 7}, {10, 17}};
     info.globalSafetyOutputs = {{0, 3}};
     info.nonSafetyOutputs = {{10, 17}};
@@ -80,41 +88,41 @@ std::vector<UnitTypeInfo> buildTable() {
     // A16 and B16 are listed with the A20 family (gateway manual); the
     // programming manual gives them no table of their own, and no remanent
     // variables or test-pulse option (appendix A).
-    UnitTypeInfo a16 = a20Family(UnitType::A16, "A16", {i5});
+    UnitTypeInfo a16 = a20Family(UnitType::A16, {i5});
     a16.remanent = false;
     table.push_back(a16);
-    UnitTypeInfo a20 = a20Family(UnitType::A20, "A20",
-                                 {i5, named("SR_Q16_Current", "Current (mA) output Q16"),
+    UnitTypeInfo a20 =
+        a20Family(UnitType::A20, {i5, named("SR_Q16_Current", "Current (mA) output Q16"),
                                   named("SR_Q17_Current", "Current (mA) output Q17")});
     a20.testPulsesCanBeDisabled = true;
     table.push_back(a20);
-    UnitTypeInfo b16 = a20Family(UnitType::B16, "B16", {i5});
+    UnitTypeInfo b16 = a20Family(UnitType::B16, {i5});
     b16.remanent = false;
     table.push_back(b16);
-    UnitTypeInfo b20 = a20Family(UnitType::B20, "B20", {i5});
+    UnitTypeInfo b20 = a20Family(UnitType::B20, {i5});
     b20.testPulsesCanBeDisabled = true;
     table.push_back(b20);
-    UnitTypeInfo s20 = a20Family(UnitType::S20, "S20", {i5});
+    UnitTypeInfo s20 = a20Family(UnitType::S20, {i5});
     s20.testPulsesCanBeDisabled = true;
     table.push_back(s20);
 
-    UnitTypeInfo b22 = a20Family(UnitType::B22, "B22", {i5});
+    UnitTypeInfo b22 = a20Family(UnitType::B22, {i5});
     b22.globalSafetyOutputs = {};
     b22.localInputs = {{20, 25}};
     table.push_back(b22);
 
-    UnitTypeInfo d20 = a20Family(UnitType::D20, "D20", {i5});
+    UnitTypeInfo d20 = a20Family(UnitType::D20, {i5});
     d20.globalInputs = {{4, 7}, {10, 17}};
     d20.analogInputs = {{0, 3}};
     d20.testPulsesCanBeDisabled = true;
     table.push_back(d20);
 
-    UnitTypeInfo o2 = a20Family(UnitType::O2, "O2", {});
+    UnitTypeInfo o2 = a20Family(UnitType::O2, {});
     o2.remanent = false;
     table.push_back(o2);
 
-    auto doubleFamily = [&](UnitType type, std::string_view name, bool d45) {
-        UnitTypeInfo info{type, name, name, lang::UnitFamily::Double};
+    auto doubleFamily = [&](UnitType type, bool d45) {
+        UnitTypeInfo info{type, typeWord(type), typeWord(type), lang::UnitFamily::Double};
         info.globalInputs = d45 ? Ranges{{10, 17}} : Ranges{{0, 7}, {10, 17}};
         info.analogInputs = d45 ? Ranges{{0, 7}} : Ranges{};
         info.counterInputs = d45 ? Ranges{{0, 3}} : Ranges{};
@@ -131,11 +139,11 @@ std::vector<UnitTypeInfo> buildTable() {
                  kOtherPlutoB);
         return info;
     };
-    table.push_back(doubleFamily(UnitType::B46, "B46", false));
-    table.push_back(doubleFamily(UnitType::S46, "S46", false));
-    table.push_back(doubleFamily(UnitType::D45, "D45", true));
+    table.push_back(doubleFamily(UnitType::B46, false));
+    table.push_back(doubleFamily(UnitType::S46, false));
+    table.push_back(doubleFamily(UnitType::D45, true));
 
-    UnitTypeInfo asi{UnitType::ASi, "ASi", "AS-i", lang::UnitFamily::ASi};
+    UnitTypeInfo asi{UnitType::ASi, typeWord(UnitType::ASi), "AS-i", lang::UnitFamily::ASi};
     asi.globalInputs = {{0, 0}};
     asi.localInputs = {{1, 3}, {10, 13}};
     asi.asiGlobalSafeInputs = {{1, 15}};
@@ -156,7 +164,8 @@ std::vector<UnitTypeInfo> buildTable() {
              kOtherPlutoB);
     table.push_back(asi);
 
-    UnitTypeInfo b42{UnitType::B42ASi, "B42_ASi", "B42 AS-i", lang::UnitFamily::B42ASi};
+    UnitTypeInfo b42{UnitType::B42ASi, typeWord(UnitType::B42ASi), "B42 AS-i",
+                     lang::UnitFamily::B42ASi};
     b42.globalInputs = {{0, 3}};
     b42.localInputs = {{10, 17}, {20, 27}, {30, 37}, {40, 47}};
     b42.asiLocalSafeInputs = {{1, 31}};

@@ -1,5 +1,6 @@
 #include "ElementIcon.h"
 
+#include "LadderStyle.h"
 #include "NetworkPainter.h"
 #include "ladder/ElementVocabulary.h"
 
@@ -21,7 +22,8 @@ ladder::NetworkLayout layoutOf(ElementKind kind) {
     const qreal symbolHeight = box ? 28 : 26;
     ladder::ElementLayout element;
     element.kind = kind;
-    element.text = QString::fromLatin1(ladder::infoOf(kind).boxWord);
+    const std::string_view word = ladder::infoOf(kind).boxWord;
+    element.text = QString::fromLatin1(word.data(), static_cast<qsizetype>(word.size()));
     element.symbolRect =
         QRectF((kWidth - symbolWidth) / 2, middle - symbolHeight / 2, symbolWidth, symbolHeight);
     element.cell = element.symbolRect;

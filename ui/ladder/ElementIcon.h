@@ -1,11 +1,12 @@
 #pragma once
 
 #include "ElementKind.h"
-#ifndef Q_MOC_RUN
-#include "LadderStyle.h"
-#endif
 
 #include <QIcon>
+
+namespace rs::render {
+struct LadderStyle;
+}
 
 namespace rs::ui {
 
