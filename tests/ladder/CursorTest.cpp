@@ -8,7 +8,7 @@ using rs::ladder::Cursor;
 using rs::ladder::ElementPath;
 
 TEST(Cursor, NothingIsSelectedUntilANetworkIs) {
-    const Cursor none;
+    const Cursor none{};
     EXPECT_FALSE(none.valid());
     EXPECT_FALSE(none.wholeNetwork());
     const Cursor network{1, 2, std::nullopt, std::nullopt, -1};

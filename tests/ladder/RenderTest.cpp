@@ -63,7 +63,7 @@ bool isInk(const QColor& c) {
 class Conduction : public ::testing::Test {
 protected:
     const NetworkLayout layout = layOut("Q0.1 = I0.0 * I0.1\n");
-    const LadderStyle style;
+    const LadderStyle style{};
     const int wireY = static_cast<int>(element(layout, 2).cell.center().y());
 
     // x of the wire in front of an element's symbol, and behind it.
@@ -159,7 +159,7 @@ TEST(Pictures, TheFileNameSaysTheFormat) {
 // Every network of every manual example draws, as PNG and as SVG, and every
 // name, address and box text fits its place without being shortened.
 TEST(ManualExamples, EveryNetworkRendersWithReadableLabels) {
-    const LadderStyle style;
+    const LadderStyle style{};
     const QFontMetricsF names(style.font(style.labelPixelSize, true));
     const QFontMetricsF addresses(style.font(style.labelPixelSize));
     const QFontMetricsF boxes(style.font(style.textPixelSize, true));
