@@ -1051,6 +1051,12 @@
         <translation>Keine Netzwerke in diesem Code.</translation>
     </message>
     <message>
+        <source>This code has %1 lines, more than the ladder page draws (%2).
+Its text page (F6) shows and edits it.</source>
+        <translation>Dieser Code hat %1 Zeilen, mehr als die Kontaktplanseite zeichnet (%2).
+Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
+    </message>
+    <message>
         <source>Could not export to %1.</source>
         <translation>Export nach %1 nicht möglich.</translation>
     </message>

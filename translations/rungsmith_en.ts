@@ -1051,6 +1051,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>This code has %1 lines, more than the ladder page draws (%2).
+Its text page (F6) shows and edits it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Could not export to %1.</source>
         <translation type="unfinished"></translation>
     </message>

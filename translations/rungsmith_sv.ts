@@ -1051,6 +1051,12 @@
         <translation>Inga nätverk i den här koden.</translation>
     </message>
     <message>
+        <source>This code has %1 lines, more than the ladder page draws (%2).
+Its text page (F6) shows and edits it.</source>
+        <translation>Den här koden har %1 rader, fler än stegdiagramsidan ritar (%2).
+Dess textsida (F6) visar och redigerar den.</translation>
+    </message>
+    <message>
         <source>Could not export to %1.</source>
         <translation>Kunde inte exportera till %1.</translation>
     </message>

@@ -25,6 +25,18 @@ QString text(const std::string& utf8) {
     return QString::fromUtf8(utf8.data(), static_cast<qsizetype>(utf8.size()));
 }
 
+// A comment line as drawn: its first kLongestDrawnText characters, never
+// half of a surrogate pair.
+QString shortened(QString line) {
+    if (line.size() <= kLongestDrawnText)
+        return line;
+    qsizetype keep = kLongestDrawnText;
+    if (line.at(keep - 1).isHighSurrogate())
+        --keep;
+    line.truncate(keep);
+    return line + QChar(0x2026);
+}
+
 QString word(std::string_view keyword) {
     return QString::fromLatin1(keyword.data(), static_cast<qsizetype>(keyword.size()));
 }
@@ -348,7 +360,7 @@ private:
     }
 
     void outputComment(const std::string& comment, qreal y) {
-        const QString shown = text(comment).trimmed();
+        const QString shown = shortened(text(comment).trimmed());
         if (shown.isEmpty())
             return;
         const qreal width = shown.size() * m_metrics.charWidth;
@@ -363,7 +375,7 @@ private:
         const auto* comment = std::get_if<lang::CommentLine>(&line.body);
         if (!comment)
             return top; // a blank line leaves no mark in the drawing
-        const QString shown = text(comment->text).trimmed();
+        const QString shown = shortened(text(comment->text).trimmed());
         const qreal left = m_railX + kCommentGap;
         const qreal width = std::max<qreal>(shown.size() * m_metrics.charWidth, 1);
         m_width = std::max(m_width, left + width);
@@ -385,7 +397,8 @@ private:
                                       : m_context.title});
         const QStringList lines = text(m_network.comment).split(u'\n');
         qreal y = top;
-        for (const QString& line : lines) {
+        for (const QString& whole : lines) {
+            const QString line = shortened(whole);
             if (!line.isEmpty()) {
                 const qreal left = m_metrics.margin + kTitleWidth;
                 const qreal width = line.size() * m_metrics.charWidth;

@@ -100,6 +100,11 @@ struct LayoutContext {
     LayoutMetrics metrics;
 };
 
+// A comment line is drawn with at most this many characters and an ellipsis:
+// measuring and shaping a line of megabytes on every repaint would stall the
+// page, and the text page shows the line whole.
+inline constexpr qsizetype kLongestDrawnText = 400;
+
 // Series parts stand side by side, parallel branches one below the other,
 // each as wide as the widest; outputs line up at the right of the widest
 // condition of the network, stacked when a rung has several.

@@ -19,6 +19,14 @@ std::vector<StepPage> unitLadder(const lang::UnitProgram& unit) {
     return pages;
 }
 
+std::size_t sequenceLines(const lang::UnitProgram& unit, int sequence) {
+    std::size_t lines = 0;
+    for (const auto& step : unit.steps)
+        if (step.address.sequence == sequence)
+            lines += step.lines.size();
+    return lines;
+}
+
 bool setStepLadder(lang::UnitProgram& unit, const lang::StepAddress& address,
                    const StepLadder& ladder) {
     for (auto& step : unit.steps) {

@@ -2,6 +2,7 @@
 
 #include "Network.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,14 @@ struct StepPage {
 
 // Every step of the unit's code in file order.
 std::vector<StepPage> unitLadder(const lang::UnitProgram& unit);
+
+// A ladder page holds one scene item per network, laid out whole; beyond this
+// many lines of code it would take minutes and gigabytes, so the page is not
+// drawn and its text page shows the code.
+inline constexpr std::size_t kMostDrawnLines = 50'000;
+
+// The lines of the unit's code in the steps of one sequence (0: the PLC code).
+std::size_t sequenceLines(const lang::UnitProgram& unit, int sequence);
 
 // Writes a step's ladder back as the step's lines. False when the unit has no
 // step at that address.

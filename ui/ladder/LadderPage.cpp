@@ -346,6 +346,7 @@ void LadderPage::followModel() {
 void LadderPage::rebuild() {
     m_steps.clear();
     m_stepComments.clear();
+    m_undrawnLines = 0;
     if (m_document) {
         const project::Project& project = m_document->project();
         std::vector<lang::Line> names = project.program.preamble;
@@ -353,6 +354,11 @@ void LadderPage::rebuild() {
             if (unit.station() != m_station)
                 continue;
             names.insert(names.end(), unit.declarations.begin(), unit.declarations.end());
+            if (const std::size_t lines = ladder::sequenceLines(unit, m_sequence);
+                lines > ladder::kMostDrawnLines) {
+                m_undrawnLines = lines;
+                continue;
+            }
             for (auto& page : ladder::unitLadder(unit))
                 if (page.address.sequence == m_sequence)
                     m_steps.push_back(std::move(page));
@@ -367,7 +373,11 @@ void LadderPage::rebuild() {
             ++m_namesVersion;
         }
     }
-    if (m_steps.empty() && m_document && m_sequence == 0) {
+    if (m_undrawnLines > 0) {
+        m_steps.clear();
+        m_stepComments.clear();
+        m_pending.reset();
+    } else if (m_steps.empty() && m_document && m_sequence == 0) {
         m_steps.push_back({{m_station, 0, 0}, {}, {}});
         m_stepComments.emplace_back();
     }
@@ -465,7 +475,14 @@ void LadderPage::placeItems() {
     const bool empty =
         std::all_of(m_items.begin(), m_items.end(), [](const auto& step) { return step.empty(); });
     m_emptyHint->setVisible(empty && m_document);
-    m_emptyHint->setText(isLive() ? tr("No networks in this code.") : m_editingHint);
+    m_emptyHint->setText(
+        m_undrawnLines > 0
+            ? tr("This code has %1 lines, more than the ladder page draws (%2).\nIts text page "
+                 "(F6) shows and edits it.")
+                  .arg(m_undrawnLines)
+                  .arg(ladder::kMostDrawnLines)
+        : isLive() ? tr("No networks in this code.")
+                   : m_editingHint);
     m_emptyHint->setBrush(m_drawing.style.commentInk);
     m_emptyHint->setPos(NetworkItem::kGutter, y + 16);
     if (empty)
@@ -498,7 +515,9 @@ QString LadderPage::message() const {
 }
 
 void LadderPage::updateActions() {
-    const bool editable = m_document && !isLive();
+    // An undrawn page offers no edits: they would act on a ladder it does not hold.
+    const bool editable = m_document && !isLive() && m_undrawnLines == 0;
+    m_view->setEnabled(m_undrawnLines == 0);
     // Viewing stays possible while simulating; only editing stops.
     static const QStringList viewing = {
         QStringLiteral("ladderTextAction"), QStringLiteral("printLadderAction"),

@@ -12,6 +12,7 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -189,6 +190,7 @@ private:
     ladder::SymbolTable m_symbols;
     std::vector<lang::Line> m_names; // the declarations the symbols were read from
     int m_namesVersion = 0;
+    std::size_t m_undrawnLines = 0;               // the code's lines when above what the page draws
     std::optional<std::pair<int, int>> m_pending; // a new network not yet holding a rung
     std::optional<EditSession> m_editSession;
     Placement m_placement = Placement::After;
