@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Debian's libqscintilla2-qt6-dev ships no CMake package; find it by hand.
 get_target_property(_qt_core_includes Qt6::Core INTERFACE_INCLUDE_DIRECTORIES)
 find_path(QScintilla_INCLUDE_DIR

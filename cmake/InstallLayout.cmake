@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Where `cmake --install` puts things (GNU layout: bin/, share/, share/man/),
 # and with Debian's modes for the directories it makes, whatever the
 # builder's umask. Included before any install() rule.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installation in the standard places and the Debian package (cpack -G DEB).
 # README.md, "Building and installing the package", says how to use them.
 # The install rules of the two programs are in app/CMakeLists.txt.

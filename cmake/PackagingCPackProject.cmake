@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cpack runs this before it packs: the package takes the version of the
 # binaries it holds, which the build wrote, not the one seen at configure time.
 if(NOT EXISTS "${CPACK_RUNGSMITH_VERSION_FILE}")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The version the binaries print and the package carries (docs in README.md,
 # "Building and installing the package"). A commit tagged v<project version>
 # is that release; any other commit is a development build,

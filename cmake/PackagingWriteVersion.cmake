@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cmake -P script, run by the target rungsmith_build_version at every build:
 # writes HEADER and TEXT with the build's version, touching them only when it
 # changed. Input: SOURCE_DIR, PROJECT_VERSION, GIT (may be empty).

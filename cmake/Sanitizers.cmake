@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The sanitizer build (preset "asan"): every target with AddressSanitizer and
 # UBSan, any finding fatal, and with libFuzzer's coverage hooks so that the
 # fuzz targets (tests/fuzz) can link libFuzzer. Needs clang.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
 // Holds core types by value, so their headers come in here; Qt 6.4's moc cannot

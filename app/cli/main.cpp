@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "Invocation.h"
 #include "LadderVerbs.h"
 #include "RungsmithBuildVersion.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extreme and malformed project text on the command line: every verb answers
 // with a message and an exit code of the contract, never a crash.
 

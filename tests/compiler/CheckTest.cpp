@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The compiler's semantic checks (core/compiler/UnitSetup.cpp and ProgramCheck.cpp):
 // every diagnostic they can give, with its exact line, column, severity and message.
 // Each test compiles a small complete program with compileText and compares the

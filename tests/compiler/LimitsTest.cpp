@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the compiler refuses or allows at the edges: a program too large for
 // its unit, units of another project on the bus, and the same bytes every run.
 

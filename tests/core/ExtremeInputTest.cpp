@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Program text at and past the reader's limits: deep nesting, long chains,
 // other line ends and control characters.
 

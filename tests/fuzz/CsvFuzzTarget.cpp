@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "project/ProjectFile.h"
 #include "project/Utf8Text.h"
 #include "project/VariableCsv.h"

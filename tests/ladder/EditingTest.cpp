@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ladder/Editing.h"
 #include "StepText.h"
 #include "ladder/LadderToText.h"

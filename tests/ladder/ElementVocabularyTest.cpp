@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ladder/ElementVocabulary.h"
 #include "ladder/ElementFields.h"
 #include "ladder/ElementText.h"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the Debian package from a build tree and checks it as Debian's tools
 # and a user would: fields, file list, lintian, the desktop, AppStream and MIME
 # files, the man pages, and the unpacked programs themselves.

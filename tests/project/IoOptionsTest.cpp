@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "project/IoOptions.h"
 #include "ProjectText.h"
 #include "compiler/UnitSetup.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "project/UnitText.h"
 #include "ProjectText.h"
 #include "project/ProjectFile.h"

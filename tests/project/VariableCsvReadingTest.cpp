@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProjectText.h"
 #include "project/ProjectFile.h"
 #include "project/VariableCsv.h"
