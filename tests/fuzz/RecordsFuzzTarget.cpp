@@ -1,17 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "project/ProjectFile.h"
+#include "ProjectRoundTrip.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 
 // The ";@" records: each input line becomes one record, placed both in the
 // preamble and in a step of a fixed one-unit project, so that the fuzzer
 // spends its time on the record reader rather than on finding a valid
-// project. As for the parser: reading never crashes, and what reads without
-// errors prints to a text that reads back and prints the same again.
+// project; then the same round trip as the parser's target.
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view input(reinterpret_cast<const char*>(data), size);
     std::string records;
@@ -27,20 +24,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text = "$name Fuzz\n" + records +
                              "! id_pluto:00=000000000000\n! I0.0=Start\n! pgm_pluto:00\nS0.0_0\n" +
                              records + "Q0.0 = Start\n";
-    const auto result = rs::project::readProject(text);
-    if (!result.ok())
-        return 0;
-    const std::string printed = rs::project::writeProject(result.project);
-    const auto again = rs::project::readProject(printed);
-    if (!again.ok()) {
-        std::fprintf(stderr, "canonical text does not read back: %d:%d: %s\n",
-                     again.diagnostics.front().line, again.diagnostics.front().column,
-                     again.diagnostics.front().message.c_str());
-        std::abort();
-    }
-    if (rs::project::writeProject(again.project) != printed) {
-        std::fprintf(stderr, "canonical text is not stable\n");
-        std::abort();
-    }
+    checkProjectRoundTrip(text);
     return 0;
 }
