@@ -41,7 +41,10 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         image.sourceCrc = sourceCrc;
         if (project.includeSource)
             image.source = canonical;
-        const std::size_t size = encodeImage(image).size();
+        // Encoding (and compressing the source) only to measure is needed
+        // just near the limit.
+        const std::size_t size =
+            encodedSizeBound(image) > kMaxUnitImageBytes ? encodeImage(image).size() : 0;
         if (size > kMaxUnitImageBytes) {
             const lang::SourceLocation at = unit.program->header.location;
             result.diagnostics.push_back({lang::Severity::Error, at.line, at.column,

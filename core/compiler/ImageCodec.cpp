@@ -97,6 +97,16 @@ std::uint32_t crc32(std::string_view bytes) {
         ::crc32(0L, reinterpret_cast<const Bytef*>(bytes.data()), static_cast<uInt>(bytes.size())));
 }
 
+std::size_t encodedSizeBound(const UnitImage& image) {
+    constexpr std::size_t kFixed = 4 + 2 + 4 * 1 + 4 + 2 + 3 * 2 + 4 + 4; // header, counts, crc
+    constexpr std::size_t kStepSize = 1 + 1 + 4 + 4;
+    std::size_t size = kFixed + image.projectName.size() + image.steps.size() * kStepSize +
+                       image.code.size() * kInstructionSize;
+    if (!image.source.empty())
+        size += 4 + 4 + ::compressBound(static_cast<uLong>(image.source.size()));
+    return size;
+}
+
 std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
     Writer w;
     w.bytes(std::string_view(kMagic, 4));

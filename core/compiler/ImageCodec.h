@@ -36,6 +36,10 @@ inline constexpr std::uint32_t kHpsStationStride = 0x1000000;
 // bound for all of them.
 inline constexpr std::size_t kMaxUnitImageBytes = kHpsStationStride;
 
+// At least encodeImage(image).size(), without encoding (and compressing the
+// source): most programs are far below kMaxUnitImageBytes.
+std::size_t encodedSizeBound(const UnitImage& image);
+
 std::string writeHps(const std::vector<UnitImage>& images);
 
 using HpsResult = std::variant<std::vector<UnitImage>, ImageError>;

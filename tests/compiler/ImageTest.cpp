@@ -189,3 +189,13 @@ TEST(Image, UnknownVariantsOfAnInstructionAreRejected) {
     }
     EXPECT_EQ(tried, 3);
 }
+
+// The compiler measures an image by encoding it only when this bound passes
+// the limit, so the bound must never be below the real size.
+TEST(Image, TheSizeBoundIsNeverBelowTheEncodedSize) {
+    for (const std::string& text : {std::string(muting()), std::string(kSmall),
+                                    std::string(kSmall).insert(std::string(kSmall).find('\n') + 1,
+                                                               ";@project include_source=yes\n")})
+        for (const auto& image : compileOk(text))
+            EXPECT_GE(compiler::encodedSizeBound(image), compiler::encodeImage(image).size());
+}
