@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProjectGenerator.h"
 
-#include "ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "project/ProjectFile.h"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProjectGenerator.h"
 
-#include "MainWindow.h"
-#include "ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
+#include "shell/MainWindow.h"
 #include "sim/LiveLadder.h"
 #include "sim/Simulation.h"
 #include "sim/SimulationMode.h"

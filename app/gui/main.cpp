@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "MainWindow.h"
-#include "PageRef.h"
-#include "Preferences.h"
 #include "RungsmithBuildVersion.h"
-#include "Theme.h"
-#include "Translations.h"
 #include "lang/Diagnostic.h"
 #include "project/SaveFileCommit.h"
+#include "shell/MainWindow.h"
+#include "shell/PageRef.h"
+#include "shell/Preferences.h"
+#include "shell/Theme.h"
+#include "shell/Translations.h"
 #include "sim/SimulationMode.h"
 
 #include <QApplication>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WindowTest.h"
 
-#include "Autosave.h"
-#include "ProjectDocument.h"
-#include "ProjectTree.h"
-#include "TextPage.h"
+#include "document/Autosave.h"
+#include "document/ProjectDocument.h"
+#include "shell/ProjectTree.h"
+#include "text/TextPage.h"
 
 #include <QAction>
 #include <QDir>

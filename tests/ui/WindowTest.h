@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "MainWindow.h"
-#include "PageRef.h"
+#include "shell/MainWindow.h"
+#include "shell/PageRef.h"
 
 #include <QByteArray>
 #include <QString>

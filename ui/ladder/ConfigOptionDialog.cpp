@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ConfigOptionDialog.h"
 
-#include "ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "ladder/ElementText.h"
 #include "lang/Printer.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ElementDialog.h"
 
-#include "ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "ladder/ElementText.h"
 #include "ladder/SymbolTable.h"
 #include "project/VariableTable.h"

@@ -7,10 +7,8 @@
 #include "LadderView.h"
 #include "NetworkItem.h"
 #include "NetworkPainter.h"
-#include "PageTitle.h"
-#include "ProjectDocument.h"
 #include "StepHeaderItem.h"
-#include "UnitCaption.h"
+#include "document/ProjectDocument.h"
 #include "ladder/NetworkText.h"
 #include "ladder/TextToLadder.h"
 #include "lang/Parser.h"
@@ -18,6 +16,8 @@
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
 #include "project/UnitText.h"
+#include "shell/PageTitle.h"
+#include "shell/UnitCaption.h"
 
 #include <QAction>
 #include <QActionGroup>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "BusStatusView.h"
 
-#include "ProjectDocument.h"
 #include "SimulationSession.h"
-#include "StatusColors.h"
-#include "UnitCaption.h"
+#include "document/ProjectDocument.h"
+#include "shell/StatusColors.h"
+#include "shell/UnitCaption.h"
 
 #include <QHeaderView>
 #include <QTableWidget>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ForcesView.h"
 
-#include "ProjectDocument.h"
 #include "SimulationSession.h"
+#include "document/ProjectDocument.h"
 #include "project/VariableTable.h"
 
 #include <QHBoxLayout>

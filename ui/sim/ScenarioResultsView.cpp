@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ScenarioResultsView.h"
 
-#include "StatusColors.h"
+#include "shell/StatusColors.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -3,18 +3,18 @@
 
 #include "BusStatusView.h"
 #include "ForcesView.h"
-#include "MainWindow.h"
-#include "ProjectDocument.h"
 #include "ScenarioFileViewer.h"
 #include "ScenarioResultsView.h"
 #include "SimulationControls.h"
-#include "StatusColors.h"
-#include "VariableTableModel.h"
-#include "VariablesPage.h"
 #include "WatchView.h"
 #include "WaveformPanel.h"
 #include "WaveformView.h"
+#include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
+#include "pages/VariableTableModel.h"
+#include "pages/VariablesPage.h"
+#include "shell/MainWindow.h"
+#include "shell/StatusColors.h"
 
 #include <QDockWidget>
 #include <QFileDialog>

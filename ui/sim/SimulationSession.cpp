@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "SimulationSession.h"
 
-#include "ProjectDocument.h"
 #include "compiler/Compiler.h"
+#include "document/ProjectDocument.h"
 #include "project/ProjectFile.h"
 #include "project/RemanentVariables.h"
 #include "project/VariableTable.h"

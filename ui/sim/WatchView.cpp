@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WatchView.h"
 
-#include "ProjectDocument.h"
 #include "SimulationSession.h"
-#include "StatusColors.h"
+#include "document/ProjectDocument.h"
 #include "project/VariableTable.h"
+#include "shell/StatusColors.h"
 
 #include <QCompleter>
 #include <QHBoxLayout>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WaveformPanel.h"
 
-#include "ProjectDocument.h"
 #include "SimulationSession.h"
-#include "StatusColors.h"
 #include "WaveformView.h"
+#include "document/ProjectDocument.h"
 #include "project/ProjectFile.h"
 #include "project/VariableTable.h"
+#include "shell/StatusColors.h"
 
 #include <QCompleter>
 #include <QFileDialog>

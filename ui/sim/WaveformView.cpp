@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WaveformView.h"
 
-#include "StatusColors.h"
+#include "shell/StatusColors.h"
 #include "sim/WaveformRecorder.h"
 
 #include <QMouseEvent>

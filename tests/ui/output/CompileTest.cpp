@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "WindowTest.h"
+
+#include "document/ProjectDocument.h"
+#include "output/CompileOutput.h"
+#include "text/ProgramEditor.h"
+
+#include <QAction>
+#include <QFile>
+#include <QTest>
+
+#include "QtPrinting.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using rs::ui::PageRef;
+
+class CompileTest : public WindowTest {
+protected:
+    rs::ui::CompileOutput* output() { return window.compileOutput(); }
+    bool waitForCompile() {
+        return QTest::qWaitFor([&] { return !window.isCompiling(); }, 30000);
+    }
+};
+
+TEST_F(CompileTest, CompilingOffTheWindowsThreadEndsWithTheOriginalsClosingLine) {
+    const QString path =
+        writeFile(QStringLiteral("muting.sps"),
+                  readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    showWindow();
+    action("compileAction")->trigger();
+    // The window is free while the compiler runs; the button waits for it.
+    EXPECT_TRUE(window.isCompiling() || !output()->closingLine().isEmpty());
+    ASSERT_TRUE(waitForCompile());
+    EXPECT_EQ(output()->closingLine(), QStringLiteral("0 Error(s) detected Result=OK"));
+    EXPECT_TRUE(action("compileAction")->isEnabled());
+    // The manual's example leaves Q0.17 without an I/O declaration.
+    bool warned = false;
+    for (int i = 0; i < output()->topLevelItemCount(); ++i)
+        warned = warned || output()->topLevelItem(i)->text(1).contains(QStringLiteral("Q0.17"));
+    EXPECT_TRUE(warned);
+    EXPECT_TRUE(QFile::exists(directory.filePath(QStringLiteral("muting.hps"))));
+}
+
+TEST_F(CompileTest, AnErrorIsListedWithItsUnitAndLineAndDoubleClickGoesThere) {
+    const QString path = writeFile(QStringLiteral("bad.sps"), "$name Bad\n"
+                                                              "! id_pluto:00=000000000000\n"
+                                                              "! type_pluto:00=A20,is2\n"
+                                                              "! pgm_pluto:00\n"
+                                                              "S0.0_0\n"
+                                                              "Q0.2 = I0.1\n"
+                                                              "Q0.3 = M0.700\n");
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    showWindow();
+    window.showPage(PageRef::Kind::Variables, 0);
+    action("compileAction")->trigger();
+    ASSERT_TRUE(waitForCompile());
+    EXPECT_EQ(output()->closingLine(), QStringLiteral("1 Error(s) detected Result=FAILED"));
+    EXPECT_FALSE(QFile::exists(directory.filePath(QStringLiteral("bad.hps"))));
+    QTreeWidgetItem* error = nullptr;
+    for (int i = 0; i < output()->topLevelItemCount(); ++i)
+        if (output()->topLevelItem(i)->text(1).startsWith(QStringLiteral("error:")))
+            error = output()->topLevelItem(i);
+    ASSERT_NE(error, nullptr);
+    EXPECT_EQ(error->text(0), QStringLiteral("Pluto 0, line 4:8"));
+
+    const QPoint where = output()->visualItemRect(error).center();
+    QTest::mouseClick(output()->viewport(), Qt::LeftButton, {}, where);
+    QTest::mouseDClick(output()->viewport(), Qt::LeftButton, {}, where);
+    EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Code);
+    int line = -1;
+    int column = -1;
+    window.editor()->getCursorPosition(&line, &column);
+    EXPECT_EQ(line, 3);
+    EXPECT_EQ(column, 7);
+}
+
+} // namespace

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "document/ProjectDocument.h"
+
+#include "document/ProjectCommand.h"
+#include "project/ProjectFile.h"
+
+#include <QFileInfo>
+#include <QUuid>
+
+namespace rs::ui {
+
+namespace {
+
+std::string_view view(const QByteArray& bytes) {
+    return {bytes.constData(), static_cast<std::size_t>(bytes.size())};
+}
+
+} // namespace
+
+ProjectDocument::ProjectDocument(project::Project project, QObject* parent)
+    : QObject(parent), m_project(std::move(project)),
+      m_autosaveId(QUuid::createUuid().toString(QUuid::WithoutBraces)) {
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this, &ProjectDocument::emitModification);
+}
+
+ProjectDocument::~ProjectDocument() {
+    // The undo stack says it is clean as it goes; nobody is to hear that from
+    // a project half destroyed.
+    m_undoStack.disconnect(this);
+}
+
+ProjectDocument* ProjectDocument::fromText(const QByteArray& text, QObject* parent) {
+    project::ProjectReadResult read = project::readProject(view(text));
+    auto* document = new ProjectDocument(std::move(read.project), parent);
+    if (!read.ok()) {
+        document->m_damaged = true;
+        document->m_damagedText = text;
+    }
+    return document;
+}
+
+ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObject* parent) {
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        error = file.error;
+        return nullptr;
+    }
+    ProjectDocument* document = fromText(QByteArray::fromStdString(file.text), parent);
+    document->m_path = QFileInfo(path).absoluteFilePath();
+    return document;
+}
+
+bool ProjectDocument::edit(const QString& text,
+                           const std::function<void(project::Project&)>& change) {
+    project::Project after = m_project;
+    change(after);
+    return replace(text, after);
+}
+
+bool ProjectDocument::replace(const QString& text, const project::Project& after) {
+    project::ProjectChange change = project::ProjectChange::between(m_project, after);
+    if (change.empty())
+        return false;
+    m_undoStack.push(new ProjectCommand(*this, std::move(change), text));
+    return true;
+}
+
+void ProjectDocument::applyChange(const project::ProjectChange& change, bool forward) {
+    if (forward)
+        change.apply(m_project);
+    else
+        change.revert(m_project);
+    emit changed();
+    emitModification();
+}
+
+QString ProjectDocument::displayName() const {
+    if (!m_path.isEmpty())
+        return QFileInfo(m_path).fileName();
+    const QString name = QString::fromStdString(m_project.name());
+    return (name.isEmpty() ? tr("Untitled") : name) + QStringLiteral(".sps");
+}
+
+bool ProjectDocument::isModified() const {
+    return m_modifiedWithoutUndo || !m_undoStack.isClean();
+}
+
+void ProjectDocument::setModifiedWithoutUndo(bool modified) {
+    m_modifiedWithoutUndo = modified;
+    emitModification();
+}
+
+void ProjectDocument::setDamagedText(const QByteArray& text) {
+    if (text == m_damagedText)
+        return;
+    m_damagedText = text;
+    m_modifiedWithoutUndo = true;
+    emitModification();
+}
+
+void ProjectDocument::repair(project::Project project) {
+    m_project = std::move(project);
+    m_damaged = false;
+    m_damagedText.clear();
+    m_undoStack.clear();
+    m_modifiedWithoutUndo = true;
+    emit changed();
+    emitModification();
+}
+
+QByteArray ProjectDocument::fileText() const {
+    if (m_damaged)
+        return m_damagedText;
+    return QByteArray::fromStdString(project::writeProject(m_project));
+}
+
+QString ProjectDocument::saveTo(const QString& path) {
+    const QByteArray text = fileText();
+    const QString error = project::writeTextFile(path, view(text));
+    if (!error.isEmpty())
+        return error;
+    setPath(path);
+    m_modifiedWithoutUndo = false;
+    m_undoStack.setClean();
+    emitModification();
+    return {};
+}
+
+void ProjectDocument::setPath(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (absolute == m_path)
+        return;
+    m_path = absolute;
+    emit pathChanged();
+}
+
+void ProjectDocument::emitModification() {
+    const bool modified = isModified();
+    if (modified == m_lastModified)
+        return;
+    m_lastModified = modified;
+    emit modificationChanged(modified);
+}
+
+} // namespace rs::ui

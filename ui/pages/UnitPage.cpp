@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pages/UnitPage.h"
+
+#include "document/ProjectDocument.h"
+#include "pages/UnitSettingsForm.h"
+#include "project/ExportedVariables.h"
+#include "project/RemanentVariables.h"
+#include "project/UnitSettings.h"
+#include "shell/PageTitle.h"
+#include "shell/UnitCaption.h"
+
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+UnitPage::UnitPage(QWidget* parent)
+    : QWidget(parent), m_title(new PageTitle(this)), m_form(new UnitSettingsForm(this)),
+      m_undeclared(new QLabel(this)), m_exports(new QLabel(this)), m_remanent(new QLabel(this)),
+      m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)) {
+    m_undeclared->setWordWrap(true);
+    m_undeclared->setText(tr("This unit has code but no '! id_pluto' declaration. Any change "
+                             "below writes one."));
+    m_exports->setObjectName(QStringLiteral("exportPairsLabel"));
+    m_remanent->setObjectName(QStringLiteral("remanentLabel"));
+    m_remanent->setWordWrap(true);
+    m_remanentButton->setObjectName(QStringLiteral("remanentButton"));
+
+    auto* variables = new QGroupBox(tr("Variables on the bus and at power off"), this);
+    auto* form = new QFormLayout(variables);
+    form->addRow(tr("Export variables:"), m_exports);
+    auto* remanentRow = new QHBoxLayout;
+    remanentRow->addWidget(m_remanent, 1);
+    remanentRow->addWidget(m_remanentButton);
+    form->addRow(tr("Remanent variables:"), remanentRow);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_title);
+    layout->addWidget(m_undeclared);
+    layout->addWidget(m_form);
+    layout->addWidget(variables);
+    layout->addStretch();
+
+    connect(m_form, &UnitSettingsForm::edited, this, &UnitPage::apply);
+    connect(m_remanentButton, &QPushButton::clicked, this,
+            [this] { emit remanentRequested(m_document, m_station); });
+}
+
+void UnitPage::showUnit(ProjectDocument* document, int station) {
+    if (m_document)
+        disconnect(m_document, nullptr, this, nullptr);
+    m_document = document;
+    m_station = station;
+    if (!document)
+        return;
+    connect(document, &ProjectDocument::changed, this, &UnitPage::refresh);
+    refresh();
+}
+
+void UnitPage::refresh() {
+    if (!m_document)
+        return;
+    const project::Project& p = m_document->project();
+    const auto unit = project::unitSettings(p, m_station);
+    if (!unit)
+        return;
+    m_title->setTitle(unitCaption(*unit));
+    m_title->setSubtitle(
+        tr("Station %1 of project %2").arg(m_station).arg(QString::fromStdString(p.name())));
+    m_undeclared->setVisible(!unit->declared);
+    m_form->setSettings(*unit, project::freeStations(p), true);
+    if (unit->instructionSet < 3)
+        m_exports->setText(tr("need instruction set 3"));
+    else
+        m_exports->setText(tr("%1 of %2 extra telegram pairs (project: %3 of %4)")
+                               .arg(project::telegramPairs(p, m_station))
+                               .arg(project::kTelegramPairsPerUnit)
+                               .arg(project::telegramPairs(p))
+                               .arg(project::kTelegramPairsPerProject));
+    const target::UnitTypeInfo& type = target::unitTypeInfo(unit->type);
+    const std::string remanent =
+        project::formatRemanentList(project::remanentOf(p, m_station), m_station);
+    m_remanent->setText(!type.remanent     ? tr("this type has none")
+                        : remanent.empty() ? tr("none")
+                                           : QString::fromStdString(remanent));
+    m_remanentButton->setEnabled(type.remanent);
+}
+
+void UnitPage::apply() {
+    if (!m_document || !m_form->problem().isEmpty())
+        return;
+    const project::UnitSettings settings = m_form->settings();
+    const auto current = project::unitSettings(m_document->project(), m_station);
+    if (current && *current == settings)
+        return;
+    if (const int removed = project::removedByChange(m_document->project(), settings)) {
+        const auto answer = QMessageBox::question(
+            this, tr("Change Pluto %1").arg(m_station),
+            tr("This removes %n declaration(s), name(s), description(s) or attribute(s) of the "
+               "unit that the new type or instruction set cannot have. Change it?",
+               nullptr, removed),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            refresh(); // the form shows the unit as it is again
+            return;
+        }
+    }
+    m_document->edit(tr("Change Pluto %1").arg(m_station),
+                     [&](project::Project& p) { project::changeUnit(p, settings); });
+}
+
+} // namespace rs::ui

@@ -1,0 +1,1275 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "shell/MainWindow.h"
+
+#include "compiler/ImageCodec.h"
+#include "document/Autosave.h"
+#include "document/ProjectDocument.h"
+#include "ladder/LadderPage.h"
+#include "output/CompileOutput.h"
+#include "output/ProblemsView.h"
+#include "pages/CsvExportDialog.h"
+#include "pages/CsvImportDialog.h"
+#include "pages/IoOptionsPage.h"
+#include "pages/NewProjectDialog.h"
+#include "pages/NewUnitDialog.h"
+#include "pages/ProjectPage.h"
+#include "pages/RemanentDialog.h"
+#include "pages/UnitPage.h"
+#include "pages/VariablesPage.h"
+#include "project/ProgramText.h"
+#include "project/ProjectFile.h"
+#include "project/ProjectProperties.h"
+#include "project/RemanentVariables.h"
+#include "project/Sequences.h"
+#include "project/UnitSettings.h"
+#include "shell/PreferencesDialog.h"
+#include "shell/ProjectTree.h"
+#include "shell/Theme.h"
+#include "shell/UnitCaption.h"
+#include "sim/SimulationMode.h"
+#include "text/ProgramEditor.h"
+#include "text/TextPage.h"
+
+#include <Qsci/qsciglobal.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStackedWidget>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace rs::ui {
+
+namespace {
+
+const QString kExamplePath = QStringLiteral(":/examples/muting.sps");
+const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
+const QString kStateKey = QStringLiteral("mainWindow/state");
+const QString kDirectoryKey = QStringLiteral("mainWindow/lastDirectory");
+
+constexpr int kStatusMessageMs = 4000;
+constexpr int kMillisecondsPerMinute = 60 * 1000;
+
+QString projectFileFilter() {
+    return MainWindow::tr("Pluto projects (*.sps);;All files (*)");
+}
+
+QIcon icon(const char* name) {
+    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
+}
+
+QString lastDirectory() {
+    const QString stored = QSettings().value(kDirectoryKey).toString();
+    return stored.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
+                            : stored;
+}
+
+void rememberDirectory(const QString& path) {
+    QSettings().setValue(kDirectoryKey, QFileInfo(path).absolutePath());
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Preferences::load()) {
+    setObjectName(QStringLiteral("mainWindow"));
+    m_pages = new QStackedWidget(this);
+    m_pages->setObjectName(QStringLiteral("pages"));
+    setCentralWidget(m_pages);
+
+    m_welcomePage = new QWidget(m_pages);
+    m_welcomePage->setObjectName(QStringLiteral("welcomePage"));
+    m_projectPage = new ProjectPage(m_pages);
+    m_unitPage = new UnitPage(m_pages);
+    m_ioPage = new IoOptionsPage(m_pages);
+    m_variablesPage = new VariablesPage(m_pages);
+    m_textPage = new TextPage(m_pages);
+    m_ladderPage = new LadderPage(m_pages);
+    for (QWidget* page :
+         std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage, m_ioPage,
+                                         m_variablesPage, m_textPage, m_ladderPage})
+        m_pages->addWidget(page);
+
+    createActions();
+    createToolBar();
+    createDocks();
+    createMenus();
+    createStatusBar();
+    m_simulation = new SimulationMode(this);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
+
+    auto* welcome = new QVBoxLayout(m_welcomePage);
+    auto* heading = new QLabel(tr("<h2>No project is open</h2>"
+                                  "<p>Start a new project, open one, or look at the example from "
+                                  "the manual.</p>"),
+                               m_welcomePage);
+    heading->setAlignment(Qt::AlignCenter);
+    welcome->addStretch();
+    welcome->addWidget(heading);
+    auto* buttons = new QHBoxLayout;
+    buttons->addStretch();
+    for (QAction* action : {m_newAction, m_openAction, m_exampleAction}) {
+        auto* button =
+            new QPushButton(action->icon(), action->text().remove(QLatin1Char('&')), m_welcomePage);
+        connect(button, &QPushButton::clicked, action, &QAction::trigger);
+        buttons->addWidget(button);
+    }
+    buttons->addStretch();
+    welcome->addLayout(buttons);
+    welcome->addStretch();
+
+    connect(m_textPage, &TextPage::diagnosticsChanged, this, [this](const lang::Diagnostics& d) {
+        m_problems->setDiagnostics(d);
+        showSummary(d);
+    });
+    connect(m_textPage, &TextPage::repaired, this, [this](ProjectDocument* document) {
+        rebuildTree();
+        // The user was typing: the unit's code stays in the text editor.
+        showFirstPageOf(document, PageRef::Kind::Code);
+        showMessage(tr("The project reads without errors now; its pages are back."));
+    });
+    connect(m_ladderPage, &LadderPage::textRequested, this, [this] {
+        showPage({PageRef::Kind::Code, m_ladderPage->document(), m_ladderPage->station(),
+                  m_ladderPage->sequence()});
+    });
+    connect(m_ladderPage, &LadderPage::newSequenceRequested, this,
+            [this] { newSequence(m_ladderPage->document(), m_ladderPage->station()); });
+    connect(m_unitPage, &UnitPage::remanentRequested, this, &MainWindow::editRemanent);
+    connect(m_variablesPage, &VariablesPage::remanentRequested, this, &MainWindow::editRemanent);
+    connect(m_variablesPage, &VariablesPage::csvImportRequested, this, &MainWindow::importCsv);
+    connect(m_variablesPage, &VariablesPage::csvExportRequested, this, &MainWindow::exportCsv);
+    connect(&m_undoGroup, &QUndoGroup::canUndoChanged, this, &MainWindow::updateActions);
+    connect(&m_undoGroup, &QUndoGroup::canRedoChanged, this, &MainWindow::updateActions);
+    connect(&m_undoGroup, &QUndoGroup::undoTextChanged, this, &MainWindow::updateActions);
+    connect(&m_undoGroup, &QUndoGroup::redoTextChanged, this, &MainWindow::updateActions);
+    connect(&m_compileWatcher, &QFutureWatcher<Compiled>::finished, this,
+            &MainWindow::compileFinished);
+    connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
+    m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+
+    resize(1280, 800);
+    rebuildTree();
+    showPage(PageRef{});
+}
+
+MainWindow::~MainWindow() {
+    m_compileWatcher.waitForFinished();
+    for (ProjectDocument* document : m_documents) {
+        disconnect(document, nullptr, this, nullptr);
+        Autosave::release(document->autosaveId());
+    }
+}
+
+// ----- actions and menus
+
+void MainWindow::createActions() {
+    const auto action = [this](const QString& text, const char* name,
+                               const QKeySequence& shortcut = {}) {
+        auto* created = new QAction(text, this);
+        created->setObjectName(QString::fromLatin1(name));
+        created->setShortcut(shortcut);
+        return created;
+    };
+
+    m_newAction = action(tr("&New Project..."), "newAction", QKeySequence::New);
+    m_newAction->setIcon(icon("document-new"));
+    m_newAction->setStatusTip(tr("Start a new project"));
+    connect(m_newAction, &QAction::triggered, this, &MainWindow::newProject);
+
+    m_openAction = action(tr("&Open Project..."), "openAction", QKeySequence::Open);
+    m_openAction->setIcon(icon("document-open"));
+    m_openAction->setStatusTip(tr("Open a project file"));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::open);
+
+    m_saveAction = action(tr("&Save Project"), "saveAction", QKeySequence::Save);
+    m_saveAction->setIcon(icon("document-save"));
+    m_saveAction->setStatusTip(tr("Save the project"));
+    connect(m_saveAction, &QAction::triggered, this, [this] { saveDocument(currentDocument()); });
+
+    m_saveAsAction = action(tr("Save Project &As..."), "saveAsAction", QKeySequence::SaveAs);
+    m_saveAsAction->setStatusTip(tr("Save the project under a new name"));
+    connect(m_saveAsAction, &QAction::triggered, this,
+            [this] { saveDocumentAs(currentDocument()); });
+
+    m_saveAllAction =
+        action(tr("Save A&ll"), "saveAllAction", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+    m_saveAllAction->setIcon(icon("document-save-all"));
+    m_saveAllAction->setStatusTip(tr("Save every open project"));
+    connect(m_saveAllAction, &QAction::triggered, this, [this] {
+        for (ProjectDocument* document : std::vector<ProjectDocument*>(m_documents))
+            if (document->isModified() && !saveDocument(document))
+                return;
+    });
+
+    m_closeAction = action(tr("&Close Project"), "closeAction", QKeySequence::Close);
+    m_closeAction->setStatusTip(tr("Close the project"));
+    connect(m_closeAction, &QAction::triggered, this, [this] {
+        if (ProjectDocument* document = currentDocument())
+            closeDocument(document);
+    });
+
+    m_exportTextAction = action(tr("&Program Text..."), "exportTextAction");
+    m_exportTextAction->setStatusTip(
+        tr("Write the program in the language alone, for a text editor or the original compiler"));
+    connect(m_exportTextAction, &QAction::triggered, this,
+            [this] { exportProgramText(currentDocument()); });
+
+    m_quitAction = action(tr("&Quit"), "quitAction", QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_undoAction = action(tr("&Undo"), "undoAction", QKeySequence::Undo);
+    m_undoAction->setIcon(icon("edit-undo"));
+    connect(m_undoAction, &QAction::triggered, this, &MainWindow::undo);
+    m_redoAction = action(tr("&Redo"), "redoAction", QKeySequence::Redo);
+    m_redoAction->setIcon(icon("edit-redo"));
+    connect(m_redoAction, &QAction::triggered, this, &MainWindow::redo);
+
+    // The clipboard commands act on whatever text field has the focus.
+    auto forward = [](const char* slot) {
+        return [slot] {
+            if (QWidget* focus = QApplication::focusWidget())
+                QMetaObject::invokeMethod(focus, slot);
+        };
+    };
+    m_cutAction = action(tr("Cu&t"), "cutAction", QKeySequence::Cut);
+    connect(m_cutAction, &QAction::triggered, this, forward("cut"));
+    m_copyAction = action(tr("&Copy"), "copyAction", QKeySequence::Copy);
+    connect(m_copyAction, &QAction::triggered, this, forward("copy"));
+    m_pasteAction = action(tr("&Paste"), "pasteAction", QKeySequence::Paste);
+    connect(m_pasteAction, &QAction::triggered, this, forward("paste"));
+    m_selectAllAction = action(tr("Select &All"), "selectAllAction", QKeySequence::SelectAll);
+    connect(m_selectAllAction, &QAction::triggered, this, forward("selectAll"));
+
+    m_formatAction = action(tr("&Format Document"), "formatDocumentAction",
+                            QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    m_formatAction->setIcon(icon("format-document"));
+    m_formatAction->setStatusTip(tr("Rewrite the text in the canonical layout"));
+    connect(m_formatAction, &QAction::triggered, this, &MainWindow::formatDocument);
+
+    m_codeViewAction = action(tr("&Ladder or Text"), "codeViewAction", QKeySequence(Qt::Key_F6));
+    m_codeViewAction->setStatusTip(tr("Show the code as ladder networks or as text"));
+    connect(m_codeViewAction, &QAction::triggered, this, [this] {
+        PageRef other = m_current;
+        other.kind =
+            m_current.kind == PageRef::Kind::Code ? PageRef::Kind::Ladder : PageRef::Kind::Code;
+        showPage(other);
+    });
+
+    m_preferencesAction =
+        action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
+    m_preferencesAction->setIcon(icon("preferences"));
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+    connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::editPreferences);
+
+    m_newUnitAction = action(tr("New &Pluto..."), "newUnitAction");
+    m_newUnitAction->setIcon(icon("unit-new"));
+    m_newUnitAction->setStatusTip(tr("Add a Pluto unit to the project"));
+    connect(m_newUnitAction, &QAction::triggered, this, [this] { newUnit(currentDocument()); });
+    m_newSequenceAction = action(tr("New &Sequence..."), "newSequenceAction");
+    connect(m_newSequenceAction, &QAction::triggered, this,
+            [this] { newSequence(currentDocument(), m_current.station); });
+    m_removeUnitAction = action(tr("&Remove Pluto..."), "removeUnitAction");
+    connect(m_removeUnitAction, &QAction::triggered, this,
+            [this] { removeUnit(currentDocument(), m_current.station); });
+    m_remanentAction = action(tr("Re&manent Variables..."), "remanentAction");
+    connect(m_remanentAction, &QAction::triggered, this,
+            [this] { editRemanent(currentDocument(), m_current.station); });
+    m_importCsvAction = action(tr("&Import Variable Names (CSV)..."), "importCsvAction");
+    m_importCsvAction->setIcon(icon("import"));
+    connect(m_importCsvAction, &QAction::triggered, this,
+            [this] { importCsv(currentDocument(), m_current.station); });
+    m_exportCsvAction = action(tr("E&xport Variable Names (CSV)..."), "exportCsvAction");
+    m_exportCsvAction->setIcon(icon("export"));
+    connect(m_exportCsvAction, &QAction::triggered, this,
+            [this] { exportCsv(currentDocument(), m_current.station); });
+
+    m_compileAction = action(tr("&Compile"), "compileAction", QKeySequence(Qt::Key_F7));
+    m_compileAction->setIcon(icon("compile"));
+    m_compileAction->setStatusTip(tr("Check the project and write the compiled file (.hps)"));
+    connect(m_compileAction, &QAction::triggered, this, &MainWindow::compile);
+
+    m_exampleAction = action(tr("Open &Example Project"), "exampleAction");
+    m_exampleAction->setIcon(icon("example"));
+    connect(m_exampleAction, &QAction::triggered, this, &MainWindow::showExample);
+    m_aboutAction = action(tr("&About Rungsmith"), "aboutAction");
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->setObjectName(QStringLiteral("fileMenu"));
+    file->addAction(m_newAction);
+    file->addAction(m_openAction);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    file->addSeparator();
+    file->addAction(m_saveAction);
+    file->addAction(m_saveAsAction);
+    file->addAction(m_saveAllAction);
+    file->addAction(m_closeAction);
+    file->addSeparator();
+    QMenu* exportMenu = file->addMenu(tr("&Export"));
+    exportMenu->setObjectName(QStringLiteral("exportMenu"));
+    exportMenu->addAction(m_exportTextAction);
+    file->addSeparator();
+    file->addAction(m_quitAction);
+    // Another window may have changed the list since this one last showed it.
+    connect(file, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+    fillRecentMenu();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setObjectName(QStringLiteral("editMenu"));
+    edit->addAction(m_undoAction);
+    edit->addAction(m_redoAction);
+    edit->addSeparator();
+    edit->addAction(m_cutAction);
+    edit->addAction(m_copyAction);
+    edit->addAction(m_pasteAction);
+    edit->addSeparator();
+    edit->addAction(m_selectAllAction);
+    edit->addSeparator();
+    edit->addAction(m_formatAction);
+    edit->addSeparator();
+    edit->addAction(m_preferencesAction);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->setObjectName(QStringLiteral("viewMenu"));
+    viewMenu->addAction(m_treeDock->toggleViewAction());
+    viewMenu->addAction(m_problemsDock->toggleViewAction());
+    viewMenu->addAction(m_outputDock->toggleViewAction());
+    viewMenu->addAction(m_fileToolBar->toggleViewAction());
+    viewMenu->addSeparator();
+    viewMenu->addAction(m_codeViewAction);
+
+    QMenu* projectMenu = menuBar()->addMenu(tr("&Project"));
+    projectMenu->setObjectName(QStringLiteral("projectMenu"));
+    projectMenu->addAction(m_newUnitAction);
+    projectMenu->addAction(m_newSequenceAction);
+    projectMenu->addAction(m_removeUnitAction);
+    projectMenu->addSeparator();
+    projectMenu->addAction(m_remanentAction);
+    projectMenu->addAction(m_importCsvAction);
+    projectMenu->addAction(m_exportCsvAction);
+
+    QMenu* build = menuBar()->addMenu(tr("&Build"));
+    build->setObjectName(QStringLiteral("buildMenu"));
+    build->addAction(m_compileAction);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName(QStringLiteral("helpMenu"));
+    help->addAction(m_exampleAction);
+    help->addSeparator();
+    help->addAction(m_aboutAction);
+}
+
+void MainWindow::createToolBar() {
+    m_fileToolBar = addToolBar(tr("Main"));
+    m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
+    m_fileToolBar->setIconSize(QSize(20, 20));
+    m_fileToolBar->addAction(m_newAction);
+    m_fileToolBar->addAction(m_openAction);
+    m_fileToolBar->addAction(m_saveAction);
+    m_fileToolBar->addAction(m_saveAllAction);
+    m_fileToolBar->addSeparator();
+    m_fileToolBar->addAction(m_undoAction);
+    m_fileToolBar->addAction(m_redoAction);
+    m_fileToolBar->addSeparator();
+    m_fileToolBar->addAction(m_newUnitAction);
+    m_fileToolBar->addAction(m_formatAction);
+    m_fileToolBar->addSeparator();
+    m_fileToolBar->addAction(m_compileAction);
+}
+
+void MainWindow::createDocks() {
+    m_tree = new ProjectTree(this);
+    m_tree->setObjectName(QStringLiteral("projectTree"));
+    connect(m_tree, &ProjectTree::pageRequested, this,
+            [this](const PageRef& page) { showPage(page); });
+    connect(m_tree, &ProjectTree::menuRequested, this, &MainWindow::showTreeMenu);
+    m_treeDock = new QDockWidget(tr("Projects"), this);
+    m_treeDock->setObjectName(QStringLiteral("projectTreeDock"));
+    m_treeDock->setWidget(m_tree);
+    addDockWidget(Qt::LeftDockWidgetArea, m_treeDock);
+    resizeDocks({m_treeDock}, {260}, Qt::Horizontal);
+
+    m_problems = new ProblemsView(this);
+    m_problems->setObjectName(QStringLiteral("problemsView"));
+    connect(m_problems, &ProblemsView::problemActivated, this, [this](int line, int column) {
+        if (m_pages->currentWidget() == m_textPage)
+            m_textPage->editor()->goTo(line, column);
+    });
+    m_problemsDock = new QDockWidget(tr("Problems"), this);
+    m_problemsDock->setObjectName(QStringLiteral("problemsDock"));
+    m_problemsDock->setWidget(m_problems);
+    addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
+
+    m_output = new CompileOutput(this);
+    m_output->setObjectName(QStringLiteral("compileOutput"));
+    connect(m_output, &CompileOutput::placeActivated, this, &MainWindow::showCompilePlace);
+    m_outputDock = new QDockWidget(tr("Output"), this);
+    m_outputDock->setObjectName(QStringLiteral("outputDock"));
+    m_outputDock->setWidget(m_output);
+    addDockWidget(Qt::BottomDockWidgetArea, m_outputDock);
+    tabifyDockWidget(m_problemsDock, m_outputDock);
+    m_problemsDock->raise();
+    resizeDocks({m_problemsDock}, {140}, Qt::Vertical);
+}
+
+void MainWindow::createStatusBar() {
+    m_position = new QLabel(this);
+    m_position->setObjectName(QStringLiteral("cursorPositionLabel"));
+    m_summary = new QLabel(this);
+    m_summary->setObjectName(QStringLiteral("problemSummaryLabel"));
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("compileProgress"));
+    m_progress->setRange(0, 0); // the compiler reports no steps: busy, not a percentage
+    m_progress->setMaximumWidth(140);
+    m_progress->setFormat(tr("Compiling"));
+    m_progress->hide();
+    statusBar()->addPermanentWidget(m_progress);
+    for (QLabel* label : {m_position, m_summary}) {
+        label->setContentsMargins(8, 0, 8, 0);
+        statusBar()->addPermanentWidget(label);
+    }
+    connect(m_textPage->editor(), &QsciScintilla::cursorPositionChanged, this,
+            [this](int line, int index) {
+                m_position->setText(tr("Line %1, Column %2").arg(line + 1).arg(index + 1));
+            });
+    m_position->setText(tr("Line %1, Column %2").arg(1).arg(1));
+    showSummary({});
+}
+
+// ----- projects
+
+ProjectDocument* MainWindow::currentDocument() const {
+    if (m_current.document)
+        return m_current.document;
+    return m_documents.empty() ? nullptr : m_documents.back();
+}
+
+ProgramEditor* MainWindow::editor() const {
+    return m_textPage->editor();
+}
+
+void MainWindow::addDocument(ProjectDocument* document) {
+    document->setParent(this);
+    m_documents.push_back(document);
+    m_undoGroup.addStack(document->undoStack());
+    connect(document, &ProjectDocument::changed, this, [this] {
+        rebuildTree();
+        updateTitle();
+    });
+    connect(document, &ProjectDocument::modificationChanged, this, [this, document](bool modified) {
+        if (!modified)
+            Autosave::remove(document->autosaveId());
+        updateTitle();
+    });
+    connect(document, &ProjectDocument::pathChanged, this, &MainWindow::updateTitle);
+    rebuildTree();
+}
+
+void MainWindow::removeDocument(ProjectDocument* document) {
+    Autosave::remove(document->autosaveId());
+    m_undoGroup.removeStack(document->undoStack());
+    std::erase(m_documents, document);
+    if (m_current.document == document) {
+        m_current = {};
+        m_textPage->showUnit(nullptr, 0);
+    }
+    rebuildTree();
+    document->deleteLater();
+    if (m_documents.empty())
+        showPage(PageRef{});
+    else
+        showFirstPageOf(m_documents.back());
+}
+
+void MainWindow::rebuildTree() {
+    m_tree->setDocuments(m_documents);
+    m_tree->select(m_current);
+}
+
+void MainWindow::showFirstPageOf(ProjectDocument* document, PageRef::Kind codeView) {
+    if (document->isDamaged()) {
+        showPage({PageRef::Kind::ProjectText, document, TextPage::kWholeProject});
+        return;
+    }
+    const auto stations = document->project().stations();
+    if (stations.empty())
+        showPage({PageRef::Kind::Project, document});
+    else
+        showPage({codeView, document, stations.front(), 0});
+}
+
+QString MainWindow::loadFile(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    for (ProjectDocument* document : m_documents) {
+        if (document->path() == absolute) {
+            showFirstPageOf(document);
+            return {};
+        }
+    }
+    QString error;
+    ProjectDocument* document = ProjectDocument::open(path, error, this);
+    if (!document)
+        return error;
+    addDocument(document);
+    showFirstPageOf(document);
+    return {};
+}
+
+bool MainWindow::openFile(const QString& path) {
+    const QString error = loadFile(path);
+    if (error.isEmpty()) {
+        m_recentFiles.add(QFileInfo(path).absoluteFilePath());
+        rememberDirectory(path);
+        ProjectDocument* document = currentDocument();
+        showMessage(document && document->isDamaged()
+                        ? tr("Opened %1. It has errors: fix them in its text.")
+                              .arg(QDir::toNativeSeparators(path))
+                        : tr("Opened %1").arg(QDir::toNativeSeparators(path)));
+        return true;
+    }
+    QMessageBox box(QMessageBox::Warning, tr("Open Project"),
+                    tr("Could not open “%1”.").arg(QDir::toNativeSeparators(path)), QMessageBox::Ok,
+                    this);
+    box.setInformativeText(error);
+    box.exec();
+    return false;
+}
+
+void MainWindow::showExample() {
+    const project::FileText file = project::readTextFile(kExamplePath);
+    ProjectDocument* document =
+        ProjectDocument::fromText(QByteArray::fromStdString(file.text), this);
+    addDocument(document);
+    showFirstPageOf(document);
+}
+
+ProjectDocument* MainWindow::createProject(const QString& name, const QString& description,
+                                           bool includeSource) {
+    auto* document = new ProjectDocument(
+        project::newProject(name.toStdString(), description.toStdString(), includeSource), this);
+    document->setModifiedWithoutUndo(true);
+    addDocument(document);
+    showPage({PageRef::Kind::Project, document});
+    return document;
+}
+
+void MainWindow::newProject() {
+    NewProjectDialog dialog(this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    ProjectDocument* document =
+        createProject(dialog.name(), dialog.description(), dialog.includeSource());
+    // The manual's next step: the project's first unit.
+    newUnit(document);
+}
+
+void MainWindow::open() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), lastDirectory(),
+                                                      projectFileFilter());
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::saveDocument(ProjectDocument* document) {
+    if (!document)
+        return false;
+    if (document->path().isEmpty() || document->path().startsWith(QLatin1Char(':')))
+        return saveDocumentAs(document);
+    return saveDocumentAs(document, document->path());
+}
+
+bool MainWindow::saveDocumentAs(ProjectDocument* document, const QString& requested) {
+    if (!document)
+        return false;
+    if (m_textPage->document() == document && !m_textPage->applyNow() &&
+        m_textPage->station() != TextPage::kWholeProject) {
+        const auto answer = QMessageBox::warning(
+            this, tr("Save Project"),
+            tr("The code of Pluto %1 has errors, so your last changes to it are not part of the "
+               "project. Save the project without them?")
+                .arg(m_textPage->station()),
+            QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Save)
+            return false;
+    }
+    QString path = requested;
+    if (path.isEmpty()) {
+        const QString suggestion =
+            document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
+                ? QDir(lastDirectory()).filePath(document->displayName())
+                : document->path();
+        path = QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestion,
+                                            projectFileFilter());
+        if (path.isEmpty())
+            return false;
+        if (QFileInfo(path).suffix().isEmpty())
+            path += QStringLiteral(".sps");
+    }
+    const QString error = document->saveTo(path);
+    if (!error.isEmpty()) {
+        QMessageBox box(QMessageBox::Critical, tr("Save Project"),
+                        tr("Could not save “%1”.").arg(QDir::toNativeSeparators(path)),
+                        QMessageBox::Ok, this);
+        box.setInformativeText(error);
+        box.exec();
+        return false;
+    }
+    m_recentFiles.add(document->path());
+    rememberDirectory(path);
+    showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document->path())));
+    return true;
+}
+
+bool MainWindow::maybeSave(ProjectDocument* document) {
+    if (!document->isModified())
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved Changes"),
+        tr("“%1” has changes that are not saved. Save them?").arg(document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return saveDocument(document);
+    return answer == QMessageBox::Discard;
+}
+
+bool MainWindow::closeDocument(ProjectDocument* document) {
+    if (!document || !maybeSave(document))
+        return false;
+    removeDocument(document);
+    return true;
+}
+
+bool MainWindow::exportProgramText(ProjectDocument* document, const QString& requested) {
+    if (!document || document->isDamaged())
+        return false;
+    QString path = requested;
+    if (path.isEmpty()) {
+        const QString base =
+            document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
+                ? QDir(lastDirectory()).filePath(document->displayName())
+                : document->path();
+        const QFileInfo info(base);
+        path = QFileDialog::getSaveFileName(
+            this, tr("Export Program Text"),
+            info.dir().filePath(info.completeBaseName() + tr("-program") + QStringLiteral(".sps")),
+            projectFileFilter());
+        if (path.isEmpty())
+            return false;
+    }
+    const QString error = project::writeTextFile(path, project::programText(document->project()));
+    if (!error.isEmpty()) {
+        QMessageBox::critical(this, tr("Export Program Text"), error);
+        return false;
+    }
+    showMessage(tr("Wrote the program text to %1").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+// ----- pages
+
+bool MainWindow::leaveTextPage() {
+    if (m_pages->currentWidget() != m_textPage || !m_textPage->document() ||
+        m_textPage->station() == TextPage::kWholeProject || m_textPage->applyNow())
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Code With Errors"),
+                    tr("The code of Pluto %1 has errors, so it cannot be read into the project.")
+                        .arg(m_textPage->station()),
+                    QMessageBox::NoButton, this);
+    box.setInformativeText(tr("Keep editing to fix them, or discard the changes since the code "
+                              "last read without errors."));
+    QPushButton* keep = box.addButton(tr("&Keep Editing"), QMessageBox::RejectRole);
+    QAbstractButton* discard = box.addButton(QMessageBox::Discard);
+    box.setDefaultButton(keep);
+    box.exec();
+    if (box.clickedButton() != discard) {
+        m_tree->select(m_current);
+        return false;
+    }
+    m_textPage->discardChanges();
+    return true;
+}
+
+bool MainWindow::showPage(const PageRef& page) {
+    if (page == m_current && page.kind != PageRef::Kind::None)
+        return true;
+    const bool sameText = page.kind == PageRef::Kind::Code &&
+                          m_current.kind == PageRef::Kind::Code &&
+                          page.document == m_current.document && page.station == m_current.station;
+    if (!sameText && !leaveTextPage())
+        return false;
+    m_current = page;
+    ProjectDocument* document = page.document;
+    switch (page.kind) {
+    case PageRef::Kind::None:
+        m_pages->setCurrentWidget(m_welcomePage);
+        if (!m_documents.empty())
+            m_current.document = nullptr;
+        break;
+    case PageRef::Kind::Project:
+        m_projectPage->showProject(document);
+        m_pages->setCurrentWidget(m_projectPage);
+        break;
+    case PageRef::Kind::Unit:
+        m_unitPage->showUnit(document, page.station);
+        m_pages->setCurrentWidget(m_unitPage);
+        break;
+    case PageRef::Kind::IoOptions:
+        m_ioPage->showUnit(document, page.station);
+        m_pages->setCurrentWidget(m_ioPage);
+        break;
+    case PageRef::Kind::Variables:
+        m_variablesPage->showUnit(document, page.station);
+        m_pages->setCurrentWidget(m_variablesPage);
+        break;
+    case PageRef::Kind::ProjectText:
+    case PageRef::Kind::Code:
+        if (!sameText || m_textPage->document() != document)
+            m_textPage->showUnit(document, page.station);
+        m_pages->setCurrentWidget(m_textPage);
+        if (page.kind == PageRef::Kind::Code)
+            m_textPage->showSequence(page.sequence);
+        break;
+    case PageRef::Kind::Ladder:
+        m_ladderPage->showUnit(document, page.station, page.sequence);
+        m_pages->setCurrentWidget(m_ladderPage);
+        break;
+    }
+    const bool onText = m_pages->currentWidget() == m_textPage;
+    if (!onText) {
+        m_problems->setDiagnostics({});
+        showSummary({});
+    }
+    m_position->setVisible(onText);
+    m_summary->setVisible(onText);
+    if (document)
+        m_undoGroup.setActiveStack(document->undoStack());
+    m_tree->select(m_current);
+    updateTitle();
+    updateActions();
+    emit pageChanged();
+    return true;
+}
+
+bool MainWindow::showPage(PageRef::Kind kind, int station, int sequence) {
+    ProjectDocument* document = currentDocument();
+    if (document && kind == PageRef::Kind::Project)
+        return showPage(PageRef{kind, document});
+    if (!document || !project::unitSettings(document->project(), station))
+        return false;
+    if (sequence != 0) {
+        const std::vector<int> sequences = project::sequencesOf(document->project(), station);
+        if ((kind != PageRef::Kind::Code && kind != PageRef::Kind::Ladder) ||
+            std::find(sequences.begin(), sequences.end(), sequence) == sequences.end())
+            return false;
+    }
+    return showPage(PageRef{kind, document, station, sequence});
+}
+
+bool MainWindow::showUnit(int station) {
+    return showPage(PageRef::Kind::Code, station);
+}
+
+void MainWindow::updateTitle() {
+    ProjectDocument* document = currentDocument();
+    if (!document) {
+        setWindowTitle(QStringLiteral("Rungsmith"));
+        setWindowModified(false);
+        return;
+    }
+    setWindowTitle(QStringLiteral("%1[*] — Rungsmith").arg(document->displayName()));
+    setWindowModified(document->isModified());
+}
+
+void MainWindow::updateActions() {
+    ProjectDocument* document = currentDocument();
+    const bool hasDocument = document != nullptr;
+    const bool healthy = hasDocument && !document->isDamaged();
+    const bool inUnit = healthy && m_current.station >= 0 &&
+                        project::unitSettings(document->project(), m_current.station).has_value();
+    const bool onText = m_pages->currentWidget() == m_textPage;
+    m_saveAction->setEnabled(hasDocument);
+    m_saveAsAction->setEnabled(hasDocument);
+    m_saveAllAction->setEnabled(!m_documents.empty());
+    m_closeAction->setEnabled(hasDocument);
+    m_exportTextAction->setEnabled(healthy);
+    m_newUnitAction->setEnabled(healthy && !project::freeStations(document->project()).empty());
+    m_newSequenceAction->setEnabled(inUnit);
+    m_removeUnitAction->setEnabled(inUnit);
+    m_remanentAction->setEnabled(
+        inUnit && project::unitTypeOf(document->project(), m_current.station).remanent);
+    m_importCsvAction->setEnabled(inUnit);
+    m_exportCsvAction->setEnabled(inUnit);
+    m_compileAction->setEnabled(hasDocument && !isCompiling());
+    m_formatAction->setEnabled(onText);
+    m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
+                                 m_current.kind == PageRef::Kind::Ladder);
+    if (onText && m_textPage->station() == TextPage::kWholeProject) {
+        m_undoAction->setEnabled(true);
+        m_redoAction->setEnabled(true);
+        m_undoAction->setText(tr("&Undo"));
+        m_redoAction->setText(tr("&Redo"));
+        return;
+    }
+    m_undoAction->setEnabled(m_undoGroup.canUndo());
+    m_redoAction->setEnabled(m_undoGroup.canRedo());
+    m_undoAction->setText(m_undoGroup.canUndo() ? tr("&Undo %1").arg(m_undoGroup.undoText())
+                                                : tr("&Undo"));
+    m_redoAction->setText(m_undoGroup.canRedo() ? tr("&Redo %1").arg(m_undoGroup.redoText())
+                                                : tr("&Redo"));
+}
+
+// ----- edits
+
+void MainWindow::undo() {
+    if (m_pages->currentWidget() == m_textPage) {
+        if (m_textPage->station() == TextPage::kWholeProject) {
+            m_textPage->editor()->undo();
+            return;
+        }
+        // Typing not yet read is an edit of its own: undo takes it back first.
+        m_textPage->applyNow();
+    }
+    m_undoGroup.undo();
+}
+
+void MainWindow::redo() {
+    if (m_pages->currentWidget() == m_textPage &&
+        m_textPage->station() == TextPage::kWholeProject) {
+        m_textPage->editor()->redo();
+        return;
+    }
+    m_undoGroup.redo();
+}
+
+void MainWindow::formatDocument() {
+    if (m_pages->currentWidget() != m_textPage)
+        return;
+    if (!m_textPage->formatText()) {
+        showMessage(tr("Not formatted: the text has %n error(s).", nullptr,
+                       lang::errorCount(m_textPage->diagnostics())));
+        return;
+    }
+    showMessage(tr("Formatted."));
+}
+
+void MainWindow::newUnit(ProjectDocument* document) {
+    if (!document || document->isDamaged())
+        return;
+    if (project::freeStations(document->project()).empty()) {
+        QMessageBox::information(this, tr("New Pluto"),
+                                 tr("The project has 32 units, the most a bus can have."));
+        return;
+    }
+    NewUnitDialog dialog(document->project(), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const project::UnitSettings settings = dialog.settings();
+    QString refusal;
+    document->edit(tr("New Pluto %1").arg(settings.station), [&](project::Project& p) {
+        if (auto problem = project::addUnit(p, settings))
+            refusal = QString::fromStdString(*problem);
+    });
+    if (!refusal.isEmpty()) {
+        QMessageBox::warning(this, tr("New Pluto"), refusal);
+        return;
+    }
+    showPage({PageRef::Kind::Unit, document, settings.station});
+}
+
+void MainWindow::newSequence(ProjectDocument* document, int station) {
+    if (!document || station < 0)
+        return;
+    const std::vector<int> free = project::freeSequences(document->project(), station);
+    if (free.empty()) {
+        QMessageBox::information(this, tr("New Sequence"),
+                                 tr("Pluto %1 has all nine sequences.").arg(station));
+        return;
+    }
+    QStringList choices;
+    for (int sequence : free)
+        choices << QString::number(sequence);
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(
+        this, tr("New Sequence"), tr("Sequence number for Pluto %1 (1-9):").arg(station), choices,
+        0, false, &ok);
+    if (!ok)
+        return;
+    const int sequence = chosen.toInt();
+    document->edit(tr("New Sequence %1 of Pluto %2").arg(sequence).arg(station),
+                   [&](project::Project& p) { project::addSequence(p, station, sequence); });
+    showPage({m_current.kind == PageRef::Kind::Ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code,
+              document, station, sequence});
+}
+
+void MainWindow::removeUnit(ProjectDocument* document, int station) {
+    if (!document || !project::unitSettings(document->project(), station))
+        return;
+    const auto answer = QMessageBox::question(
+        this, tr("Remove Pluto"),
+        tr("Remove %1 with its code, names and descriptions from the project? Edit > Undo brings "
+           "it back.")
+            .arg(unitCaption(document->project(), station)));
+    if (answer != QMessageBox::Yes)
+        return;
+    if (m_current.document == document && m_current.station == station)
+        showPage({PageRef::Kind::Project, document});
+    document->edit(tr("Remove Pluto %1").arg(station),
+                   [&](project::Project& p) { project::removeUnit(p, station); });
+}
+
+void MainWindow::editRemanent(ProjectDocument* document, int station) {
+    if (!document || !project::unitTypeOf(document->project(), station).remanent)
+        return;
+    RemanentDialog dialog(station, project::remanentOf(document->project(), station), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const std::set<lang::Address> selection = dialog.selection();
+    QString refusal;
+    document->edit(tr("Set Remanent Variables of Pluto %1").arg(station), [&](project::Project& p) {
+        if (auto problem = project::setRemanent(p, station, selection))
+            refusal = QString::fromStdString(*problem);
+    });
+    if (!refusal.isEmpty())
+        QMessageBox::warning(this, tr("Remanent Variables"), refusal);
+}
+
+void MainWindow::importCsv(ProjectDocument* document, int station) {
+    if (!document)
+        return;
+    CsvImportDialog dialog(document->project(), station, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    document->replace(tr("Import Variable Names to Pluto %1").arg(station),
+                      dialog.result().project);
+    showMessage(
+        tr("Imported %n variable(s).", nullptr, static_cast<int>(dialog.result().changes.size())));
+}
+
+void MainWindow::exportCsv(ProjectDocument* document, int station) {
+    if (!document)
+        return;
+    const QFileInfo base(document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
+                             ? QDir(lastDirectory()).filePath(document->displayName())
+                             : document->path());
+    CsvExportDialog dialog(
+        station,
+        base.dir().filePath(
+            QStringLiteral("%1-pluto%2.csv").arg(base.completeBaseName()).arg(station)),
+        this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const std::string csv = project::exportVariablesCsv(document->project(), dialog.options());
+    const QString error = project::writeTextFile(dialog.path(), csv);
+    if (!error.isEmpty()) {
+        QMessageBox::critical(this, tr("Export Variable Names"), error);
+        return;
+    }
+    showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(dialog.path())));
+}
+
+void MainWindow::editPreferences() {
+    PreferencesDialog dialog(m_preferences, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const Preferences chosen = dialog.preferences();
+    const bool themeChanged = chosen.theme != m_preferences.theme;
+    m_preferences = chosen;
+    m_preferences.save();
+    if (themeChanged)
+        applyTheme(m_preferences.theme);
+    m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+    m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
+}
+
+void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition) {
+    QMenu menu(this);
+    ProjectDocument* document = page.document;
+    auto add = [&](const QString& text, auto&& run) {
+        connect(menu.addAction(text), &QAction::triggered, this, run);
+    };
+    switch (page.kind) {
+    case PageRef::Kind::None:
+        menu.addAction(m_newAction);
+        menu.addAction(m_openAction);
+        break;
+    case PageRef::Kind::Project:
+    case PageRef::Kind::ProjectText:
+        if (!document->isDamaged())
+            add(tr("New &Pluto..."), [this, document] { newUnit(document); });
+        add(tr("&Save Project"), [this, document] { saveDocument(document); });
+        add(tr("Save Project &As..."), [this, document] { saveDocumentAs(document); });
+        if (!document->isDamaged())
+            add(tr("Export Program &Text..."), [this, document] { exportProgramText(document); });
+        menu.addSeparator();
+        add(tr("&Close Project"), [this, document] { closeDocument(document); });
+        break;
+    case PageRef::Kind::Variables:
+        add(tr("&Import Variable Names to Pluto..."),
+            [this, document, page] { importCsv(document, page.station); });
+        add(tr("E&xport Variable Names from Pluto..."),
+            [this, document, page] { exportCsv(document, page.station); });
+        if (project::unitTypeOf(document->project(), page.station).remanent)
+            add(tr("&Remanent Variables..."),
+                [this, document, page] { editRemanent(document, page.station); });
+        break;
+    case PageRef::Kind::Unit:
+    case PageRef::Kind::IoOptions:
+    case PageRef::Kind::Code:
+    case PageRef::Kind::Ladder:
+        add(tr("New &Sequence..."),
+            [this, document, page] { newSequence(document, page.station); });
+        menu.addSeparator();
+        add(tr("&Remove Pluto..."), [this, document, page] { removeUnit(document, page.station); });
+        break;
+    }
+    menu.exec(globalPosition);
+}
+
+// ----- compiling
+
+bool MainWindow::isCompiling() const {
+    return m_compileRunning;
+}
+
+void MainWindow::compile() {
+    ProjectDocument* document = currentDocument();
+    if (!document || isCompiling())
+        return;
+    if (m_textPage->document() == document)
+        m_textPage->applyNow();
+    m_compiling = document;
+    m_compileRunning = true;
+    m_compiledText = document->isDamaged() ? document->damagedText().toStdString()
+                                           : project::writeProject(document->project());
+    compiler::CheckOptions options;
+    options.warnUnconfiguredIo = m_preferences.warnUnconfiguredIo;
+    m_output->showRunning(document->displayName());
+    m_outputDock->show();
+    m_outputDock->raise();
+    m_progress->show();
+    statusBar()->showMessage(tr("Compiling %1...").arg(document->displayName()));
+    // The image goes beside a project that has a file of its own; it is made
+    // and written on the worker too, as a large one takes a while.
+    QString imagePath;
+    if (!document->path().isEmpty() && !document->path().startsWith(QLatin1Char(':'))) {
+        const QFileInfo info(document->path());
+        imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
+    }
+    m_compileWatcher.setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath] {
+        Compiled compiled{compiler::compileText(text, options), {}, {}};
+        if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
+            try {
+                compiled.imageError =
+                    project::writeTextFile(imagePath, compiler::writeHps(compiled.result.images));
+            } catch (const std::exception& e) {
+                // An image the Intel HEX writer refuses (issue 13): said, not a crash.
+                compiled.imageError = QString::fromUtf8(e.what());
+            }
+            if (compiled.imageError.isEmpty())
+                compiled.imagePath = imagePath;
+        }
+        return compiled;
+    }));
+    updateActions();
+}
+
+void MainWindow::compileFinished() {
+    m_compileRunning = false;
+    m_progress->hide();
+    const Compiled compiled = m_compileWatcher.result();
+    const compiler::CompileResult& result = compiled.result;
+    ProjectDocument* document = m_compiling;
+    const QString written = QDir::toNativeSeparators(compiled.imagePath);
+    m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
+                         written, compiled.imageError);
+    if (!compiled.imageError.isEmpty())
+        QMessageBox::warning(this, tr("Compile"), compiled.imageError);
+    if (document && m_ladderPage->document() == document) {
+        // The ladder marks the elements the diagnostics of its unit concern.
+        lang::Diagnostics onLadder;
+        for (lang::Diagnostic diagnostic : result.diagnostics) {
+            const project::TextPlace place = project::placeOfLine(m_compiledText, diagnostic.line);
+            if (place.kind != project::TextPlace::Kind::UnitCode ||
+                place.station != m_ladderPage->station())
+                continue;
+            diagnostic.line = place.line;
+            onLadder.push_back(diagnostic);
+        }
+        m_ladderPage->setDiagnostics(onLadder);
+    }
+    if (document && result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
+        showMessage(tr("Compiled without errors. Save the project to write the compiled file."));
+    else
+        statusBar()->showMessage(m_output->closingLine(), kStatusMessageMs);
+    updateActions();
+}
+
+void MainWindow::showCompilePlace(const project::TextPlace& place, int column) {
+    ProjectDocument* document = m_compiling ? m_compiling.data() : currentDocument();
+    if (!document)
+        return;
+    using Kind = project::TextPlace::Kind;
+    switch (place.kind) {
+    case Kind::UnitCode:
+        if (showPage({PageRef::Kind::Code, document, place.station, m_current.sequence}))
+            m_textPage->editor()->goTo(place.line, column);
+        return;
+    case Kind::Unit:
+        showPage({PageRef::Kind::Unit, document, place.station});
+        return;
+    case Kind::Variable:
+        if (showPage({PageRef::Kind::Variables, document, place.station}))
+            m_variablesPage->showVariable(place.address);
+        return;
+    case Kind::Project:
+        showPage(document->isDamaged()
+                     ? PageRef{PageRef::Kind::ProjectText, document, TextPage::kWholeProject}
+                     : PageRef{PageRef::Kind::Project, document});
+        return;
+    }
+}
+
+// ----- autosave
+
+void MainWindow::autosaveNow() {
+    for (ProjectDocument* document : m_documents) {
+        if (!document->isModified())
+            continue;
+        if (m_textPage->document() == document)
+            m_textPage->applyNow();
+        const QString error = Autosave::write(*document);
+        if (!error.isEmpty())
+            statusBar()->showMessage(tr("Autosave failed: %1").arg(error), kStatusMessageMs);
+    }
+}
+
+int MainWindow::recoverAutosaved() {
+    const QList<Autosave::Copy> copies = Autosave::copies();
+    if (copies.isEmpty())
+        return 0;
+    QStringList names;
+    for (const auto& copy : copies)
+        names << QStringLiteral("%1 (%2)").arg(
+            copy.displayName, QLocale().toString(copy.written, QLocale::ShortFormat));
+    QMessageBox box(QMessageBox::Question, tr("Recover Projects"),
+                    tr("Rungsmith was not closed properly. These projects have changes that were "
+                       "saved automatically:"),
+                    QMessageBox::NoButton, this);
+    box.setInformativeText(names.join(QLatin1Char('\n')));
+    QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+    box.setDefaultButton(recover);
+    QAbstractButton* discard = box.addButton(QMessageBox::Discard);
+    box.exec();
+    if (box.clickedButton() == discard) {
+        for (const auto& copy : copies)
+            Autosave::remove(copy.id);
+        return 0;
+    }
+    if (box.clickedButton() != recover) // closed without an answer: ask again next time
+        return 0;
+    int recovered = 0;
+    for (const auto& copy : copies) {
+        const project::FileText file = project::readTextFile(copy.copyPath);
+        if (!file.error.isEmpty())
+            continue;
+        ProjectDocument* document =
+            ProjectDocument::fromText(QByteArray::fromStdString(file.text), this);
+        document->setAutosaveId(copy.id);
+        if (!copy.path.isEmpty())
+            document->setPath(copy.path);
+        document->setModifiedWithoutUndo(true);
+        addDocument(document);
+        showFirstPageOf(document);
+        ++recovered;
+    }
+    return recovered;
+}
+
+// ----- the rest
+
+void MainWindow::showSummary(const lang::Diagnostics& diagnostics) {
+    const int errors = lang::errorCount(diagnostics);
+    const int warnings = static_cast<int>(diagnostics.size()) - errors;
+    m_summary->setText(tr("%n error(s)", nullptr, errors) + QStringLiteral(", ") +
+                       tr("%n warning(s)", nullptr, warnings));
+}
+
+void MainWindow::showMessage(const QString& message) {
+    statusBar()->showMessage(message, kStatusMessageMs);
+}
+
+void MainWindow::about() {
+    QMessageBox::about(
+        this, tr("About Rungsmith"),
+        tr("<h3>Rungsmith %1</h3>"
+           "<p>An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the "
+           "program as ladder and as text, checked, compiled and simulated.</p>"
+           "<p>Built with Qt %2 and QScintilla %3.</p>")
+            .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion()),
+                 QStringLiteral(QSCINTILLA_VERSION_STR)));
+}
+
+void MainWindow::fillRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList paths = m_recentFiles.paths();
+    for (int i = 0; i < paths.size(); ++i) {
+        const QString shown =
+            fontMetrics().elidedText(QDir::toNativeSeparators(paths[i]), Qt::ElideMiddle, 480);
+        QAction* entry = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(
+            QString(shown).replace(QLatin1Char('&'), QStringLiteral("&&"))));
+        entry->setStatusTip(paths[i]);
+        connect(entry, &QAction::triggered, this, [this, path = paths[i]] { openFile(path); });
+    }
+    if (!paths.isEmpty()) {
+        m_recentMenu->addSeparator();
+        m_recentMenu->addAction(tr("&Clear Menu"), this, [this] { m_recentFiles.clear(); });
+    }
+    m_recentMenu->menuAction()->setEnabled(!paths.isEmpty());
+}
+
+void MainWindow::restoreLayout() {
+    const QSettings settings;
+    if (settings.contains(kGeometryKey))
+        restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!leaveTextPage()) {
+        event->ignore();
+        return;
+    }
+    for (ProjectDocument* document : m_documents) {
+        if (!maybeSave(document)) {
+            event->ignore();
+            return;
+        }
+    }
+    for (ProjectDocument* document : m_documents)
+        Autosave::remove(document->autosaveId());
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    event->accept();
+}
+
+} // namespace rs::ui

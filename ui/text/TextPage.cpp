@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "text/TextPage.h"
+
+#include "document/ProjectDocument.h"
+#include "project/ProjectFile.h"
+#include "project/UnitText.h"
+#include "shell/PageTitle.h"
+#include "shell/UnitCaption.h"
+#include "text/ProgramEditor.h"
+
+#include <QRegularExpression>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+namespace {
+
+std::string_view view(const QByteArray& bytes) {
+    return {bytes.constData(), static_cast<std::size_t>(bytes.size())};
+}
+
+} // namespace
+
+TextPage::TextPage(QWidget* parent)
+    : QWidget(parent), m_title(new PageTitle(this)), m_editor(new ProgramEditor(this)) {
+    m_editor->setObjectName(QStringLiteral("programEditor"));
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_title);
+    layout->addWidget(m_editor, 1);
+
+    m_applyTimer.setSingleShot(true);
+    m_applyTimer.setInterval(kApplyDelayMs);
+    connect(&m_applyTimer, &QTimer::timeout, this, &TextPage::applyNow);
+    connect(m_editor, &QsciScintilla::textChanged, this, [this] {
+        if (m_settingText)
+            return;
+        if (m_document && m_station == kWholeProject)
+            m_document->setDamagedText(m_editor->textBytes());
+        m_applyTimer.start();
+    });
+}
+
+void TextPage::showUnit(ProjectDocument* document, int station) {
+    if (m_document)
+        disconnect(m_document, nullptr, this, nullptr);
+    m_applyTimer.stop();
+    m_document = document;
+    m_station = station;
+    m_hasErrors = false;
+    if (!document) {
+        setEditorText({}, false);
+        setDiagnostics({});
+        return;
+    }
+    connect(document, &ProjectDocument::changed, this, &TextPage::followModel);
+    connect(document, &ProjectDocument::pathChanged, this, &TextPage::updateTitle);
+    // The project's undo stack undoes the code too, except in a damaged
+    // project, which has none yet.
+    m_editor->setProjectUndo(station != kWholeProject);
+    if (station == kWholeProject) {
+        setEditorText(document->damagedText(), false);
+        m_canonical.clear();
+        m_shown.clear();
+    } else {
+        m_canonical = QByteArray::fromStdString(project::unitText(document->project(), station));
+        m_shown = m_canonical;
+        setEditorText(m_canonical, false);
+    }
+    updateTitle();
+    applyNow();
+}
+
+void TextPage::updateTitle() {
+    if (!m_document)
+        return;
+    if (m_station == kWholeProject) {
+        m_title->setTitle(tr("%1 — Project Text").arg(m_document->displayName()));
+        m_title->setSubtitle(tr("This file has errors, so it is shown as text until they are "
+                                "fixed. Lines with errors could not be shown on the other pages."));
+    } else {
+        m_title->setTitle(tr("%1 — PLC Code").arg(unitCaption(m_document->project(), m_station)));
+        m_title->setSubtitle({});
+    }
+}
+
+bool TextPage::showSequence(int sequence) {
+    if (sequence == 0) { // the unit's code from its first line: declarations, then sequence 0
+        m_editor->goTo(1, 1);
+        return true;
+    }
+    const QString text = QString::fromUtf8(m_editor->textBytes());
+    const QRegularExpression header(
+        QStringLiteral("^\\s*S0*%1\\.0*%2_\\d+").arg(m_station).arg(sequence),
+        QRegularExpression::CaseInsensitiveOption | QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch match = header.match(text);
+    if (!match.hasMatch())
+        return false;
+    const int line = static_cast<int>(text.left(match.capturedStart()).count(QLatin1Char('\n')));
+    m_editor->goTo(line + 1, 1);
+    return true;
+}
+
+bool TextPage::applyNow() {
+    m_applyTimer.stop();
+    if (!m_document)
+        return true;
+    const QByteArray text = m_editor->textBytes();
+    if (m_station == kWholeProject) {
+        project::ProjectReadResult read = project::readProject(view(text));
+        setDiagnostics(read.diagnostics);
+        m_hasErrors = !read.ok();
+        if (!m_hasErrors && m_document->isDamaged()) {
+            m_document->repair(std::move(read.project));
+            emit repaired(m_document);
+        }
+        return !m_hasErrors;
+    }
+    project::UnitTextResult read =
+        project::readUnitText(m_document->project(), m_station, view(text));
+    setDiagnostics(read.diagnostics);
+    m_hasErrors = !read.ok();
+    if (m_hasErrors || text == m_shown)
+        return !m_hasErrors;
+    m_canonical = QByteArray::fromStdString(project::unitText(read.project, m_station));
+    m_shown = text;
+    m_applying = true;
+    m_document->replace(tr("Edit Code of Pluto %1").arg(m_station), read.project);
+    m_applying = false;
+    return true;
+}
+
+void TextPage::discardChanges() {
+    m_applyTimer.stop();
+    if (!m_document || m_station == kWholeProject)
+        return;
+    m_canonical = QByteArray::fromStdString(project::unitText(m_document->project(), m_station));
+    m_shown = m_canonical;
+    setEditorText(m_canonical, true);
+    m_hasErrors = false;
+    applyNow();
+}
+
+bool TextPage::formatText() {
+    if (!applyNow())
+        return false;
+    QByteArray formatted;
+    if (m_station == kWholeProject)
+        formatted = m_document->fileText();
+    else
+        formatted = QByteArray::fromStdString(project::unitText(m_document->project(), m_station));
+    if (formatted != m_editor->textBytes()) {
+        setEditorText(formatted, true);
+        m_shown = formatted;
+    }
+    return true;
+}
+
+void TextPage::followModel() {
+    if (m_applying || !m_document || m_station == kWholeProject)
+        return;
+    updateTitle();
+    const QByteArray canonical =
+        QByteArray::fromStdString(project::unitText(m_document->project(), m_station));
+    if (canonical == m_canonical)
+        return;
+    // Undo, redo or another page changed this unit: show the project's text.
+    m_applyTimer.stop();
+    m_canonical = canonical;
+    m_shown = canonical;
+    setEditorText(canonical, true);
+    m_hasErrors = false;
+    project::UnitTextResult read =
+        project::readUnitText(m_document->project(), m_station, view(canonical));
+    setDiagnostics(read.diagnostics);
+}
+
+void TextPage::setEditorText(const QByteArray& text, bool keepPlace) {
+    int line = 0;
+    int index = 0;
+    m_editor->getCursorPosition(&line, &index);
+    const int firstShown = m_editor->firstVisibleLine();
+    m_settingText = true;
+    m_editor->setTextBytes(text);
+    m_settingText = false;
+    if (keepPlace) {
+        m_editor->setCursorPosition(std::min(line, std::max(m_editor->lines() - 1, 0)), 0);
+        m_editor->setFirstVisibleLine(firstShown);
+    }
+}
+
+void TextPage::setDiagnostics(lang::Diagnostics diagnostics) {
+    m_diagnostics = std::move(diagnostics);
+    m_editor->setDiagnostics(m_diagnostics);
+    emit diagnosticsChanged(m_diagnostics);
+}
+
+} // namespace rs::ui
