@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "CodeGenerator.h"
 
+#include "lang/ElementNumbering.h"
+
 #include <map>
 
 namespace rs::compiler {
@@ -21,15 +23,15 @@ public:
         m_image.unitType = static_cast<std::uint8_t>(m_unit.type->type);
         m_image.instructionSet = static_cast<std::uint8_t>(m_unit.instructionSet);
 
-        // Statements are numbered in file order, the order the ladder pages show them.
+        // Code runs in step order; statements keep their file-order numbers.
         std::map<const Statement*, std::uint32_t> numbers;
         std::map<std::pair<int, int>, const lang::Step*> ordered;
-        for (const auto& step : m_unit.program->steps) {
+        for (const auto& step : m_unit.program->steps)
             ordered[{step.address.sequence, step.address.step}] = &step;
-            for (const auto& line : step.lines)
-                if (const auto* s = std::get_if<Statement>(&line.body))
-                    numbers[s] = static_cast<std::uint32_t>(numbers.size());
-        }
+        lang::forEachStatement(*m_unit.program,
+                               [&](const lang::Step&, const Statement& s, std::uint32_t number) {
+                                   numbers[&s] = number;
+                               });
         for (const auto& [key, step] : ordered) {
             StepCode code{static_cast<std::uint8_t>(key.first),
                           static_cast<std::uint8_t>(key.second),
@@ -58,29 +60,33 @@ private:
     void statement(const Statement& s, std::uint32_t number, int step) {
         m_statement = &s;
         m_number = number;
-        m_element = 0;
-        emit(Op::Rung, 0);
-        if (s.condition)
+        emit(Op::Rung, lang::kOutputElement);
+        if (s.condition) {
+            lang::PreOrderNumbering<Expr> numbering(*s.condition, lang::partsOf);
+            m_numbering = &numbering;
             expression(*s.condition);
+            m_numbering = nullptr;
+        }
         switch (s.kind) {
         case StatementKind::Coil:
-            emit(Op::Coil, 0).operand = s.target.address;
+            emit(Op::Coil, lang::kOutputElement).operand = s.target.address;
             break;
         case StatementKind::Set:
-            emit(Op::Set, 0).operand = s.target.address;
+            emit(Op::Set, lang::kOutputElement).operand = s.target.address;
             break;
         case StatementKind::Reset:
-            emit(Op::Reset, 0).operand = s.target.address;
+            emit(Op::Reset, lang::kOutputElement).operand = s.target.address;
             break;
         case StatementKind::Toggle:
-            emit(Op::Toggle, 0).operand = s.target.address;
+            emit(Op::Toggle, lang::kOutputElement).operand = s.target.address;
             break;
         case StatementKind::Jump:
-            emit(Op::Jump, 0).slot =
+            emit(Op::Jump, lang::kOutputElement).slot =
                 static_cast<std::uint16_t>(s.relativeJump ? step + s.jumpStep : s.jumpStep);
             break;
         case StatementKind::SequenceReset:
-            emit(Op::SequenceReset, 0).slot = static_cast<std::uint16_t>(s.target.address.index);
+            emit(Op::SequenceReset, lang::kOutputElement).slot =
+                static_cast<std::uint16_t>(s.target.address.index);
             break;
         case StatementKind::Assign:
             assignment(s.assignment);
@@ -138,7 +144,7 @@ private:
     }
 
     void expression(const Expr& e) {
-        const auto element = static_cast<std::uint16_t>(++m_element);
+        const std::uint16_t element = m_numbering->number(e);
         const std::uint8_t negated = e.negated ? Negated : 0;
         switch (e.kind) {
         case ExprKind::And:
@@ -197,7 +203,7 @@ private:
     UnitImage m_image;
     const Statement* m_statement = nullptr;
     std::uint32_t m_number = 0;
-    int m_element = 0;
+    lang::PreOrderNumbering<Expr>* m_numbering = nullptr;
 };
 
 } // namespace

@@ -3,6 +3,7 @@
 
 #include "ElementVocabulary.h"
 
+#include "lang/ElementNumbering.h"
 #include "lang/Keywords.h"
 #include "lang/Printer.h"
 
@@ -248,10 +249,10 @@ private:
     };
 
     // Places a condition node with its top-left grid cell at (column, row),
-    // numbering nodes in pre-order as the compiler does.
+    // numbered by the one rule (lang/ElementNumbering.h).
     Placed placeCircuit(const Circuit& circuit, std::vector<std::size_t>& path, int column, int row,
                         const PowerFeed& input) {
-        const auto id = static_cast<std::uint16_t>(++m_element);
+        const std::uint16_t id = m_numbering->number(circuit);
         const qreal left = m_railX + column * m_metrics.cellWidth;
         const qreal y = wireY(m_rungTop, row);
         if (circuit.isElement()) {
@@ -318,13 +319,16 @@ private:
         m_rungTop = top;
         m_item = item;
         m_statement = firstStatement;
-        m_element = 0;
         const qreal y = wireY(top, 0);
         PowerFeed power{PowerFeed::Kind::Rail, firstStatement, {}};
         Extent condition;
         if (rung.condition) {
+            lang::PreOrderNumbering<Circuit> numbering(
+                *rung.condition, [](const Circuit& c) -> const auto& { return c.parts; });
+            m_numbering = &numbering;
             std::vector<std::size_t> path;
             Placed placed = placeCircuit(*rung.condition, path, 0, 0, power);
+            m_numbering = nullptr;
             condition = placed.extent;
             power = std::move(placed.output);
         }
@@ -341,7 +345,7 @@ private:
             const qreal left = m_railX + column * m_metrics.cellWidth;
             ElementLayout& e = place(l, left, top + i * m_metrics.cellHeight, column, i, columns);
             e.statement = firstStatement + static_cast<std::uint32_t>(i);
-            e.element = 0;
+            e.element = lang::kOutputElement;
             e.path = {item, {}};
             e.output = i;
             const qreal outY = wireY(top, i);
@@ -425,7 +429,7 @@ private:
     qreal m_rungTop = 0;
     std::size_t m_item = 0;
     std::uint32_t m_statement = 0;
-    int m_element = 0;
+    lang::PreOrderNumbering<Circuit>* m_numbering = nullptr;
 };
 
 } // namespace
