@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "NetworkPainter.h"
 
+#include "ladder/ElementVocabulary.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 
@@ -11,7 +13,10 @@ namespace rs::render {
 namespace {
 
 using ladder::ElementKind;
+using ladder::ElementKindInfo;
 using ladder::ElementLayout;
+using ladder::infoOf;
+using ladder::Shape;
 
 constexpr qreal kBubbleRadius = 4; // the circle that negates a box's output
 
@@ -70,50 +75,21 @@ private:
         m_painter.setPen(pen);
         m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
         const QRectF& r = e.symbolRect;
-        switch (e.kind) {
-        case ElementKind::NormallyOpen:
-            contact(r, {}, false);
+        const ElementKindInfo& info = infoOf(e.kind);
+        const QString mark = QString::fromUtf8(info.mark.data(), qsizetype(info.mark.size()));
+        switch (info.shape) {
+        case Shape::Contact:
+            // An inverted edge is written as the text writes it, "/P": a slash
+            // through the letter would hide it.
+            if (mark == QLatin1String("/"))
+                contact(r, {}, true);
+            else
+                contact(r, mark, false);
             break;
-        case ElementKind::NormallyClosed:
-            contact(r, {}, true);
+        case Shape::Coil:
+            coil(r, mark);
             break;
-        case ElementKind::PositiveEdge:
-            contact(r, QStringLiteral("P"), false);
-            break;
-        case ElementKind::NegativeEdge:
-            contact(r, QStringLiteral("N"), false);
-            break;
-        // An inverted edge is written as the text writes it: a slash through
-        // the letter would hide it.
-        case ElementKind::NotPositiveEdge:
-            contact(r, QStringLiteral("/P"), false);
-            break;
-        case ElementKind::NotNegativeEdge:
-            contact(r, QStringLiteral("/N"), false);
-            break;
-        case ElementKind::Coil:
-            coil(r, {});
-            break;
-        case ElementKind::Set:
-            coil(r, QStringLiteral("S"));
-            break;
-        case ElementKind::Reset:
-            coil(r, QStringLiteral("R"));
-            break;
-        case ElementKind::Toggle:
-            coil(r, QStringLiteral("T"));
-            break;
-        case ElementKind::Jump:
-            coil(r, QStringLiteral("J"));
-            break;
-        case ElementKind::SequenceReset:
-            coil(r, QStringLiteral("RS"));
-            break;
-        case ElementKind::OnDelayTimer:
-        case ElementKind::PulseTimer:
-        case ElementKind::OffDelayTimer:
-        case ElementKind::Comparison:
-        case ElementKind::Arithmetic:
+        case Shape::Box:
             box(r, e.text, e.negated);
             break;
         }

@@ -82,39 +82,42 @@ bool isStatement(const ElementNode& node, StatementKind kind) {
 const std::vector<ElementKindInfo>& kinds() {
     static const std::vector<ElementKindInfo> all = {
         {ElementKind::NormallyOpen, false, Shape::Contact, OperandRole::Variable, false, false, "C",
-         "-| |-", "", [](const ElementParts& p) -> ElementNode { return contact(p, false); },
+         "-| |-", "", "", [](const ElementParts& p) -> ElementNode { return contact(p, false); },
          [](const ElementNode& n) {
              return isContact(n, false);
          }},
         {ElementKind::NormallyClosed, false, Shape::Contact, OperandRole::Variable, false, false,
-         "/", "-|/|-", "", [](const ElementParts& p) -> ElementNode { return contact(p, true); },
+         "/", "-|/|-", "/", "",
+         [](const ElementParts& p) -> ElementNode { return contact(p, true); },
          [](const ElementNode& n) {
              return isContact(n, true);
          }},
         {ElementKind::PositiveEdge, false, Shape::Contact, OperandRole::Variable, false, false, "P",
-         "-|P|-", "", [](const ElementParts& p) -> ElementNode { return edge(p, true, false); },
+         "-|P|-", "P", "",
+         [](const ElementParts& p) -> ElementNode { return edge(p, true, false); },
          [](const ElementNode& n) {
              return isEdge(n, true, false);
          }},
         {ElementKind::NegativeEdge, false, Shape::Contact, OperandRole::Variable, false, false, "N",
-         "-|N|-", "", [](const ElementParts& p) -> ElementNode { return edge(p, false, false); },
+         "-|N|-", "N", "",
+         [](const ElementParts& p) -> ElementNode { return edge(p, false, false); },
          [](const ElementNode& n) {
              return isEdge(n, false, false);
          }},
         {ElementKind::NotPositiveEdge, false, Shape::Contact, OperandRole::Variable, false, false,
-         "Shift+P", "-|/P|-", "",
+         "Shift+P", "-|/P|-", "/P", "",
          [](const ElementParts& p) -> ElementNode { return edge(p, true, true); },
          [](const ElementNode& n) {
              return isEdge(n, true, true);
          }},
         {ElementKind::NotNegativeEdge, false, Shape::Contact, OperandRole::Variable, false, false,
-         "Shift+N", "-|/N|-", "",
+         "Shift+N", "-|/N|-", "/N", "",
          [](const ElementParts& p) -> ElementNode { return edge(p, false, true); },
          [](const ElementNode& n) {
              return isEdge(n, false, true);
          }},
         {ElementKind::OnDelayTimer, false, Shape::Box, OperandRole::Preset, false, true, "O",
-         "[TON]", lang::timerWord(lang::TimerSpelling::TON),
+         "[TON]", "", lang::timerWord(lang::TimerSpelling::TON),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::OnDelay, lang::TimerSpelling::TON);
          },
@@ -122,7 +125,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::OnDelay);
          }},
         {ElementKind::PulseTimer, false, Shape::Box, OperandRole::Preset, false, true, "U", "[TPS]",
-         lang::timerWord(lang::TimerSpelling::TPS),
+         "", lang::timerWord(lang::TimerSpelling::TPS),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::Pulse, lang::TimerSpelling::TPS);
          },
@@ -130,7 +133,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::Pulse);
          }},
         {ElementKind::OffDelayTimer, false, Shape::Box, OperandRole::Preset, false, true, "F",
-         "[TOF]", lang::timerWord(lang::TimerSpelling::TOF),
+         "[TOF]", "", lang::timerWord(lang::TimerSpelling::TOF),
          [](const ElementParts& p) -> ElementNode {
              return timer(p, lang::TimerKind::OffDelay, lang::TimerSpelling::TOF);
          },
@@ -138,7 +141,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isTimer(n, lang::TimerKind::OffDelay);
          }},
         {ElementKind::Comparison, false, Shape::Box, OperandRole::Register, true, true, "=", "[>=]",
-         lang::compareWord(lang::CompareOp::GreaterEqual),
+         "", lang::compareWord(lang::CompareOp::GreaterEqual),
          [](const ElementParts& p) -> ElementNode {
              Expr expr;
              expr.kind = ExprKind::Compare;
@@ -153,28 +156,29 @@ const std::vector<ElementKindInfo>& kinds() {
              return expr && expr->kind == ExprKind::Compare;
          }},
         {ElementKind::Coil, true, Shape::Coil, OperandRole::Variable, false, false, "L", "-( )", "",
-         [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Coil); },
+         "", [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Coil); },
          [](const ElementNode& n) {
              return isStatement(n, StatementKind::Coil);
          }},
-        {ElementKind::Set, true, Shape::Coil, OperandRole::Variable, false, false, "S", "-(S)", "",
-         [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Set); },
+        {ElementKind::Set, true, Shape::Coil, OperandRole::Variable, false, false, "S", "-(S)", "S",
+         "", [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Set); },
          [](const ElementNode& n) {
              return isStatement(n, StatementKind::Set);
          }},
         {ElementKind::Reset, true, Shape::Coil, OperandRole::Variable, false, false, "R", "-(R)",
-         "",
+         "R", "",
          [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Reset); },
          [](const ElementNode& n) {
              return isStatement(n, StatementKind::Reset);
          }},
         {ElementKind::Toggle, true, Shape::Coil, OperandRole::Variable, false, false, "T", "-(T)",
-         "",
+         "T", "",
          [](const ElementParts& p) -> ElementNode { return statement(p, StatementKind::Toggle); },
          [](const ElementNode& n) {
              return isStatement(n, StatementKind::Toggle);
          }},
-        {ElementKind::Jump, true, Shape::Coil, OperandRole::Step, false, false, "J", "-(J)", "",
+        {ElementKind::Jump, true, Shape::Coil, OperandRole::Step, false, false, "J", "-(J)", "J",
+         "",
          [](const ElementParts& p) -> ElementNode {
              Statement made = statement(p, StatementKind::Jump);
              made.target = {};
@@ -186,7 +190,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isStatement(n, StatementKind::Jump);
          }},
         {ElementKind::SequenceReset, true, Shape::Coil, OperandRole::Sequence, false, false, "Q",
-         "-(RS)", "",
+         "-(RS)", "RS", "",
          [](const ElementParts& p) -> ElementNode {
              return statement(p, StatementKind::SequenceReset);
          },
@@ -194,7 +198,7 @@ const std::vector<ElementKindInfo>& kinds() {
              return isStatement(n, StatementKind::SequenceReset);
          }},
         {ElementKind::Arithmetic, true, Shape::Box, OperandRole::TargetRegister, true, false, "+",
-         "[+=]", lang::assignWord(lang::AssignOp::AddAssign),
+         "[+=]", "", lang::assignWord(lang::AssignOp::AddAssign),
          [](const ElementParts& p) -> ElementNode {
              Statement made = statement(p, StatementKind::Assign);
              made.target = {};

@@ -58,6 +58,8 @@ struct ElementKindInfo {
     bool canNegate;           // passes power when false: /TON(t), /(R0.1>=5)
     const char* insertKey;    // the key inserting it, as QKeySequence spells it
     const char* picture;      // the symbol in characters, for a toolbar button
+    std::string_view mark;    // drawn inside a contact or coil: "P", "/P", "S", "RS";
+                              // "/" is a normally closed contact's slash
     std::string_view boxWord; // what a box shows when it stands for the kind alone
     ElementNode (*make)(const ElementParts& parts);
     bool (*reads)(const ElementNode& node); // whether the node is of the kind

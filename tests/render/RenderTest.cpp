@@ -148,6 +148,26 @@ TEST(Svg, IsAValidDocumentWithNamesAddressesAndThePoweredStyle) {
     EXPECT_FALSE(rs::render::networkSvg(layout, LadderStyle{}).contains("#00963c"));
 }
 
+// Every contact and coil carries the mark its kind has in the vocabulary.
+TEST(Svg, ContactsAndCoilsShowTheirKindsMark) {
+    struct Case {
+        const char* code;
+        std::vector<const char*> marks;
+    };
+    const Case cases[] = {
+        {"S(Q0.1) = P(I0.0) * /P(I0.2) * /N(I0.3) * /I0.4 * N(I0.1)\n",
+         {">S<", ">P<", ">/P<", ">/N<", ">N<"}},
+        {"R(Q0.1) = I0.0\n", {">R<"}},
+        {"T(Q0.1) = I0.0\n", {">T<"}},
+    };
+    for (const auto& c : cases) {
+        const QByteArray svg = rs::render::networkSvg(layOut(c.code), LadderStyle{}, nullptr, "n");
+        for (const char* mark : c.marks)
+            EXPECT_EQ(svg.count(mark), 1) << c.code << mark;
+        EXPECT_FALSE(svg.contains(">/<")) << c.code << " a slash is drawn, not written";
+    }
+}
+
 TEST(Pictures, TheFileNameSaysTheFormat) {
     EXPECT_TRUE(rs::render::isPictureFileName("a/b.svg"));
     EXPECT_TRUE(rs::render::isPictureFileName("B.PNG"));
