@@ -2,8 +2,8 @@
 // Extreme and malformed project text on the command line: every verb answers
 // with a message and an exit code of the contract, never a crash.
 
+#include "ProgramRun.h"
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -13,34 +13,6 @@ inline void PrintTo(const QString& text, std::ostream* os) {
 }
 
 namespace {
-
-struct CliRun {
-    bool crashed = true;
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-CliRun cli(const QStringList& arguments) {
-    QProcess process;
-    process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
-    process.waitForFinished(120000);
-    return {process.exitStatus() != QProcess::NormalExit, process.exitCode(),
-            QString::fromUtf8(process.readAllStandardOutput()),
-            QString::fromUtf8(process.readAllStandardError())};
-}
-
-QString writeTemp(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    QFile file(dir.filePath(name));
-    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text);
-    return file.fileName();
-}
-
-QByteArray readAll(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 const QByteArray kHead = "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n";
 
@@ -60,16 +32,18 @@ QByteArray chain(int count, char op) {
 
 TEST(CliExtremeInput, DeeplyNestedParenthesesAreAnErrorInEveryVerb) {
     QTemporaryDir dir;
-    const QString path = writeTemp(dir, "nested.sps",
-                                   kHead + "Q0.0 = " + QByteArray(10000, '(') + "I0.0" +
-                                       QByteArray(10000, ')') + "\n");
+    const QString path = rs::test::writeFile(dir, "nested.sps",
+                                             kHead + "Q0.0 = " + QByteArray(10000, '(') + "I0.0" +
+                                                 QByteArray(10000, ')') + "\n");
     // "Q0.0 = " takes columns 1-7; the 101st parenthesis is at column 108.
     const QString message = path + ":4:108: error: expression nested deeper than 100 levels\n";
     for (const char* verb : {"check", "compile", "format"}) {
-        const CliRun run = cli({verb, path, "-o", dir.filePath("nested.hps")});
+        const rs::test::ProgramRun run =
+            rs::test::runCli({verb, path, "-o", dir.filePath("nested.hps")});
         ASSERT_FALSE(run.crashed) << verb;
         EXPECT_EQ(run.exitCode, 1) << verb;
-        EXPECT_TRUE(run.err.startsWith(message)) << verb << ": " << run.err.left(300).toStdString();
+        EXPECT_TRUE(run.errText().startsWith(message))
+            << verb << ": " << run.errText().left(300).toStdString();
     }
     EXPECT_FALSE(QFile::exists(dir.filePath("nested.hps")));
 }
@@ -80,33 +54,35 @@ TEST(CliExtremeInput, TheDeepestNestingAllowedPassesEveryVerb) {
     for (int level = 0; level < 100; ++level)
         condition = "I0.1 + I0.2 * (" + condition + ")";
     QTemporaryDir dir;
-    const QString path = writeTemp(dir, "deep.sps", kHead + "Q0.0 = " + condition + "\n");
+    const QString path = rs::test::writeFile(dir, "deep.sps", kHead + "Q0.0 = " + condition + "\n");
     for (const QStringList& arguments :
          {QStringList{"check", path}, QStringList{"compile", path, "-o", dir.filePath("deep.hps")},
           QStringList{"format", path}, QStringList{"roundtrip", path},
           QStringList{"ladder", path, "--unit", "0", "--network", "1", "-o",
                       dir.filePath("deep.svg")}}) {
-        const CliRun run = cli(arguments);
+        const rs::test::ProgramRun run = rs::test::runCli(arguments);
         ASSERT_FALSE(run.crashed) << arguments.front().toStdString();
         EXPECT_EQ(run.exitCode, 0)
-            << arguments.front().toStdString() << ": " << run.err.left(300).toStdString();
+            << arguments.front().toStdString() << ": " << run.errText().left(300).toStdString();
     }
-    EXPECT_EQ(cli({"roundtrip", path}).out, cli({"format", path}).out);
+    EXPECT_EQ(rs::test::runCli({"roundtrip", path}).outText(),
+              rs::test::runCli({"format", path}).outText());
 }
 
 TEST(CliExtremeInput, ALongFlatChainIsReadCheckedAndCompiled) {
     QTemporaryDir dir;
     for (char op : {'+', '*'}) {
         const QString path =
-            writeTemp(dir, "chain.sps", kHead + "Q0.0 = " + chain(100000, op) + "\n");
-        const CliRun format = cli({"format", path});
+            rs::test::writeFile(dir, "chain.sps", kHead + "Q0.0 = " + chain(100000, op) + "\n");
+        const rs::test::ProgramRun format = rs::test::runCli({"format", path});
         ASSERT_FALSE(format.crashed);
         EXPECT_EQ(format.exitCode, 0);
-        EXPECT_EQ(format.out.size(), readAll(path).size() + 2 * 99999); // spaces around each op
+        EXPECT_EQ(format.outText().size(),
+                  rs::test::readFile(path).size() + 2 * 99999); // spaces around each op
         for (const char* verb : {"check", "compile"}) {
-            const CliRun run = cli({verb, "--no-io-warnings", path});
+            const rs::test::ProgramRun run = rs::test::runCli({verb, "--no-io-warnings", path});
             ASSERT_FALSE(run.crashed) << verb;
-            EXPECT_EQ(run.exitCode, 0) << verb << run.err.left(300).toStdString();
+            EXPECT_EQ(run.exitCode, 0) << verb << run.errText().left(300).toStdString();
         }
     }
 }
@@ -123,15 +99,16 @@ TEST(CliExtremeInput, AProgramLargerThanItsUnitsMemoryIsAnErrorAtItsPgmPlutoLine
         text += "M0." + QByteArray::number(i % 16) + " = " + series + "\n";
     text += "! pgm_pluto:01\nS1.0_0\nQ1.0 = I1.0\n";
     QTemporaryDir dir;
-    const QString path = writeTemp(dir, "large.sps", text);
+    const QString path = rs::test::writeFile(dir, "large.sps", text);
     const QString output = dir.filePath("large.hps");
-    const CliRun run = cli({"compile", "--no-io-warnings", path, "-o", output});
+    const rs::test::ProgramRun run =
+        rs::test::runCli({"compile", "--no-io-warnings", path, "-o", output});
     ASSERT_FALSE(run.crashed);
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.startsWith(path + ":3:1: error: program of unit 0 is "))
-        << run.err.left(300).toStdString();
-    EXPECT_TRUE(run.err.contains("bytes; a Pluto A20 holds at most 16777216 bytes"));
-    EXPECT_FALSE(run.err.contains("internal error"));
+    EXPECT_TRUE(run.errText().startsWith(path + ":3:1: error: program of unit 0 is "))
+        << run.errText().left(300).toStdString();
+    EXPECT_TRUE(run.errText().contains("bytes; a Pluto A20 holds at most 16777216 bytes"));
+    EXPECT_FALSE(run.errText().contains("internal error"));
     EXPECT_FALSE(QFile::exists(output));
 }
 
@@ -141,63 +118,69 @@ TEST(CliExtremeInput, CarriageReturnAloneEndsALine) {
     QByteArray cr = lf;
     cr.replace('\n', '\r');
     QTemporaryDir dir;
-    const QString lfPath = writeTemp(dir, "lf.sps", lf);
-    const QString crPath = writeTemp(dir, "cr.sps", cr);
-    const CliRun lfCompile = cli({"compile", lfPath, "-o", dir.filePath("lf.hps")});
-    const CliRun crCompile = cli({"compile", crPath, "-o", dir.filePath("cr.hps")});
-    ASSERT_EQ(lfCompile.exitCode, 0) << lfCompile.err.toStdString();
-    EXPECT_EQ(crCompile.exitCode, 0) << crCompile.err.toStdString();
-    EXPECT_EQ(crCompile.err, QString(lfCompile.err).replace(lfPath, crPath));
-    EXPECT_EQ(readAll(dir.filePath("cr.hps")), readAll(dir.filePath("lf.hps")));
-    const CliRun crFormat = cli({"format", crPath});
+    const QString lfPath = rs::test::writeFile(dir, "lf.sps", lf);
+    const QString crPath = rs::test::writeFile(dir, "cr.sps", cr);
+    const rs::test::ProgramRun lfCompile =
+        rs::test::runCli({"compile", lfPath, "-o", dir.filePath("lf.hps")});
+    const rs::test::ProgramRun crCompile =
+        rs::test::runCli({"compile", crPath, "-o", dir.filePath("cr.hps")});
+    ASSERT_EQ(lfCompile.exitCode, 0) << lfCompile.errText().toStdString();
+    EXPECT_EQ(crCompile.exitCode, 0) << crCompile.errText().toStdString();
+    EXPECT_EQ(crCompile.errText(), QString(lfCompile.errText()).replace(lfPath, crPath));
+    EXPECT_EQ(rs::test::readFile(dir.filePath("cr.hps")),
+              rs::test::readFile(dir.filePath("lf.hps")));
+    const rs::test::ProgramRun crFormat = rs::test::runCli({"format", crPath});
     EXPECT_EQ(crFormat.exitCode, 0);
-    EXPECT_EQ(crFormat.out, cli({"format", lfPath}).out);
-    EXPECT_FALSE(crFormat.out.contains('\r'));
+    EXPECT_EQ(crFormat.outText(), rs::test::runCli({"format", lfPath}).outText());
+    EXPECT_FALSE(crFormat.outText().contains('\r'));
 }
 
 TEST(CliExtremeInput, ControlCharactersInMessagesAreShownNotCut) {
     QTemporaryDir dir;
-    const QString path =
-        writeTemp(dir, "nul.sps", kHead + "Q0.0 = I0.0 " + QByteArray("\0\x01 zz", 5) + "\n");
-    const CliRun run = cli({"check", "--no-io-warnings", path});
+    const QString path = rs::test::writeFile(
+        dir, "nul.sps", kHead + "Q0.0 = I0.0 " + QByteArray("\0\x01 zz", 5) + "\n");
+    const rs::test::ProgramRun run = rs::test::runCli({"check", "--no-io-warnings", path});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_EQ(run.err, path + ":4:13: error: unexpected '\\0' after the statement\n");
+    EXPECT_EQ(run.errText(), path + ":4:13: error: unexpected '\\0' after the statement\n");
 }
 
 TEST(CliExtremeInput, ReadingAUnitOfAnotherProjectIsAWarningAndSimulates) {
     QTemporaryDir dir;
-    const QString path = writeTemp(dir, "other.sps", kHead + "Q0.0 = I1.0 * GM1.2\n");
-    const CliRun check = cli({"check", "--no-io-warnings", path});
+    const QString path = rs::test::writeFile(dir, "other.sps", kHead + "Q0.0 = I1.0 * GM1.2\n");
+    const rs::test::ProgramRun check = rs::test::runCli({"check", "--no-io-warnings", path});
     EXPECT_EQ(check.exitCode, 0);
     // Once for the unit, at its first use.
-    EXPECT_EQ(check.err, path + ":4:8: warning: unit 1 is not in this project; its globals come "
-                                "from another project on the bus\n");
-    const CliRun compile = cli({"compile", "--no-io-warnings", path});
-    EXPECT_EQ(compile.exitCode, 0) << compile.err.toStdString();
-    const QString scenario = writeTemp(dir, "other.scn",
-                                       "scans 1\nexpect Q0.0 0\nset I1.0 1\nset GM1.2 1\n"
-                                       "scans 1\nexpect Q0.0 1\nset I1.0 0\nscans 1\n"
-                                       "expect Q0.0 0\n");
-    const CliRun test = cli({"test", "--no-io-warnings", path, scenario});
-    EXPECT_EQ(test.exitCode, 0) << (test.out + test.err).toStdString();
-    EXPECT_TRUE(test.out.contains("3 passed, 0 failed")) << test.out.toStdString();
+    EXPECT_EQ(check.errText(), path +
+                                   ":4:8: warning: unit 1 is not in this project; its globals come "
+                                   "from another project on the bus\n");
+    const rs::test::ProgramRun compile = rs::test::runCli({"compile", "--no-io-warnings", path});
+    EXPECT_EQ(compile.exitCode, 0) << compile.errText().toStdString();
+    const QString scenario = rs::test::writeFile(dir, "other.scn",
+                                                 "scans 1\nexpect Q0.0 0\nset I1.0 1\nset GM1.2 1\n"
+                                                 "scans 1\nexpect Q0.0 1\nset I1.0 0\nscans 1\n"
+                                                 "expect Q0.0 0\n");
+    const rs::test::ProgramRun test =
+        rs::test::runCli({"test", "--no-io-warnings", path, scenario});
+    EXPECT_EQ(test.exitCode, 0) << (test.outText() + test.errText()).toStdString();
+    EXPECT_TRUE(test.outText().contains("3 passed, 0 failed")) << test.outText().toStdString();
 }
 
 TEST(CliExtremeInput, WritingOrReadingLocalsOfAUnitOutsideTheProjectStaysAnError) {
     QTemporaryDir dir;
-    const QString path = writeTemp(dir, "other.sps", kHead + "Q0.0 = M1.0\nS(GM1.0) = I0.0\n");
-    const CliRun check = cli({"check", "--no-io-warnings", path});
+    const QString path =
+        rs::test::writeFile(dir, "other.sps", kHead + "Q0.0 = M1.0\nS(GM1.0) = I0.0\n");
+    const rs::test::ProgramRun check = rs::test::runCli({"check", "--no-io-warnings", path});
     EXPECT_EQ(check.exitCode, 1);
-    EXPECT_TRUE(check.err.contains(path + ":4:8: error:")) << check.err.toStdString();
-    EXPECT_TRUE(check.err.contains(path + ":5:3: error:")) << check.err.toStdString();
+    EXPECT_TRUE(check.errText().contains(path + ":4:8: error:")) << check.errText().toStdString();
+    EXPECT_TRUE(check.errText().contains(path + ":5:3: error:")) << check.errText().toStdString();
 }
 
 TEST(CliExtremeInput, TwoRunsCompileTheSameBytes) {
     const QString muting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
     QTemporaryDir dir;
-    ASSERT_EQ(cli({"compile", muting, "-o", dir.filePath("a.hps")}).exitCode, 0);
-    ASSERT_EQ(cli({"compile", muting, "-o", dir.filePath("b.hps")}).exitCode, 0);
-    const QByteArray first = readAll(dir.filePath("a.hps"));
+    ASSERT_EQ(rs::test::runCli({"compile", muting, "-o", dir.filePath("a.hps")}).exitCode, 0);
+    ASSERT_EQ(rs::test::runCli({"compile", muting, "-o", dir.filePath("b.hps")}).exitCode, 0);
+    const QByteArray first = rs::test::readFile(dir.filePath("a.hps"));
     EXPECT_FALSE(first.isEmpty());
-    EXPECT_EQ(first, readAll(dir.filePath("b.hps")));
+    EXPECT_EQ(first, rs::test::readFile(dir.filePath("b.hps")));
 }

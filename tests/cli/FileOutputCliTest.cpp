@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "FullFileSystem.h"
 
+#include "ProgramRun.h"
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -14,36 +14,6 @@
 using rs::test::FullFileSystem;
 
 namespace {
-
-struct CliRun {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-CliRun cli(const QStringList& arguments, const QString& standardOutput = {}) {
-    QProcess process;
-    if (!standardOutput.isEmpty())
-        process.setStandardOutputFile(standardOutput);
-    process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
-    EXPECT_TRUE(process.waitForFinished(60000));
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromUtf8(process.readAllStandardOutput()),
-            QString::fromUtf8(process.readAllStandardError())};
-}
-
-QByteArray readAll(const QString& path) {
-    QFile file(path);
-    EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << path.toStdString();
-    return file.readAll();
-}
-
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
-    QFile file(dir.filePath(name));
-    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(bytes);
-    return file.fileName();
-}
 
 const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 const QByteArray kOld = "the validated version\n";
@@ -64,11 +34,11 @@ void expectOldFileKept(const QString& name,
     ASSERT_TRUE(disk.put(name, kOld));
     ASSERT_TRUE(disk.fill());
     const QString target = disk.filePath(name);
-    const CliRun run = cli(arguments(target));
-    EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
-    EXPECT_TRUE(run.err.contains("rungsmith-cli: cannot write " + target + ": "))
-        << run.err.toStdString();
-    EXPECT_EQ(readAll(target), kOld);
+    const rs::test::ProgramRun run = rs::test::runCli(arguments(target));
+    EXPECT_EQ(run.exitCode, 2) << run.errText().toStdString();
+    EXPECT_TRUE(run.errText().contains("rungsmith-cli: cannot write " + target + ": "))
+        << run.errText().toStdString();
+    EXPECT_EQ(rs::test::readFile(target), kOld);
 }
 
 } // namespace
@@ -81,8 +51,9 @@ TEST(FileOutputCli, CompileToAFullDiskKeepsTheOldImage) {
 
 TEST(FileOutputCli, VarsImportToAFullDiskKeepsTheOldProject) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
-    const QString csv = write(dir, "in.csv", "Variable,Symbolic Name,Description\nI0.0,Go,\n");
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString csv =
+        rs::test::writeFile(dir, "in.csv", "Variable,Symbolic Name,Description\nI0.0,Go,\n");
     expectOldFileKept("out.sps", [&](const QString& target) {
         return QStringList{"vars", "import", project, csv, "-o", target};
     });
@@ -96,8 +67,9 @@ TEST(FileOutputCli, VarsExportToAFullDiskKeepsTheOldCsv) {
 
 TEST(FileOutputCli, TestTraceToAFullDiskKeepsTheOldTrace) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
-    const QString scenario = write(dir, "s.scn", "set I0.0 1\nscans 1\nexpect Q0.2 1\n");
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString scenario =
+        rs::test::writeFile(dir, "s.scn", "set I0.0 1\nscans 1\nexpect Q0.2 1\n");
     expectOldFileKept("run.vcd", [&](const QString& target) {
         return QStringList{"test", project, scenario, "--vcd", target};
     });
@@ -113,16 +85,16 @@ TEST(FileOutputCli, LadderPictureToAFullDiskKeepsTheOldPicture) {
 TEST(FileOutputCli, StandardOutputThatCannotBeWrittenIsAnError) {
     for (const QStringList& arguments :
          {QStringList{"format", kMuting}, QStringList{"roundtrip", kMuting}}) {
-        const CliRun run = cli(arguments, QStringLiteral("/dev/full"));
+        const rs::test::ProgramRun run = rs::test::runCli(arguments, {QStringLiteral("/dev/full")});
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
-        EXPECT_EQ(run.err,
+        EXPECT_EQ(run.errText(),
                   "rungsmith-cli: cannot write the standard output: No space left on device\n");
     }
 }
 
 TEST(FileOutputCli, EndlessInputsAreRefusedWithTheLimit) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
     const QString limit = ": larger than 64 MB, the most Rungsmith reads from one file\n";
     const std::pair<QStringList, QString> cases[] = {
         {{"check", "/dev/zero"}, "/dev/zero"},
@@ -130,22 +102,22 @@ TEST(FileOutputCli, EndlessInputsAreRefusedWithTheLimit) {
         {{"test", project, "/dev/zero"}, "/dev/zero"},
     };
     for (const auto& [arguments, file] : cases) {
-        const CliRun run = cli(arguments);
+        const rs::test::ProgramRun run = rs::test::runCli(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
-        EXPECT_EQ(run.err, "rungsmith-cli: " + file + limit);
+        EXPECT_EQ(run.errText(), "rungsmith-cli: " + file + limit);
     }
     EXPECT_FALSE(QFile::exists(dir.filePath("out.sps")));
 }
 
 TEST(FileOutputCli, Utf16ProjectsAreRefusedAndAByteOrderMarkIsAccepted) {
     QTemporaryDir dir;
-    const QString wide = write(dir, "wide.sps", QByteArray("\xFF\xFE!\0 \0", 6));
-    const CliRun refused = cli({"check", wide});
+    const QString wide = rs::test::writeFile(dir, "wide.sps", QByteArray("\xFF\xFE!\0 \0", 6));
+    const rs::test::ProgramRun refused = rs::test::runCli({"check", wide});
     EXPECT_EQ(refused.exitCode, 2);
-    EXPECT_EQ(refused.err,
+    EXPECT_EQ(refused.errText(),
               "rungsmith-cli: " + wide + ": UTF-16 text is not supported; save it as UTF-8\n");
-    const QString marked = write(dir, "marked.sps", "\xEF\xBB\xBF" + kProject);
-    const CliRun accepted = cli({"check", marked});
-    EXPECT_EQ(accepted.exitCode, 0) << accepted.err.toStdString();
-    EXPECT_EQ(accepted.out, "0 Error(s) detected Result=OK\n");
+    const QString marked = rs::test::writeFile(dir, "marked.sps", "\xEF\xBB\xBF" + kProject);
+    const rs::test::ProgramRun accepted = rs::test::runCli({"check", marked});
+    EXPECT_EQ(accepted.exitCode, 0) << accepted.errText().toStdString();
+    EXPECT_EQ(accepted.outText(), "0 Error(s) detected Result=OK\n");
 }

@@ -2,11 +2,11 @@
 #include "LadderStyle.h"
 #include "ManualNetworks.h"
 
+#include "ProgramRun.h"
 #include <QColor>
 #include <QDir>
 #include <QFile>
 #include <QImage>
-#include <QProcess>
 #include <QProcessEnvironment>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -15,34 +15,14 @@
 
 namespace {
 
-struct CliRun {
-    int exitCode = -1;
-    QByteArray out;
-    QString err;
-};
-
-CliRun cli(const QStringList& arguments) {
-    QProcess process;
-    process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
-    process.waitForFinished(60000);
-    return {process.exitCode(), process.readAllStandardOutput(),
-            QString::fromUtf8(process.readAllStandardError())};
-}
-
 const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
-
-QString writeTemp(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    QFile file(dir.filePath(name));
-    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(text);
-    return file.fileName();
-}
 
 TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
     QTemporaryDir dir;
     const QString png = dir.filePath("net1.png");
-    CliRun run = cli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", png});
-    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    rs::test::ProgramRun run =
+        rs::test::runCli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", png});
+    ASSERT_EQ(run.exitCode, 0) << run.errText().toStdString();
     EXPECT_TRUE(run.out.isEmpty());
     const QImage image(png);
     ASSERT_FALSE(image.isNull());
@@ -50,7 +30,9 @@ TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
     EXPECT_EQ(image.size(), QSize(2 * 656, 2 * 186));
 
     const QString svg = dir.filePath("net1.svg");
-    ASSERT_EQ(cli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", svg}).exitCode, 0);
+    ASSERT_EQ(
+        rs::test::runCli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", svg}).exitCode,
+        0);
     QFile file(svg);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray text = file.readAll();
@@ -61,9 +43,9 @@ TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
 TEST(LadderCli, DrawsANetworkOfASequenceStep) {
     QTemporaryDir dir;
     const QString svg = dir.filePath("jump.svg");
-    CliRun run = cli({"ladder", kMuting, "--unit", "0", "--sequence", "1", "--step", "2",
-                      "--network", "3", "-o", svg});
-    ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
+    rs::test::ProgramRun run = rs::test::runCli({"ladder", kMuting, "--unit", "0", "--sequence",
+                                                 "1", "--step", "2", "--network", "3", "-o", svg});
+    ASSERT_EQ(run.exitCode, 0) << run.errText().toStdString();
     QFile file(svg);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray text = file.readAll();
@@ -88,9 +70,9 @@ TEST(LadderCli, UsageErrorsExitWith2) {
         {"roundtrip"},
     };
     for (const auto& arguments : bad) {
-        CliRun run = cli(arguments);
+        rs::test::ProgramRun run = rs::test::runCli(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
-        EXPECT_FALSE(run.err.isEmpty());
+        EXPECT_FALSE(run.errText().isEmpty());
     }
     EXPECT_FALSE(QFile::exists(png));
 }
@@ -109,14 +91,16 @@ TEST(LadderCli, WhatTheProjectDoesNotHaveExits1) {
         {{"--unit", "0", "--network", "4"}, "step S0.0_0 has 3 network(s), not 4"},
     };
     for (const auto& c : cases) {
-        CliRun run = cli(QStringList{"ladder", kMuting, "-o", png} + c.arguments);
+        rs::test::ProgramRun run =
+            rs::test::runCli(QStringList{"ladder", kMuting, "-o", png} + c.arguments);
         EXPECT_EQ(run.exitCode, 1) << c.message;
-        EXPECT_TRUE(run.err.contains(c.message)) << run.err.toStdString();
+        EXPECT_TRUE(run.errText().contains(c.message)) << run.errText().toStdString();
     }
-    const QString broken = writeTemp(dir, "bad.sps", "! pgm_pluto:00\nS0.0_0\nQ0.1 = \n");
-    CliRun run = cli({"ladder", broken, "--unit", "0", "--network", "1", "-o", png});
+    const QString broken = rs::test::writeFile(dir, "bad.sps", "! pgm_pluto:00\nS0.0_0\nQ0.1 = \n");
+    rs::test::ProgramRun run =
+        rs::test::runCli({"ladder", broken, "--unit", "0", "--network", "1", "-o", png});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.contains("bad.sps:3:"));
+    EXPECT_TRUE(run.errText().contains("bad.sps:3:"));
     EXPECT_FALSE(QFile::exists(png));
 }
 
@@ -133,11 +117,11 @@ QByteArray drawAfter(const QTemporaryDir& dir, const QString& project, const QBy
                      const QStringList& where) {
     static int count = 0;
     const QString name = QStringLiteral("s%1").arg(++count);
-    const QString scn = writeTemp(dir, name + ".scn", scenario);
+    const QString scn = rs::test::writeFile(dir, name + ".scn", scenario);
     const QString svg = dir.filePath(name + ".svg");
-    CliRun run =
-        cli(QStringList{"ladder", project, "--scenario", scn, "-o", svg, "--unit", "0"} + where);
-    EXPECT_EQ(run.exitCode, 0) << run.err.toStdString() << run.out.toStdString();
+    rs::test::ProgramRun run = rs::test::runCli(
+        QStringList{"ladder", project, "--scenario", scn, "-o", svg, "--unit", "0"} + where);
+    EXPECT_EQ(run.exitCode, 0) << run.errText().toStdString() << run.out.toStdString();
     QFile file(svg);
     EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << name.toStdString();
     return file.readAll();
@@ -145,7 +129,7 @@ QByteArray drawAfter(const QTemporaryDir& dir, const QString& project, const QBy
 
 TEST(LadderCli, AfterAScenarioDrawsThePowerItLeaves) {
     QTemporaryDir dir;
-    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString project = rs::test::writeFile(dir, "steps.sps", kTwoSteps);
     const QStringList step1 = {"--sequence", "1", "--step", "1", "--network", "1"};
     const QByteArray ran =
         drawAfter(dir, project, "set I0.3 1\nset I0.4 1\nexpect Q0.2 1 within 30ms\n", step1);
@@ -161,7 +145,9 @@ TEST(LadderCli, AfterAScenarioDrawsThePowerItLeaves) {
     EXPECT_NE(on, off);
     EXPECT_GT(on.count(kPoweredInk), off.count(kPoweredInk)); // the rail is live in both
     const QString plain = dir.filePath("plain.svg");
-    ASSERT_EQ(cli({"ladder", project, "--unit", "0", "--network", "1", "-o", plain}).exitCode, 0);
+    ASSERT_EQ(rs::test::runCli({"ladder", project, "--unit", "0", "--network", "1", "-o", plain})
+                  .exitCode,
+              0);
     QFile file(plain);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     EXPECT_FALSE(file.readAll().contains(kPoweredInk)); // without a scenario nothing runs
@@ -169,11 +155,12 @@ TEST(LadderCli, AfterAScenarioDrawsThePowerItLeaves) {
 
 TEST(LadderCli, AFailedExpectationIsReportedAndTheEndStateStillDrawn) {
     QTemporaryDir dir;
-    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
-    const QString scn = writeTemp(dir, "wrong.scn", "set I0.2 1\nrun 20ms\nexpect Q0.1 0\n");
+    const QString project = rs::test::writeFile(dir, "steps.sps", kTwoSteps);
+    const QString scn =
+        rs::test::writeFile(dir, "wrong.scn", "set I0.2 1\nrun 20ms\nexpect Q0.1 0\n");
     const QString svg = dir.filePath("wrong.svg");
-    CliRun run =
-        cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario", scn, "-o", svg});
+    rs::test::ProgramRun run = rs::test::runCli(
+        {"ladder", project, "--unit", "0", "--network", "1", "--scenario", scn, "-o", svg});
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_TRUE(run.out.contains("wrong.scn:3:")) << run.out.toStdString();
     QFile file(svg);
@@ -183,34 +170,37 @@ TEST(LadderCli, AFailedExpectationIsReportedAndTheEndStateStillDrawn) {
 
 TEST(LadderCli, AScenarioWithErrorsExits1AndDrawsNothing) {
     QTemporaryDir dir;
-    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString project = rs::test::writeFile(dir, "steps.sps", kTwoSteps);
     const QString svg = dir.filePath("x.svg");
-    const QString bad = writeTemp(dir, "bad.scn", "set I0.2 1\nexpect NoSuchName 1\n");
-    CliRun run =
-        cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario", bad, "-o", svg});
+    const QString bad = rs::test::writeFile(dir, "bad.scn", "set I0.2 1\nexpect NoSuchName 1\n");
+    rs::test::ProgramRun run = rs::test::runCli(
+        {"ladder", project, "--unit", "0", "--network", "1", "--scenario", bad, "-o", svg});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.contains(QRegularExpression("bad\\.scn:2:\\d+: error: ")))
-        << run.err.toStdString();
+    EXPECT_TRUE(run.errText().contains(QRegularExpression("bad\\.scn:2:\\d+: error: ")))
+        << run.errText().toStdString();
     EXPECT_FALSE(QFile::exists(svg));
 
-    const QString broken = writeTemp(dir, "broken.sps",
-                                     "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n"
-                                     "Q0.1 = I0.2\nJ(+1) = I0.3\n");
-    const QString fine = writeTemp(dir, "fine.scn", "expect Q0.1 0\n");
-    run = cli({"ladder", broken, "--unit", "0", "--network", "1", "--scenario", fine, "-o", svg});
+    const QString broken =
+        rs::test::writeFile(dir, "broken.sps",
+                            "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n"
+                            "Q0.1 = I0.2\nJ(+1) = I0.3\n");
+    const QString fine = rs::test::writeFile(dir, "fine.scn", "expect Q0.1 0\n");
+    run = rs::test::runCli(
+        {"ladder", broken, "--unit", "0", "--network", "1", "--scenario", fine, "-o", svg});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.contains("broken.sps:")) << run.err.toStdString();
+    EXPECT_TRUE(run.errText().contains("broken.sps:")) << run.errText().toStdString();
     EXPECT_FALSE(QFile::exists(svg));
 }
 
 TEST(LadderCli, AScenarioThatCannotBeReadExits2) {
     QTemporaryDir dir;
-    const QString project = writeTemp(dir, "steps.sps", kTwoSteps);
+    const QString project = rs::test::writeFile(dir, "steps.sps", kTwoSteps);
     const QString svg = dir.filePath("x.svg");
-    CliRun run = cli({"ladder", project, "--unit", "0", "--network", "1", "--scenario",
-                      dir.filePath("missing.scn"), "-o", svg});
+    rs::test::ProgramRun run =
+        rs::test::runCli({"ladder", project, "--unit", "0", "--network", "1", "--scenario",
+                          dir.filePath("missing.scn"), "-o", svg});
     EXPECT_EQ(run.exitCode, 2);
-    EXPECT_TRUE(run.err.contains("missing.scn")) << run.err.toStdString();
+    EXPECT_TRUE(run.errText().contains("missing.scn")) << run.errText().toStdString();
     EXPECT_FALSE(QFile::exists(svg));
 }
 
@@ -219,29 +209,30 @@ TEST(LadderCli, AScenarioThatCannotBeReadExits2) {
 TEST(RoundtripCli, PrintsTheCanonicalTextOfEveryManualExample) {
     for (const auto& path : rs::test::manualExamples()) {
         const QString file = QString::fromStdString(path.string());
-        CliRun format = cli({"format", file});
-        CliRun roundtrip = cli({"roundtrip", file});
-        EXPECT_EQ(roundtrip.exitCode, 0) << path << roundtrip.err.toStdString();
+        rs::test::ProgramRun format = rs::test::runCli({"format", file});
+        rs::test::ProgramRun roundtrip = rs::test::runCli({"roundtrip", file});
+        EXPECT_EQ(roundtrip.exitCode, 0) << path << roundtrip.errText().toStdString();
         EXPECT_EQ(roundtrip.out, format.out) << path;
     }
     QTemporaryDir dir;
-    const QString grouped = writeTemp(
+    const QString grouped = rs::test::writeFile(
         dir, "grouped.sps",
         "! pgm_pluto:00\nS0.0_0\nM0.3 = I0.3\n;@network comment=\"Both \\\"outputs\\\"\"\n"
         "Q0.2 = I0.1 * (I0.2 + M0.0)   ; A\nQ0.3 = I0.1 * (I0.2 + M0.0)   ; B\n; note\n\n"
         ";@network comment=\"\"\nM0.0\nQ0.17\n");
-    CliRun format = cli({"format", grouped});
-    CliRun roundtrip = cli({"roundtrip", grouped});
-    EXPECT_EQ(roundtrip.exitCode, 0) << roundtrip.err.toStdString();
+    rs::test::ProgramRun format = rs::test::runCli({"format", grouped});
+    rs::test::ProgramRun roundtrip = rs::test::runCli({"roundtrip", grouped});
+    EXPECT_EQ(roundtrip.exitCode, 0) << roundtrip.errText().toStdString();
     EXPECT_EQ(roundtrip.out, format.out);
 }
 
 TEST(RoundtripCli, AProjectWithErrorsExits1) {
     QTemporaryDir dir;
-    const QString broken = writeTemp(dir, "bad.sps", "! pgm_pluto:00\nS0.0_0\nQ0.1 = I0.1 +\n");
-    CliRun run = cli({"roundtrip", broken});
+    const QString broken =
+        rs::test::writeFile(dir, "bad.sps", "! pgm_pluto:00\nS0.0_0\nQ0.1 = I0.1 +\n");
+    rs::test::ProgramRun run = rs::test::runCli({"roundtrip", broken});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.err.contains("bad.sps:3:"));
+    EXPECT_TRUE(run.errText().contains("bad.sps:3:"));
 }
 
 } // namespace

@@ -1,32 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "ProgramRun.h"
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
 // What `test` and `vars import` say about scenario and CSV files they refuse.
 namespace {
-
-struct CliRun {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-CliRun cli(const QStringList& arguments) {
-    QProcess process;
-    process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
-    EXPECT_TRUE(process.waitForFinished(30000));
-    return {process.exitCode(), process.readAllStandardOutput(), process.readAllStandardError()};
-}
-
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
-    QFile file(dir.filePath(name));
-    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(bytes);
-    return file.fileName();
-}
 
 const QByteArray kProject = "! id_pluto:00=000000000000\n"
                             "! I0.0=Start\n"
@@ -38,10 +18,10 @@ const QByteArray kProject = "! id_pluto:00=000000000000\n"
 
 TEST(ReadersCli, AScenarioThatExpectsNothingFails) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
     for (const QByteArray& text : {QByteArray(), QByteArray("\r\r"), QByteArray("set I0.0 1\n")}) {
-        const QString scenario = write(dir, "s.scn", text);
-        const CliRun run = cli({"test", project, scenario});
+        const QString scenario = rs::test::writeFile(dir, "s.scn", text);
+        const rs::test::ProgramRun run = rs::test::runCli({"test", project, scenario});
         EXPECT_EQ(run.exitCode, 1) << text.toStdString();
         EXPECT_EQ(run.out, "0 passed, 1 failed\n");
         EXPECT_EQ(run.err, (scenario + ":1:1: error: no expectation: a scenario must check "
@@ -52,11 +32,11 @@ TEST(ReadersCli, AScenarioThatExpectsNothingFails) {
 
 TEST(ReadersCli, AnEndlessScenarioIsRefusedBeforeItRuns) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
-    const QString scenario = write(dir, "s.scn",
-                                   "\xEF\xBB\xBF"
-                                   "cycle 0ms\rrun 999999999min\rexpect Q0.2 0\r");
-    const CliRun run = cli({"test", project, scenario});
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString scenario = rs::test::writeFile(dir, "s.scn",
+                                                 "\xEF\xBB\xBF"
+                                                 "cycle 0ms\rrun 999999999min\rexpect Q0.2 0\r");
+    const rs::test::ProgramRun run = rs::test::runCli({"test", project, scenario});
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(run.out, "0 passed, 1 failed\n");
     EXPECT_EQ(run.err, (scenario + ":1:7: error: the scan cycle must be 1ms to 10s\n" + scenario +
@@ -67,13 +47,13 @@ TEST(ReadersCli, AnEndlessScenarioIsRefusedBeforeItRuns) {
 
 TEST(ReadersCli, CsvProblemsSayLineAndColumnAndNothingIsWritten) {
     QTemporaryDir dir;
-    const QString project = write(dir, "p.sps", kProject);
-    const QString csv = write(dir, "in.csv",
-                              QByteArray("Variable,Symbolic Name,Description\n"
-                                         "I0.1,Stop,a\0b\n",
-                                         49));
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString csv = rs::test::writeFile(dir, "in.csv",
+                                            QByteArray("Variable,Symbolic Name,Description\n"
+                                                       "I0.1,Stop,a\0b\n",
+                                                       49));
     const QString out = dir.filePath("out.sps");
-    const CliRun run = cli({"vars", "import", project, csv, "-o", out});
+    const rs::test::ProgramRun run = rs::test::runCli({"vars", "import", project, csv, "-o", out});
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(run.err, (csv + ":2:12: error: NUL byte: not text\n").toUtf8());
     EXPECT_FALSE(QFile::exists(out));
