@@ -392,6 +392,7 @@ private:
         m_places.nameColumn = column(words[0].offset);
         m_kindLine = m_blockVersionLine = m_systemLine = 0;
         m_lastDescription = nullptr;
+        m_errorsBeforeBlock = lang::errorCount(m_result.diagnostics);
     }
 
     // A block line that cannot start a block: its keys are read into a block
@@ -618,7 +619,6 @@ private:
         if (first != std::string_view::npos && text.substr(first, 2) == ";@") {
             error(m_number, column(textStart + first),
                   "';@' records belong to the project, not to a block's body");
-            return;
         }
         m_block->body.emplace_back(text);
         m_places.bodyLines.push_back(m_number);
@@ -640,7 +640,7 @@ private:
         const std::string name = quoted(block.name);
         if (m_kindLine == 0)
             error(line, at, "block " + name + " has no kind: write 'kind macro' or 'kind system'");
-        if (block.version.empty())
+        if (m_blockVersionLine == 0)
             error(line, at, "block " + name + " has no version: write 'version N.N'");
         if (block.description.english.empty())
             error(line, at,
@@ -651,15 +651,17 @@ private:
             error(m_systemLine, 1, "a macro block calls no system instruction");
         if (block.kind == BlockKind::Macro && block.body.empty())
             error(line, at, "macro block " + name + " has no body: write 'body STATEMENT' lines");
-        if (block.pins.size() > kMaxPins || block.privates.size() > kMaxPrivates ||
-            block.body.size() > kMaxBodyLines)
-            return; // reported at the line past the limit
+        // A body over a bad pin or variable would only repeat its problem.
+        if (lang::errorCount(m_result.diagnostics) > m_errorsBeforeBlock)
+            return;
 
         const BodyCheckResult checked = checkBody(block);
         for (const BodyProblem& problem : checked.problems)
             error(m_places.bodyLines[problem.bodyLine],
                   m_places.bodyColumns[problem.bodyLine] + problem.column - 1, problem.message);
-        if (checked.problems.empty() && checked.timers != block.timers) {
+        if (!checked.problems.empty())
+            return;
+        if (checked.timers != block.timers) {
             const std::string count = std::to_string(checked.timers);
             error(m_places.timersLine != 0 ? m_places.timersLine : line, 1,
                   "the body of " + name + " holds " + count + " timer" +
@@ -688,6 +690,7 @@ private:
     std::optional<BlockDefinition> m_block;
     BlockPlaces m_places;
     bool m_discard = false;
+    int m_errorsBeforeBlock = 0;
     int m_kindLine = 0;
     int m_blockVersionLine = 0;
     int m_systemLine = 0;

@@ -18,8 +18,9 @@ struct LibraryReadResult {
 // Reads the text of a .rslib file (docs/block-libraries.md). Strict: an
 // unknown key, a duplicate name, a value out of its range, a limit passed or
 // a body that is not Pluto statements is an error at its line and column;
-// the other lines are still read, so every problem is reported at once. A
-// library with errors must not be used.
+// the other lines are still read, so every problem is reported at once (a
+// block's body is checked once its declarations are good). A library with
+// errors must not be used.
 LibraryReadResult readLibrary(std::string_view text);
 
 } // namespace rs::blocks

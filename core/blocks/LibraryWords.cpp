@@ -113,7 +113,7 @@ std::vector<OperandKind> possibleOperands(PinKind kind, PinDirection direction) 
         return {DoubleRegister};
     case PinKind::Time:
         if (in)
-            return {TimeConstant, Register};
+            return {Register, TimeConstant};
         return {Register};
     case PinKind::Constant:
         if (in)

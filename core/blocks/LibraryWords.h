@@ -26,7 +26,7 @@ std::optional<OperandKind> operandKindOf(std::string_view word);
 std::optional<PrivateKind> privateKindOf(std::string_view word);
 
 // The operand kinds a pin of this kind and direction can take at all; a
-// pin's own list is a subset of it.
+// pin's own list is a subset of it. In the order of the enum.
 std::vector<OperandKind> possibleOperands(PinKind kind, PinDirection direction);
 
 } // namespace rs::blocks
