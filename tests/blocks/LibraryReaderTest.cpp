@@ -304,3 +304,18 @@ TEST(LibraryReader, TheShippedLibraryIsCanonicalAndClean) {
         EXPECT_FALSE(block.description.german.empty()) << block.name;
     }
 }
+
+TEST(LibraryReader, TheDocumentedExampleReadsWithoutProblems) {
+    std::ifstream file(RUNGSMITH_DOCS "/block-libraries.md", std::ios::binary);
+    std::stringstream text;
+    text << file.rdbuf();
+    const std::string doc = text.str();
+    const std::size_t start = doc.find("```\n# Comments");
+    ASSERT_NE(start, std::string::npos);
+    const std::size_t end = doc.find("```\n", start + 4);
+    const std::string example = doc.substr(start + 4, end - start - 4);
+    const LibraryReadResult read = readLibrary(example);
+    EXPECT_EQ(problems(example), "");
+    ASSERT_EQ(read.library.blocks.size(), 2u);
+    EXPECT_EQ(read.library.blocks[1].kind, BlockKind::System);
+}
