@@ -264,7 +264,7 @@ private:
     }
 
     // One word after the key; an error and false otherwise.
-    bool oneWord(const std::vector<Word>& words, std::size_t keyStart, std::string_view what) {
+    bool oneWord(const std::vector<Word>& words, std::string_view what) {
         if (words.empty()) {
             error(m_number, column(m_line.size()), "expected " + std::string(what));
             return false;
@@ -274,7 +274,6 @@ private:
                   "unexpected " + quoted(words[1].text) + " after " + std::string(what));
             return false;
         }
-        (void)keyStart;
         return true;
     }
 
@@ -306,7 +305,7 @@ private:
 
     void readName(const std::vector<Word>& words, std::size_t keyStart, std::string& name,
                   std::size_t maxLength, int& seenLine) {
-        if (!givenOnce(seenLine, "library", keyStart) || !oneWord(words, keyStart, "a name"))
+        if (!givenOnce(seenLine, "library", keyStart) || !oneWord(words, "a name"))
             return;
         if (checkName(words[0], maxLength, "library name"))
             name = std::string(words[0].text);
@@ -314,7 +313,7 @@ private:
 
     void readVersion(const std::vector<Word>& words, std::size_t keyStart, std::string& version,
                      int& seenLine) {
-        if (!givenOnce(seenLine, "version", keyStart) || !oneWord(words, keyStart, "a version"))
+        if (!givenOnce(seenLine, "version", keyStart) || !oneWord(words, "a version"))
             return;
         const Word& word = words[0];
         if (!isVersion(word.text) || word.text.size() > kMaxVersionLength) {
@@ -371,7 +370,7 @@ private:
 
     void startBlock(const std::vector<Word>& words, std::size_t keyStart) {
         finishBlock();
-        if (!oneWord(words, keyStart, "a block name"))
+        if (!oneWord(words, "a block name"))
             return skipBlock();
         if (!checkName(words[0], kMaxNameLength, "block name"))
             return skipBlock();
@@ -406,8 +405,7 @@ private:
     }
 
     void readKind(const std::vector<Word>& words, std::size_t keyStart) {
-        if (!givenOnce(m_kindLine, "kind", keyStart) ||
-            !oneWord(words, keyStart, "macro or system"))
+        if (!givenOnce(m_kindLine, "kind", keyStart) || !oneWord(words, "macro or system"))
             return;
         const auto kind = blockKindOf(words[0].text);
         if (!kind) {
@@ -420,7 +418,7 @@ private:
 
     void readSystem(const std::vector<Word>& words, std::size_t keyStart) {
         if (!givenOnce(m_systemLine, "system", keyStart) ||
-            !oneWord(words, keyStart, "a system instruction's name"))
+            !oneWord(words, "a system instruction's name"))
             return;
         if (checkName(words[0], kMaxNameLength, "system instruction"))
             m_block->systemInstruction = std::string(words[0].text);
@@ -428,7 +426,7 @@ private:
 
     void readTimers(const std::vector<Word>& words, std::size_t keyStart) {
         if (!givenOnce(m_places.timersLine, "timers", keyStart) ||
-            !oneWord(words, keyStart, "a number of timers"))
+            !oneWord(words, "a number of timers"))
             return;
         const auto count = canonicalInteger(words[0].text);
         if (!count || *count < 0 || *count > kMaxTimers) {
