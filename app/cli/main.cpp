@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "BlocksVerbs.h"
 #include "Invocation.h"
 #include "LadderVerbs.h"
 #include "RungsmithBuildVersion.h"
@@ -88,6 +89,12 @@ const rs::cli::Verb kVerbs[] = {
     {"roundtrip",
      "roundtrip FILE.sps             every network to the ladder model and back; print the text",
      rs::cli::runRoundtrip},
+    {"blocks",
+     "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
+     "outputs)\n"
+     "  blocks show NAME [--lib NAME|FILE]... [--language en|sv|de]\n"
+     "                                 a block's pins, description and body",
+     rs::cli::runBlocks},
 };
 
 int run(int argc, char* argv[]) {
@@ -124,6 +131,14 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("ladder: run this scenario first and draw the power it "
                                      "leaves."),
                       QStringLiteral("SCN.scn")});
+    parser.addOption({QStringLiteral("lib"),
+                      QStringLiteral("blocks: add the user library FILE (.rslib), or look only "
+                                     "at the library NAME; repeatable."),
+                      QStringLiteral("NAME|FILE")});
+    parser.addOption({QStringLiteral("language"),
+                      QStringLiteral("blocks: the language of block descriptions: en (default), "
+                                     "sv or de."),
+                      QStringLiteral("LANG")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

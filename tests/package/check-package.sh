@@ -73,6 +73,7 @@ for path in \
     ./usr/bin/rungsmith-cli \
     ./usr/share/rungsmith/examples/muting.sps \
     ./usr/share/rungsmith/examples/press-line.sps \
+    ./usr/share/rungsmith/libraries/Rungsmith_Basics.rslib \
     "./usr/share/applications/$app_id.desktop" \
     "./usr/share/metainfo/$app_id.metainfo.xml" \
     ./usr/share/mime/packages/rungsmith.xml \
@@ -118,6 +119,10 @@ check_output=$(env -u LD_LIBRARY_PATH "$cli" check "$share/rungsmith/examples/mu
 grep -q "0 Error(s) detected Result=OK" <<<"$check_output" || fail "check printed: $check_output"
 "$cli" compile "$share/rungsmith/examples/muting.sps" -o "$scratch/files/muting.hps" >/dev/null ||
     fail "rungsmith-cli compile on the bundled example"
+# The standard libraries are found from the program's own place, wherever
+# the package is unpacked.
+env -u LD_LIBRARY_PATH "$cli" blocks list | grep -q "^Rungsmith_Basics ResetLatch(" ||
+    fail "rungsmith-cli blocks list does not find the standard library"
 [ "$("$cli" --version)" = "rungsmith-cli $version" ] || fail "rungsmith-cli --version: $("$cli" --version)"
 gui_version=$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/rungsmith" --version 2>/dev/null) || true
 [ "$gui_version" = "rungsmith $version" ] || fail "rungsmith --version: $gui_version"
@@ -146,7 +151,7 @@ man_text() { gzip -dc "$share/man/man1/$1.1.gz" | groff -man -Tutf8 -P-cbou 2>&1
 cli_page=$(man_text rungsmith-cli)
 for word in check compile format test 'vars export' 'vars import' ladder roundtrip \
     --output --vcd --unit --sequence --step --network --scenario --no-io-warnings --help --version \
-    'EXIT STATUS'; do
+    'blocks list' 'blocks show' --lib --language 'EXIT STATUS'; do
     grep -qF -- "$word" <<<"$cli_page" || fail "the rungsmith-cli man page lacks '$word'"
 done
 gui_page=$(man_text rungsmith)

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "LibraryWords.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace rs::blocks {
+
+namespace {
+
+template <typename Enum, std::size_t N>
+using WordTable = std::array<std::pair<Enum, std::string_view>, N>;
+
+constexpr WordTable<BlockKind, 2> kBlockKinds{
+    {{BlockKind::Macro, "macro"}, {BlockKind::System, "system"}}};
+constexpr WordTable<PinDirection, 2> kDirections{
+    {{PinDirection::In, "in"}, {PinDirection::Out, "out"}}};
+constexpr WordTable<PinKind, 5> kPinKinds{{{PinKind::Bit, "bit"},
+                                           {PinKind::Register, "register"},
+                                           {PinKind::DoubleRegister, "double-register"},
+                                           {PinKind::Time, "time"},
+                                           {PinKind::Constant, "constant"}}};
+constexpr WordTable<PinRole, 2> kRoles{
+    {{PinRole::Primary, "primary"}, {PinRole::Secondary, "secondary"}}};
+constexpr WordTable<OperandKind, 11> kOperands{{{OperandKind::Input, "input"},
+                                                {OperandKind::Output, "output"},
+                                                {OperandKind::Memory, "memory"},
+                                                {OperandKind::GlobalMemory, "global-memory"},
+                                                {OperandKind::SystemMemory, "system-memory"},
+                                                {OperandKind::RegisterBit, "register-bit"},
+                                                {OperandKind::Register, "register"},
+                                                {OperandKind::DoubleRegister, "double-register"},
+                                                {OperandKind::SystemRegister, "system-register"},
+                                                {OperandKind::TimeConstant, "time-constant"},
+                                                {OperandKind::Number, "number"}}};
+constexpr WordTable<PrivateKind, 3> kPrivateKinds{
+    {{PrivateKind::Memory, "memory"},
+     {PrivateKind::Register, "register"},
+     {PrivateKind::DoubleRegister, "double-register"}}};
+
+template <typename Enum, std::size_t N>
+std::string_view word(const WordTable<Enum, N>& table, Enum value) {
+    for (const auto& [entry, text] : table)
+        if (entry == value)
+            return text;
+    return {};
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> value(const WordTable<Enum, N>& table, std::string_view text) {
+    for (const auto& [entry, spelling] : table)
+        if (spelling == text)
+            return entry;
+    return std::nullopt;
+}
+
+} // namespace
+
+std::string_view wordOf(BlockKind kind) {
+    return word(kBlockKinds, kind);
+}
+std::string_view wordOf(PinDirection direction) {
+    return word(kDirections, direction);
+}
+std::string_view wordOf(PinKind kind) {
+    return word(kPinKinds, kind);
+}
+std::string_view wordOf(PinRole role) {
+    return word(kRoles, role);
+}
+std::string_view wordOf(OperandKind kind) {
+    return word(kOperands, kind);
+}
+std::string_view wordOf(PrivateKind kind) {
+    return word(kPrivateKinds, kind);
+}
+
+std::optional<BlockKind> blockKindOf(std::string_view text) {
+    return value(kBlockKinds, text);
+}
+std::optional<PinDirection> pinDirectionOf(std::string_view text) {
+    return value(kDirections, text);
+}
+std::optional<PinKind> pinKindOf(std::string_view text) {
+    return value(kPinKinds, text);
+}
+std::optional<PinRole> pinRoleOf(std::string_view text) {
+    return value(kRoles, text);
+}
+std::optional<OperandKind> operandKindOf(std::string_view text) {
+    return value(kOperands, text);
+}
+std::optional<PrivateKind> privateKindOf(std::string_view text) {
+    return value(kPrivateKinds, text);
+}
+
+std::vector<OperandKind> possibleOperands(PinKind kind, PinDirection direction) {
+    using enum OperandKind;
+    const bool in = direction == PinDirection::In;
+    switch (kind) {
+    case PinKind::Bit:
+        if (in)
+            return {Input, Output, Memory, GlobalMemory, SystemMemory, RegisterBit};
+        return {Output, Memory, GlobalMemory, SystemMemory, RegisterBit};
+    case PinKind::Register:
+        if (in)
+            return {Register, SystemRegister, Number};
+        return {Register, SystemRegister};
+    case PinKind::DoubleRegister:
+        if (in)
+            return {DoubleRegister, Number};
+        return {DoubleRegister};
+    case PinKind::Time:
+        if (in)
+            return {Register, TimeConstant};
+        return {Register};
+    case PinKind::Constant:
+        if (in)
+            return {Number};
+        return {};
+    }
+    return {};
+}
+
+} // namespace rs::blocks
