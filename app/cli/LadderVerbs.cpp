@@ -42,23 +42,14 @@ std::optional<int> number(const Invocation& invocation, const char* name, int lo
     return value;
 }
 
-struct ReadProject {
-    project::Project project;
-    std::string text;
-    int status = Ok; // UsageOrIo when unreadable, Failed on errors
-};
-
-ReadProject read(const QString& path) {
-    project::FileText file = project::readTextFile(path);
-    if (!file.error.isEmpty()) {
-        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
-        return {{}, {}, UsageOrIo};
-    }
-    project::ProjectReadResult result = project::readProject(file.text);
-    const std::string name = path.toStdString();
-    for (const auto& diagnostic : result.diagnostics)
-        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
-    return {std::move(result.project), std::move(file.text), result.ok() ? Ok : Failed};
+// The project with its diagnostics printed; a status other than Ok when it
+// cannot be read or has errors.
+int read(const QString& path, const Invocation& invocation, LoadedProject& loaded) {
+    loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    printDiagnostics(path, loaded.diagnostics);
+    return loaded.ok() ? Ok : Failed;
 }
 
 struct ScenarioPower {
@@ -70,14 +61,14 @@ struct ScenarioPower {
 // Compiles the project, runs the scenario from power on and takes the power
 // picture of unit `station` as the scenario leaves it. Failed expectations
 // are printed as `test` prints them; the state they end in is still drawn.
-ScenarioPower runToEnd(const QString& projectPath, const ReadProject& loaded,
+ScenarioPower runToEnd(const QString& projectPath, const LoadedProject& loaded,
                        const QString& scenarioPath, int station) {
     const project::FileText text = project::readTextFile(scenarioPath);
     if (!text.error.isEmpty()) {
         std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(text.error));
         return {{}, UsageOrIo, false};
     }
-    const compiler::CompileResult compiled = compiler::compileText(loaded.text);
+    const compiler::CompileResult compiled = rs::cli::compiled(loaded, {});
     if (compiled.errors()) {
         for (const auto& diagnostic : compiled.diagnostics)
             if (diagnostic.severity == lang::Severity::Error)
@@ -129,9 +120,9 @@ int runLadder(const Invocation& invocation) {
         return usage(QStringLiteral("ladder needs -o OUT.svg or -o OUT.png"));
 
     const QString& path = invocation.arguments[0];
-    ReadProject loaded = read(path);
-    if (loaded.status != Ok)
-        return loaded.status;
+    LoadedProject loaded;
+    if (const int status = read(path, invocation, loaded); status != Ok)
+        return status;
     const lang::Document& document = loaded.project.program;
     const auto program =
         std::find_if(document.units.begin(), document.units.end(),
@@ -181,9 +172,9 @@ int runRoundtrip(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("roundtrip takes exactly one FILE.sps"));
     const QString& path = invocation.arguments[0];
-    ReadProject loaded = read(path);
-    if (loaded.status != Ok)
-        return loaded.status;
+    LoadedProject loaded;
+    if (const int status = read(path, invocation, loaded); status != Ok)
+        return status;
     const std::string canonical = project::writeProject(loaded.project);
     for (auto& unit : loaded.project.program.units)
         for (auto& step : unit.steps)

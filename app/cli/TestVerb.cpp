@@ -25,22 +25,17 @@ QString tracePath(const QString& vcd, const QString& scenario, bool several) {
 } // namespace
 
 int runTest(const QString& projectPath, const QStringList& scenarios, const QString& vcd,
-            const compiler::CheckOptions& options) {
-    project::FileText file = project::readTextFile(projectPath);
-    if (!file.error.isEmpty()) {
-        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
-        return UsageOrIo;
-    }
-    project::ProjectReadResult read = project::readProject(file.text);
-    compiler::CompileResult compiled = compiler::compileText(file.text, options);
+            const QStringList& libraryFiles, const compiler::CheckOptions& options) {
+    const LoadedProject loaded = loadProject(projectPath, libraryFiles);
+    if (loaded.status != Ok)
+        return loaded.status;
+    compiler::CompileResult compiled = rs::cli::compiled(loaded, options);
     if (compiled.errors()) {
-        for (const auto& diagnostic : compiled.diagnostics)
-            std::fprintf(stderr, "%s\n",
-                         lang::formatDiagnostic(projectPath.toStdString(), diagnostic).c_str());
+        printDiagnostics(projectPath, compiled.diagnostics);
         std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", compiled.errors());
         return Failed;
     }
-    const sim::OperandNames names(read.project);
+    const sim::OperandNames names(loaded.project);
     int passed = 0;
     int failed = 0;
     for (const QString& path : scenarios) {

@@ -13,6 +13,6 @@ namespace rs::cli {
 // closing "N passed, M failed". With several scenarios and --vcd, each trace
 // goes to OUT.<scenario name>.vcd.
 int runTest(const QString& project, const QStringList& scenarios, const QString& vcd,
-            const compiler::CheckOptions& options);
+            const QStringList& libraryFiles, const compiler::CheckOptions& options);
 
 } // namespace rs::cli

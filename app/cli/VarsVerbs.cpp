@@ -20,22 +20,19 @@ int usage(const char* message) {
 
 // The project with its diagnostics reported; nothing when it cannot be read
 // (exit 2) or has errors (exit 1), with the status in `status`.
-std::optional<project::Project> loadProject(const QString& path, int& status) {
-    const project::FileText file = project::readTextFile(path);
-    if (!file.error.isEmpty()) {
-        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
-        status = UsageOrIo;
+std::optional<project::Project> loadProject(const Invocation& invocation, const QString& path,
+                                            int& status) {
+    LoadedProject loaded = rs::cli::loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok) {
+        status = loaded.status;
         return std::nullopt;
     }
-    project::ProjectReadResult read = project::readProject(file.text);
-    const std::string name = path.toStdString();
-    for (const auto& diagnostic : read.diagnostics)
-        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
-    if (!read.ok()) {
+    printDiagnostics(path, loaded.diagnostics);
+    if (!loaded.ok()) {
         status = Failed;
         return std::nullopt;
     }
-    return std::move(read.project);
+    return std::move(loaded.project);
 }
 
 int write(const QString& path, std::string_view text) {
@@ -46,17 +43,18 @@ int write(const QString& path, std::string_view text) {
     return UsageOrIo;
 }
 
-int exportCsv(const QString& projectPath, const QString& out) {
+int exportCsv(const Invocation& invocation, const QString& projectPath, const QString& out) {
     int status = Ok;
-    const auto project = loadProject(projectPath, status);
+    const auto project = loadProject(invocation, projectPath, status);
     if (!project)
         return status;
     return write(out, project::exportVariablesCsv(*project, {}));
 }
 
-int importCsv(const QString& projectPath, const QString& csvPath, const QString& out) {
+int importCsv(const Invocation& invocation, const QString& projectPath, const QString& csvPath,
+              const QString& out) {
     int status = Ok;
-    const auto project = loadProject(projectPath, status);
+    const auto project = loadProject(invocation, projectPath, status);
     if (!project)
         return status;
     const project::FileText csv = project::readTextFile(csvPath);
@@ -84,12 +82,12 @@ int runVars(const Invocation& invocation) {
     if (action == QLatin1String("export")) {
         if (arguments.size() != 2 || out.isEmpty())
             return usage("vars export takes FILE.sps and -o OUT.csv");
-        return exportCsv(arguments[1], out);
+        return exportCsv(invocation, arguments[1], out);
     }
     if (action == QLatin1String("import")) {
         if (arguments.size() != 3 || out.isEmpty())
             return usage("vars import takes FILE.sps, IN.csv and -o OUT.sps");
-        return importCsv(arguments[1], arguments[2], out);
+        return importCsv(invocation, arguments[1], arguments[2], out);
     }
     return usage(
         qPrintable(QStringLiteral("unknown vars action '%1'; use export or import").arg(action)));

@@ -11,26 +11,6 @@ namespace rs::cli {
 
 namespace {
 
-struct Loaded {
-    std::string text;
-    bool readable = false;
-};
-
-Loaded load(const QString& path, Streams streams) {
-    project::FileText file = project::readTextFile(path);
-    if (!file.error.isEmpty()) {
-        std::fprintf(streams.err, "rungsmith-cli: %s\n", qPrintable(file.error));
-        return {};
-    }
-    return {std::move(file.text), true};
-}
-
-void report(const QString& path, const lang::Diagnostics& diagnostics, Streams streams) {
-    const std::string name = path.toStdString();
-    for (const auto& diagnostic : diagnostics)
-        std::fprintf(streams.err, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
-}
-
 // The closing line of the original tool.
 int summarize(int errors, Streams streams) {
     std::fprintf(streams.out, "%d Error(s) detected Result=%s\n", errors, errors ? "FAILED" : "OK");
@@ -39,22 +19,23 @@ int summarize(int errors, Streams streams) {
 
 } // namespace
 
-int runCheck(const QString& path, const compiler::CheckOptions& options, Streams streams) {
-    Loaded loaded = load(path, streams);
-    if (!loaded.readable)
-        return UsageOrIo;
-    compiler::CompileResult result = compiler::compileText(loaded.text, options);
-    report(path, result.diagnostics, streams);
+int runCheck(const QString& path, const QStringList& libraryFiles,
+             const compiler::CheckOptions& options, Streams streams) {
+    LoadedProject loaded = loadProject(path, libraryFiles);
+    if (loaded.status != Ok)
+        return loaded.status;
+    compiler::CompileResult result = compiled(loaded, options);
+    printDiagnostics(path, result.diagnostics);
     return summarize(result.errors(), streams);
 }
 
-int runCompile(const QString& path, const QString& output, const compiler::CheckOptions& options,
-               Streams streams) {
-    Loaded loaded = load(path, streams);
-    if (!loaded.readable)
-        return UsageOrIo;
-    compiler::CompileResult result = compiler::compileText(loaded.text, options);
-    report(path, result.diagnostics, streams);
+int runCompile(const QString& path, const QString& output, const QStringList& libraryFiles,
+               const compiler::CheckOptions& options, Streams streams) {
+    LoadedProject loaded = loadProject(path, libraryFiles);
+    if (loaded.status != Ok)
+        return loaded.status;
+    compiler::CompileResult result = compiled(loaded, options);
+    printDiagnostics(path, result.diagnostics);
     if (result.errors())
         return summarize(result.errors(), streams);
     QString target = output;
@@ -70,17 +51,34 @@ int runCompile(const QString& path, const QString& output, const compiler::Check
     return summarize(0, streams);
 }
 
-int runFormat(const QString& path, Streams streams) {
-    Loaded loaded = load(path, streams);
-    if (!loaded.readable)
-        return UsageOrIo;
-    project::ProjectReadResult result = project::readProject(loaded.text);
-    report(path, result.diagnostics, streams);
-    if (!result.ok())
+int runFormat(const QString& path, const QStringList& libraryFiles, Streams streams) {
+    LoadedProject loaded = loadProject(path, libraryFiles);
+    if (loaded.status != Ok)
+        return loaded.status;
+    printDiagnostics(path, loaded.diagnostics);
+    if (!loaded.ok())
         return Failed;
-    const std::string text = project::writeProject(result.project);
+    const std::string text = project::writeProject(loaded.project);
     std::fwrite(text.data(), 1, text.size(), streams.out);
     return Ok;
+}
+
+compiler::CompileResult compiled(const LoadedProject& loaded,
+                                 const compiler::CheckOptions& options) {
+    if (!loaded.ok())
+        return {loaded.diagnostics, {}};
+    compiler::CompileResult result = compiler::compile(loaded.project, options);
+    result.diagnostics.insert(result.diagnostics.begin(), loaded.diagnostics.begin(),
+                              loaded.diagnostics.end());
+    lang::sortByPlace(result.diagnostics);
+    // An image records the lines of the text it was made from, and holds the
+    // canonical text: once expansions were written in, those are the lines
+    // of the canonical text, so the file as `format` writes it compiles to
+    // the same image.
+    if (loaded.expanded && !result.errors())
+        result.images =
+            compiler::compileText(project::writeProject(loaded.project), options).images;
+    return result;
 }
 
 } // namespace rs::cli

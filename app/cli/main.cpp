@@ -43,7 +43,8 @@ rs::compiler::CheckOptions checkOptions(const Invocation& invocation) {
 int check(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("check takes exactly one FILE.sps"));
-    return rs::cli::runCheck(invocation.arguments[0], checkOptions(invocation), {});
+    return rs::cli::runCheck(invocation.arguments[0], rs::cli::libraryFiles(invocation),
+                             checkOptions(invocation), {});
 }
 
 int compile(const Invocation& invocation) {
@@ -51,13 +52,13 @@ int compile(const Invocation& invocation) {
         return usage(QStringLiteral("compile takes exactly one FILE.sps"));
     return rs::cli::runCompile(invocation.arguments[0],
                                invocation.options.value(QStringLiteral("output")),
-                               checkOptions(invocation), {});
+                               rs::cli::libraryFiles(invocation), checkOptions(invocation), {});
 }
 
 int format(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("format takes exactly one FILE.sps"));
-    return rs::cli::runFormat(invocation.arguments[0], {});
+    return rs::cli::runFormat(invocation.arguments[0], rs::cli::libraryFiles(invocation), {});
 }
 
 int test(const Invocation& invocation) {
@@ -65,7 +66,7 @@ int test(const Invocation& invocation) {
         return usage(QStringLiteral("test takes FILE.sps and at least one SCENARIO.scn"));
     return rs::cli::runTest(invocation.arguments[0], invocation.arguments.mid(1),
                             invocation.options.value(QStringLiteral("vcd")),
-                            checkOptions(invocation));
+                            rs::cli::libraryFiles(invocation), checkOptions(invocation));
 }
 
 // Every verb of the command line; --help lists them in this order.
@@ -132,8 +133,9 @@ int run(int argc, char* argv[]) {
                                      "leaves."),
                       QStringLiteral("SCN.scn")});
     parser.addOption({QStringLiteral("lib"),
-                      QStringLiteral("blocks: add the user library FILE (.rslib), or look only "
-                                     "at the library NAME; repeatable."),
+                      QStringLiteral("Add the user library FILE (.rslib) to the project's "
+                                     "libraries; blocks: look only at the library NAME. "
+                                     "Repeatable."),
                       QStringLiteral("NAME|FILE")});
     parser.addOption({QStringLiteral("language"),
                       QStringLiteral("blocks: the language of block descriptions: en (default), "

@@ -61,30 +61,6 @@ bool isVersion(std::string_view version) {
     return true;
 }
 
-// A decimal integer written canonically (no '+', no leading zeros, no "-0").
-std::optional<std::int64_t> canonicalInteger(std::string_view text) {
-    std::int64_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    if (std::to_string(value) != text)
-        return std::nullopt;
-    return value;
-}
-
-// 0s00 .. 655s35, seconds without leading zeros, hundredths two digits.
-bool isTimeConstant(std::string_view text) {
-    const std::size_t s = text.find('s');
-    if (s == std::string_view::npos || text.size() != s + 3)
-        return false;
-    const auto seconds = canonicalInteger(text.substr(0, s));
-    const std::string_view hundredths = text.substr(s + 1);
-    if (!seconds || *seconds < 0 || hundredths[0] < '0' || hundredths[0] > '9' ||
-        hundredths[1] < '0' || hundredths[1] > '9')
-        return false;
-    return *seconds * 100 + (hundredths[0] - '0') * 10 + (hundredths[1] - '0') <= 65535;
-}
-
 std::string checkDefault(PinKind kind, std::string_view value) {
     const auto number = canonicalInteger(value);
     switch (kind) {

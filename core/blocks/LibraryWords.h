@@ -3,6 +3,7 @@
 
 #include "BlockLibrary.h"
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -28,5 +29,12 @@ std::optional<PrivateKind> privateKindOf(std::string_view word);
 // The operand kinds a pin of this kind and direction can take at all; a
 // pin's own list is a subset of it. In the order of the enum.
 std::vector<OperandKind> possibleOperands(PinKind kind, PinDirection direction);
+
+// A decimal integer written canonically (no '+', no leading zeros, no "-0").
+std::optional<std::int64_t> canonicalInteger(std::string_view text);
+
+// A time constant as defaults and bindings write it: 0s00 .. 655s35, seconds
+// without leading zeros, hundredths two digits.
+bool isTimeConstant(std::string_view text);
 
 } // namespace rs::blocks

@@ -12,23 +12,13 @@
 
 namespace rs::compiler {
 
-namespace {
-
-void sortByPlace(lang::Diagnostics& diagnostics) {
-    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.line, a.column) < std::tie(b.line, b.column);
-    });
-}
-
-} // namespace
-
 CompileResult compile(const project::Project& project, const CheckOptions& options) {
     CompileResult result;
     UnitSetups units = collectUnits(project.program, result.diagnostics);
     collectExports(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
     result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
-    sortByPlace(result.diagnostics);
+    lang::sortByPlace(result.diagnostics);
     if (result.errors())
         return result;
     const std::string canonical = project::writeProject(project);
@@ -58,7 +48,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     }
     if (result.errors()) {
         result.images.clear();
-        sortByPlace(result.diagnostics);
+        lang::sortByPlace(result.diagnostics);
     }
     return result;
 }
@@ -70,7 +60,7 @@ CompileResult compileText(std::string_view text, const CheckOptions& options) {
     CompileResult result = compile(read.project, options);
     result.diagnostics.insert(result.diagnostics.begin(), read.diagnostics.begin(),
                               read.diagnostics.end());
-    sortByPlace(result.diagnostics);
+    lang::sortByPlace(result.diagnostics);
     return result;
 }
 

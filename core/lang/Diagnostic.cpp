@@ -2,6 +2,7 @@
 #include "Diagnostic.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace rs::lang {
 
@@ -49,6 +50,12 @@ std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diag
     text += diagnostic.severity == Severity::Error ? "error: " : "warning: ";
     text += visibleText(diagnostic.message);
     return text;
+}
+
+void sortByPlace(Diagnostics& diagnostics) {
+    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+    });
 }
 
 } // namespace rs::lang

@@ -22,6 +22,9 @@ using Diagnostics = std::vector<Diagnostic>;
 
 int errorCount(const Diagnostics& diagnostics);
 
+// In the order of their places in the file; of one place, in the order given.
+void sortByPlace(Diagnostics& diagnostics);
+
 // The text with every control character written visibly (\0, \t, \x01), so
 // a message quoting source text is never cut at a NUL or broken across lines.
 std::string visibleText(std::string_view text);

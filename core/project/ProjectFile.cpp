@@ -58,12 +58,14 @@ public:
         lines = std::move(kept);
     }
 
-    // Network records stay where they are; they are only checked.
+    // Network and block instance records stay where they are; they are only
+    // checked (block instances by blocks::findInstances).
     void check(const std::vector<Line>& lines) {
         for (const auto& line : lines)
             if (auto* comment = std::get_if<CommentLine>(&line.body))
                 if (auto annotation = read(*comment, line.location);
-                    annotation && annotation->kind != "network")
+                    annotation && annotation->kind != "network" && annotation->kind != "block" &&
+                    annotation->kind != "end")
                     warn(line.location, "@" + annotation->kind +
                                             " records belong before the code; kept as a comment");
     }

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ProjectLoading.h"
+
+#include "Verbs.h"
+#include "blocks/LibrarySearch.h"
+#include "blocks/ProjectInstances.h"
+#include "project/ProjectFile.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+#include <cstdio>
+
+namespace rs::cli {
+
+QStringList libraryFiles(const Invocation& invocation) {
+    QStringList files;
+    for (const QString& value : invocation.options.values(QStringLiteral("lib")))
+        if (QFileInfo(value).isFile() ||
+            value.endsWith(QStringLiteral(".") + QLatin1String(blocks::kLibraryExtension)))
+            files.append(value);
+    return files;
+}
+
+LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) {
+    LoadedProject loaded;
+    project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        loaded.status = UsageOrIo;
+        return loaded;
+    }
+    const blocks::LibrarySet libraries = blocks::loadLibraries(
+        blocks::standardLibraryFolders(QCoreApplication::applicationDirPath()),
+        QFileInfo(path).absolutePath(), libraryFiles);
+    for (const auto& problem : libraries.problems) {
+        if (!problem.readError.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(problem.readError));
+            loaded.status = UsageOrIo;
+        }
+        printDiagnostics(problem.path, problem.diagnostics);
+    }
+    if (loaded.status != Ok)
+        return loaded;
+    blocks::ProjectWithInstances read = blocks::readProjectWithInstances(file.text, libraries);
+    loaded.project = std::move(read.read.project);
+    loaded.diagnostics = std::move(read.read.diagnostics);
+    loaded.expanded = read.expanded;
+    loaded.text = std::move(file.text);
+    return loaded;
+}
+
+void printDiagnostics(const QString& path, const lang::Diagnostics& diagnostics) {
+    const std::string name = path.toStdString();
+    for (const auto& diagnostic : diagnostics)
+        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
+}
+
+} // namespace rs::cli

@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "InstanceExpansion.h"
+
+#include "BodyTemplate.h"
+#include "LibraryWords.h"
+#include "lang/NameResolver.h"
+#include "lang/Parser.h"
+#include "lang/Printer.h"
+
+#include <algorithm>
+#include <map>
+
+namespace rs::blocks {
+
+namespace {
+
+std::optional<OperandKind> kindOfAddress(const lang::Address& address) {
+    using K = lang::AddressKind;
+    switch (address.kind) {
+    case K::Input:
+    case K::AnalogInput:
+    case K::AsiInput:
+        return OperandKind::Input;
+    case K::Output:
+    case K::AsiOutput:
+        return OperandKind::Output;
+    case K::InputOutput:
+        return OperandKind::Input; // and Output: see allows()
+    case K::Memory:
+        return OperandKind::Memory;
+    case K::GlobalMemory:
+        return OperandKind::GlobalMemory;
+    case K::SystemMemory:
+        return OperandKind::SystemMemory;
+    case K::RegisterBit:
+        return OperandKind::RegisterBit;
+    case K::Register:
+        return OperandKind::Register;
+    case K::DoubleRegister:
+        return OperandKind::DoubleRegister;
+    case K::SystemRegister:
+        return OperandKind::SystemRegister;
+    default:
+        return std::nullopt;
+    }
+}
+
+std::vector<OperandKind> allowedOperands(const Pin& pin) {
+    return pin.operands.empty() ? possibleOperands(pin.kind, pin.direction) : pin.operands;
+}
+
+bool allows(const std::vector<OperandKind>& allowed, OperandKind kind) {
+    return std::find(allowed.begin(), allowed.end(), kind) != allowed.end();
+}
+
+std::string kindsText(const std::vector<OperandKind>& kinds) {
+    std::string text;
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        if (i)
+            text += i + 1 == kinds.size() ? " or " : ", ";
+        text += std::string(wordOf(kinds[i]));
+    }
+    return text.empty() ? "nothing" : text;
+}
+
+// Why the operand cannot be bound to the pin; empty when it can.
+std::string bindingProblem(const Pin& pin, const std::string& operand,
+                           const std::map<std::string, lang::Address>& names, int station) {
+    const std::vector<OperandKind> allowed = allowedOperands(pin);
+    const std::string what =
+        "pin " + pin.name + " takes " + kindsText(allowed) + ", not '" + operand + "'";
+    if (canonicalInteger(operand) || (!operand.empty() && operand.front() == '-'))
+        return allows(allowed, OperandKind::Number) ? "" : what;
+    if (isTimeConstant(operand))
+        return allows(allowed, OperandKind::TimeConstant) ? "" : what;
+    const std::optional<lang::Address> address = operandAddress(names, operand);
+    if (!address)
+        return "pin " + pin.name + ": '" + operand + "' is neither an address nor a name unit " +
+               std::to_string(station) + " sees";
+    if (address->kind == lang::AddressKind::InputOutput &&
+        (allows(allowed, OperandKind::Input) || allows(allowed, OperandKind::Output)))
+        return {};
+    const std::optional<OperandKind> kind = kindOfAddress(*address);
+    return kind && allows(allowed, *kind) ? "" : what;
+}
+
+std::optional<lang::Address> take(PrivateVariables& variables, PrivateKind kind) {
+    switch (kind) {
+    case PrivateKind::Memory:
+        return variables.memory();
+    case PrivateKind::Register:
+        return variables.registerWord();
+    case PrivateKind::DoubleRegister:
+        return variables.doubleRegister();
+    }
+    return std::nullopt;
+}
+
+std::optional<PrivateKind> standInKind(const Pin& pin) {
+    switch (pin.kind) {
+    case PinKind::Bit:
+        return PrivateKind::Memory;
+    case PinKind::Register:
+    case PinKind::Time:
+        return PrivateKind::Register;
+    case PinKind::DoubleRegister:
+        return PrivateKind::DoubleRegister;
+    case PinKind::Constant:
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+void placeAt(lang::Operand& operand, lang::SourceLocation at) {
+    operand.location = at;
+}
+void placeAt(lang::Value& value, lang::SourceLocation at) {
+    value.location = at;
+    if (value.operand)
+        placeAt(*value.operand, at);
+}
+void placeAt(lang::Expr& expr, lang::SourceLocation at) {
+    expr.location = at;
+    placeAt(expr.operand, at);
+    if (expr.preset.registerOperand)
+        placeAt(*expr.preset.registerOperand, at);
+    placeAt(expr.right, at);
+    for (auto& child : expr.children)
+        placeAt(child, at);
+}
+void placeAt(lang::Line& line, lang::SourceLocation at) {
+    line.location = at;
+    if (auto* statement = std::get_if<lang::Statement>(&line.body)) {
+        statement->location = at;
+        placeAt(statement->target, at);
+        placeAt(statement->assignment.target, at);
+        placeAt(statement->assignment.left, at);
+        placeAt(statement->assignment.right, at);
+        if (statement->condition)
+            placeAt(*statement->condition, at);
+    }
+}
+
+} // namespace
+
+std::string standInName(const Pin& pin) {
+    return "pin." + pin.name;
+}
+
+Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
+                         const lang::Document& document, int station, PrivateVariables& variables) {
+    Expansion expansion;
+    const lang::SourceLocation at = instance.location;
+    auto error = [&](std::string message) {
+        expansion.diagnostics.push_back(
+            {lang::Severity::Error, at.line, at.column, block.name + ": " + std::move(message)});
+    };
+    const auto names = unitNames(document, station);
+
+    for (const auto& binding : instance.pins)
+        if (!block.findPin(binding.name)) {
+            std::string pins;
+            for (const auto& pin : block.pins)
+                pins += (pins.empty() ? "" : ", ") + pin.name;
+            error("no pin '" + binding.name + "'; its pins are " + pins);
+        }
+
+    // What each placeholder is replaced with.
+    std::map<std::string, std::string> pinValues;     // by pin name as the block spells it
+    std::map<std::string, std::string> privateValues; // by private name
+    std::vector<std::string> firstScan;               // lines put before the body
+
+    // A private variable: the recorded one, or a new one.
+    auto privateOperand = [&](const std::string& recordName,
+                              PrivateKind kind) -> std::optional<std::string> {
+        if (const Binding* recorded = instance.findPrivate(recordName)) {
+            const lang::AddressWord word = lang::readAddressWord(recorded->operand);
+            if (word.shape != lang::AddressWord::Shape::Variable || word.address.unit != station) {
+                error("#" + recordName + "=\"" + recorded->operand + "\" is no variable of unit " +
+                      std::to_string(station));
+                return std::nullopt;
+            }
+            return recorded->operand;
+        }
+        const std::optional<lang::Address> address = take(variables, kind);
+        if (!address) {
+            error("unit " + std::to_string(station) + " has no free " + std::string(wordOf(kind)) +
+                  " left for the instance's " + recordName);
+            return std::nullopt;
+        }
+        const std::string operand = lang::toString(*address);
+        instance.privates.push_back({recordName, operand});
+        return operand;
+    };
+
+    for (const auto& pin : block.pins) {
+        if (const Binding* bound = instance.findPin(pin.name)) {
+            if (const std::string problem = bindingProblem(pin, bound->operand, names, station);
+                !problem.empty())
+                error(problem);
+            pinValues[pin.name] = bound->operand;
+            continue;
+        }
+        const bool input = pin.direction == PinDirection::In;
+        if (input && !pin.defaultValue) {
+            error("input " + pin.name + " is not bound and has no default");
+            continue;
+        }
+        if (input && pin.kind != PinKind::Bit) {
+            pinValues[pin.name] = *pin.defaultValue;
+            continue;
+        }
+        const std::optional<PrivateKind> kind = standInKind(pin);
+        if (!kind) {
+            error("output " + pin.name + " must be bound");
+            continue;
+        }
+        const std::optional<std::string> operand = privateOperand(standInName(pin), *kind);
+        if (!operand)
+            continue;
+        pinValues[pin.name] = *operand;
+        if (input && *pin.defaultValue == "1")
+            firstScan.push_back("S(" + *operand + ") = /" + *operand);
+    }
+    for (const auto& variable : block.privates)
+        if (const auto operand = privateOperand(variable.name, variable.kind))
+            privateValues[variable.name] = *operand;
+    if (!expansion.ok())
+        return expansion;
+
+    std::string body;
+    for (const auto& line : firstScan)
+        body += line + "\n";
+    for (const auto& line : block.body) {
+        const SubstitutedLine substituted =
+            substitute(line, [&](const Placeholder& placeholder) -> std::string {
+                if (placeholder.isPrivate)
+                    return privateValues.at(block.findPrivate(placeholder.name)->name);
+                return pinValues.at(block.findPin(placeholder.name)->name);
+            });
+        body += substituted.text + "\n";
+    }
+
+    // Read with the unit's names around it, as any code of the unit.
+    lang::Document frame;
+    frame.preamble = document.preamble;
+    lang::UnitProgram unit;
+    for (const auto& existing : document.units)
+        if (existing.station() == station)
+            unit.declarations = existing.declarations;
+    unit.header.body = lang::Declaration{lang::ProgramDeclaration{station}, {}};
+    frame.units.push_back(std::move(unit));
+    const std::string text =
+        lang::print(frame) + lang::toString(lang::StepAddress{station, 0, 0}) + "\n" + body;
+    lang::ParseResult parsed = lang::parse(text);
+    lang::Diagnostics problems = parsed.diagnostics;
+    if (lang::errorCount(problems) == 0) {
+        const lang::Diagnostics resolved = lang::resolveNames(parsed.document);
+        problems.insert(problems.end(), resolved.begin(), resolved.end());
+    }
+    for (const auto& problem : problems)
+        if (problem.severity == lang::Severity::Error) {
+            error("its statements do not read with these operands: " + problem.message);
+            return expansion;
+        }
+    if (parsed.document.units.empty() || parsed.document.units.back().steps.empty())
+        return expansion;
+    for (auto& line : parsed.document.units.back().steps.back().lines) {
+        placeAt(line, at);
+        expansion.lines.push_back(std::move(line));
+    }
+    return expansion;
+}
+
+} // namespace rs::blocks

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ProjectInstances.h"
+
+#include "BlockInstance.h"
+#include "InstanceExpansion.h"
+#include "UnitVariables.h"
+#include "compiler/UnitSetup.h"
+#include "lang/NameResolver.h"
+#include "target/UnitType.h"
+
+#include <algorithm>
+
+namespace rs::blocks {
+
+namespace {
+
+const BlockDefinition* definitionOf(const BlockInstance& instance, const LibrarySet& libraries) {
+    if (!instance.library.empty()) {
+        const LoadedLibrary* library = libraries.findLibrary(instance.library);
+        return library ? library->library.findBlock(instance.type) : nullptr;
+    }
+    const LoadedLibrary* library = libraries.libraryOfBlock(instance.type);
+    return library ? library->library.findBlock(instance.type) : nullptr;
+}
+
+std::string libraryOf(const BlockDefinition& block, const LibrarySet& libraries) {
+    for (const auto& loaded : libraries.libraries)
+        for (const auto& candidate : loaded.library.blocks)
+            if (&candidate == &block)
+                return loaded.library.name;
+    return {};
+}
+
+// The statements and comments of an expansion, without blank lines.
+std::vector<lang::Line> meaningful(std::vector<lang::Line>::const_iterator first,
+                                   std::vector<lang::Line>::const_iterator last) {
+    std::vector<lang::Line> lines;
+    for (auto line = first; line != last; ++line)
+        if (!std::holds_alternative<lang::BlankLine>(line->body))
+            lines.push_back(*line);
+    return lines;
+}
+
+const target::UnitTypeInfo& typeOf(const compiler::UnitSetups& setups, int station) {
+    const auto found = setups.find(station);
+    if (found != setups.end() && found->second.type)
+        return *found->second.type;
+    return target::unitTypeInfo(target::baseType(lang::UnitFamily::Pluto));
+}
+
+struct Pending {
+    lang::Step* step;
+    BlockInstance instance;
+    std::vector<lang::Line> lines;
+};
+
+} // namespace
+
+InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& libraries) {
+    InstanceExpansion result;
+    lang::Diagnostics& diagnostics = result.diagnostics;
+    lang::Diagnostics ignored; // the compiler reports what is wrong with the units
+    const compiler::UnitSetups setups = compiler::collectUnits(document, ignored);
+    for (auto& unit : document.units) {
+        const int station = unit.station();
+        std::vector<std::pair<lang::Step*, BlockInstance>> instances;
+        for (auto& step : unit.steps) {
+            StepInstances found = findInstances(step);
+            diagnostics.insert(diagnostics.end(), found.diagnostics.begin(),
+                               found.diagnostics.end());
+            for (auto& instance : found.instances)
+                instances.emplace_back(&step, std::move(instance));
+        }
+        if (instances.empty())
+            continue;
+        PrivateVariables variables(typeOf(setups, station),
+                                   lang::instructionSetOf(document, station), station,
+                                   usedAddresses(document, station));
+        for (const auto& [step, instance] : instances)
+            for (const auto& variable : instance.privates) {
+                const lang::AddressWord word = lang::readAddressWord(variable.operand);
+                if (word.shape == lang::AddressWord::Shape::Variable)
+                    variables.take(word.address);
+            }
+
+        std::vector<Pending> pending;
+        for (auto& [step, instance] : instances) {
+            const BlockDefinition* block = definitionOf(instance, libraries);
+            const lang::SourceLocation at = instance.location;
+            if (instance.hasExpansion()) {
+                if (!block)
+                    continue; // the statements are the program; the library is not needed
+                if (!instance.version.empty() && instance.version != block->version) {
+                    diagnostics.push_back({lang::Severity::Warning, at.line, at.column,
+                                           instance.type + " is version " + block->version +
+                                               " in its library; this instance was made by " +
+                                               instance.version});
+                    continue;
+                }
+                BlockInstance again = instance;
+                PrivateVariables spare = variables; // what the check takes is not kept
+                const Expansion expected = expandInstance(*block, again, document, station, spare);
+                const auto first = step->lines.begin() + std::ptrdiff_t(instance.record + 1);
+                const auto last = step->lines.begin() + std::ptrdiff_t(instance.end);
+                if (!expected.ok() || meaningful(first, last) != expected.lines)
+                    diagnostics.push_back(
+                        {lang::Severity::Warning, at.line, at.column,
+                         "the statements of this " + instance.type +
+                             " are not what the block makes of its record (edited by hand?); "
+                             "they are kept and read as ordinary statements"});
+                continue;
+            }
+            if (!block) {
+                diagnostics.push_back(
+                    {lang::Severity::Error, at.line, at.column,
+                     "unknown block '" + instance.type + "'" +
+                         (instance.library.empty() ? std::string()
+                                                   : " in library '" + instance.library + "'")});
+                continue;
+            }
+            Expansion expansion = expandInstance(*block, instance, document, station, variables);
+            diagnostics.insert(diagnostics.end(), expansion.diagnostics.begin(),
+                               expansion.diagnostics.end());
+            if (!expansion.ok())
+                continue;
+            instance.library = libraryOf(*block, libraries);
+            instance.version = block->version;
+            pending.push_back({step, std::move(instance), std::move(expansion.lines)});
+        }
+        // Last first, so that the places of the earlier ones in their step stay.
+        for (auto it = pending.rbegin(); it != pending.rend(); ++it) {
+            auto& lines = it->step->lines;
+            std::get<lang::CommentLine>(lines[it->instance.record].body).text =
+                recordText(it->instance);
+            lines.insert(lines.begin() + std::ptrdiff_t(it->instance.end),
+                         std::make_move_iterator(it->lines.begin()),
+                         std::make_move_iterator(it->lines.end()));
+            ++result.expanded;
+        }
+    }
+    return result;
+}
+
+ProjectWithInstances readProjectWithInstances(std::string_view text, const LibrarySet& libraries) {
+    ProjectWithInstances result{project::readProject(text), false};
+    project::ProjectReadResult& read = result.read;
+    if (!read.ok())
+        return result;
+    const InstanceExpansion expansion = expandInstances(read.project.program, libraries);
+    read.diagnostics.insert(read.diagnostics.end(), expansion.diagnostics.begin(),
+                            expansion.diagnostics.end());
+    lang::sortByPlace(read.diagnostics);
+    result.expanded = expansion.expanded > 0;
+    return result;
+}
+
+} // namespace rs::blocks

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "LibrarySearch.h"
+#include "lang/Ast.h"
+#include "lang/Diagnostic.h"
+#include "project/ProjectFile.h"
+
+#include <string_view>
+
+// The block instances of a whole program (blocks.md).
+namespace rs::blocks {
+
+// Expands every instance whose record holds no statements from the
+// libraries, taking its private variables from what its unit does not use
+// and recording them (and the library and version) in the record, so that
+// the saved file is self-contained. An instance that holds statements is
+// left as it is: its statements are the program. When its block is known
+// and they are no longer what the block makes of the record (edited by
+// hand, or another version of the block), a warning at the record says so.
+// Problems are at the records' lines and columns.
+struct InstanceExpansion {
+    lang::Diagnostics diagnostics;
+    int expanded = 0; // instances whose statements were written in
+};
+InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& libraries);
+
+// Reads project text (project::readProject) and, when it reads without
+// errors, expands its instances; every diagnostic in the order of its place.
+// The expanded statements stand at their record's line: lines and columns
+// are those of the text as read.
+struct ProjectWithInstances {
+    project::ProjectReadResult read;
+    bool expanded = false; // the project is no longer the text: it holds expansions
+};
+ProjectWithInstances readProjectWithInstances(std::string_view text, const LibrarySet& libraries);
+
+} // namespace rs::blocks
