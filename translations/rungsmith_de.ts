@@ -1208,28 +1208,12 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Neuer &amp;Pluto …</translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation>Dem Projekt eine Pluto-Einheit hinzufügen</translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation>Neue &amp;Sequenz …</translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
         <translation>Pluto &amp;entfernen …</translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation>Re&amp;manente Variablen …</translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation>Variablennamen &amp;importieren (CSV) …</translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
-        <translation>Variablennamen e&amp;xportieren (CSV) …</translation>
     </message>
     <message>
         <source>&amp;Compile</source>
@@ -1286,73 +1270,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
-    </message>
-    <message>
-        <source>New Pluto</source>
-        <translation>Neuer Pluto</translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation>Das Projekt hat 32 Einheiten, die höchste Zahl, die ein Bus haben kann.</translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation>Neuer Pluto %1</translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation>Neue Sequenz</translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation>Pluto %1 hat alle neun Sequenzen.</translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation>Sequenznummer für Pluto %1 (1-9):</translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation>Neue Sequenz %1 von Pluto %2</translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation>Pluto entfernen</translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation>%1 mit Code, Namen und Beschreibungen aus dem Projekt entfernen? Bearbeiten &gt; Rückgängig holt die Einheit zurück.</translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation>Pluto %1 entfernen</translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation>Remanente Variablen von Pluto %1 setzen</translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation>Remanente Variablen</translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation>Variablennamen in Pluto %1 importieren</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>%n Variable importiert.</numerusform>
-            <numerusform>%n Variablen importiert.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation>Variablennamen exportieren</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 geschrieben</translation>
     </message>
     <message>
         <source>Export Program &amp;Text...</source>
@@ -2163,6 +2080,104 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Edit Code of Pluto %1</source>
         <translation>Code von Pluto %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Neuer &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Dem Projekt eine Pluto-Einheit hinzufügen</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Neue &amp;Sequenz …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>Pluto &amp;entfernen …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manente Variablen …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>Variablennamen &amp;importieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>Variablennamen e&amp;xportieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Neuer Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Das Projekt hat 32 Einheiten, die höchste Zahl, die ein Bus haben kann.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Neuer Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Neue Sequenz</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 hat alle neun Sequenzen.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sequenznummer für Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Neue Sequenz %1 von Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Pluto entfernen</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>%1 mit Code, Namen und Beschreibungen aus dem Projekt entfernen? Bearbeiten &gt; Rückgängig holt die Einheit zurück.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Pluto %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Remanente Variablen von Pluto %1 setzen</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanente Variablen</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Variablennamen in Pluto %1 importieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>%n Variable importiert.</numerusform>
+            <numerusform>%n Variablen importiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Variablennamen exportieren</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
     </message>
 </context>
 <context>

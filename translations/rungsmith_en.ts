@@ -1207,27 +1207,11 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1284,73 +1268,6 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>&amp;Redo %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Pluto</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>Imported %n variable.</numerusform>
-            <numerusform>Imported %n variables.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2161,6 +2078,104 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Edit Code of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Imported %n variable.</numerusform>
+            <numerusform>Imported %n variables.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1208,28 +1208,12 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Ny &amp;Pluto …</translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation>Lägg till en Pluto-enhet i projektet</translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation>Ny s&amp;ekvens …</translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
         <translation>&amp;Ta bort Pluto …</translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation>Re&amp;manenta variabler …</translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation>&amp;Importera variabelnamn (CSV) …</translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
-        <translation>E&amp;xportera variabelnamn (CSV) …</translation>
     </message>
     <message>
         <source>&amp;Compile</source>
@@ -1286,73 +1270,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&amp;Redo %1</source>
         <translation>&amp;Gör om %1</translation>
-    </message>
-    <message>
-        <source>New Pluto</source>
-        <translation>Ny Pluto</translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation>Projektet har 32 enheter, det största antal en buss kan ha.</translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation>Ny Pluto %1</translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation>Ny sekvens</translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation>Pluto %1 har alla nio sekvenser.</translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation>Sekvensnummer för Pluto %1 (1-9):</translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation>Ny sekvens %1 i Pluto %2</translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation>Ta bort Pluto</translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation>Ta bort %1 med dess kod, namn och beskrivningar från projektet? Redigera &gt; Ångra tar tillbaka den.</translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation>Ta bort Pluto %1</translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation>Ställ in remanenta variabler för Pluto %1</translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation>Remanenta variabler</translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation>Importera variabelnamn till Pluto %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>Importerade %n variabel.</numerusform>
-            <numerusform>Importerade %n variabler.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation>Exportera variabelnamn</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>Skrev %1</translation>
     </message>
     <message>
         <source>Export Program &amp;Text...</source>
@@ -2163,6 +2080,104 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Edit Code of Pluto %1</source>
         <translation>Redigera koden för Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Ny &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Lägg till en Pluto-enhet i projektet</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Ny s&amp;ekvens …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>&amp;Ta bort Pluto …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manenta variabler …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>&amp;Importera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>E&amp;xportera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Ny Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Projektet har 32 enheter, det största antal en buss kan ha.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Ny Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Ny sekvens</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 har alla nio sekvenser.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sekvensnummer för Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Ny sekvens %1 i Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Ta bort Pluto</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>Ta bort %1 med dess kod, namn och beskrivningar från projektet? Redigera &gt; Ångra tar tillbaka den.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Ta bort Pluto %1</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Ställ in remanenta variabler för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanenta variabler</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Importera variabelnamn till Pluto %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Importerade %n variabel.</numerusform>
+            <numerusform>Importerade %n variabler.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Exportera variabelnamn</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
     </message>
 </context>
 <context>

@@ -3,28 +3,19 @@
 
 #include "compiler/ProgramCheck.h"
 #include "document/ProjectDocument.h"
-#include "document/ProjectPaths.h"
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
-#include "pages/CsvExportDialog.h"
-#include "pages/CsvImportDialog.h"
 #include "pages/IoOptionsPage.h"
-#include "pages/NewUnitDialog.h"
 #include "pages/ProjectPage.h"
-#include "pages/RemanentDialog.h"
 #include "pages/UnitPage.h"
 #include "pages/VariablesPage.h"
-#include "project/ProjectFile.h"
-#include "project/ProjectProperties.h"
-#include "project/RemanentVariables.h"
 #include "project/Sequences.h"
 #include "project/TextPlace.h"
 #include "project/UnitSettings.h"
 #include "shell/PreferencesDialog.h"
 #include "shell/ProjectTree.h"
 #include "shell/Theme.h"
-#include "shell/UnitCaption.h"
 #include "sim/SimulationMode.h"
 #include "text/ProgramEditor.h"
 #include "text/TextPage.h"
@@ -34,10 +25,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
-#include <QFileInfo>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -91,8 +79,30 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     connect(m_projects, &OpenProjects::created, this, [this](ProjectDocument* document) {
         showPage({PageRef::Kind::Project, document});
     });
-    connect(m_projects, &OpenProjects::unitWanted, this, &MainWindow::newUnit);
     connect(m_projects, &OpenProjects::message, this, &MainWindow::showMessage);
+
+    m_units = new UnitCommands(this, [this] {
+        PageRef page = m_current;
+        page.document = currentDocument();
+        return page;
+    });
+    connect(m_projects, &OpenProjects::unitWanted, m_units, &UnitCommands::newUnit);
+    connect(m_units, &UnitCommands::unitAdded, this,
+            [this](ProjectDocument* document, int station) {
+                showPage({PageRef::Kind::Unit, document, station});
+            });
+    connect(m_units, &UnitCommands::sequenceAdded, this,
+            [this](ProjectDocument* document, int station, int sequence) {
+                const bool ladder = m_current.kind == PageRef::Kind::Ladder;
+                showPage({ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code, document, station,
+                          sequence});
+            });
+    connect(m_units, &UnitCommands::unitRemoving, this,
+            [this](ProjectDocument* document, int station) {
+                if (m_current.document == document && m_current.station == station)
+                    showPage({PageRef::Kind::Project, document});
+            });
+    connect(m_units, &UnitCommands::message, this, &MainWindow::showMessage);
 
     createActions();
     createToolBar();
@@ -142,11 +152,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
                   m_ladderPage->sequence()});
     });
     connect(m_ladderPage, &LadderPage::newSequenceRequested, this,
-            [this] { newSequence(m_ladderPage->document(), m_ladderPage->station()); });
-    connect(m_unitPage, &UnitPage::remanentRequested, this, &MainWindow::editRemanent);
-    connect(m_variablesPage, &VariablesPage::remanentRequested, this, &MainWindow::editRemanent);
-    connect(m_variablesPage, &VariablesPage::csvImportRequested, this, &MainWindow::importCsv);
-    connect(m_variablesPage, &VariablesPage::csvExportRequested, this, &MainWindow::exportCsv);
+            [this] { m_units->newSequence(m_ladderPage->document(), m_ladderPage->station()); });
+    connect(m_unitPage, &UnitPage::remanentRequested, m_units, &UnitCommands::editRemanent);
+    connect(m_variablesPage, &VariablesPage::remanentRequested, m_units,
+            &UnitCommands::editRemanent);
+    connect(m_variablesPage, &VariablesPage::csvImportRequested, m_units, &UnitCommands::importCsv);
+    connect(m_variablesPage, &VariablesPage::csvExportRequested, m_units, &UnitCommands::exportCsv);
     connect(&m_undoGroup, &QUndoGroup::canUndoChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::canRedoChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::undoTextChanged, this, &MainWindow::updateActions);
@@ -223,28 +234,6 @@ void MainWindow::createActions() {
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::editPreferences);
 
-    m_newUnitAction = action(tr("New &Pluto..."), "newUnitAction");
-    m_newUnitAction->setIcon(icon("unit-new"));
-    m_newUnitAction->setStatusTip(tr("Add a Pluto unit to the project"));
-    connect(m_newUnitAction, &QAction::triggered, this, [this] { newUnit(currentDocument()); });
-    m_newSequenceAction = action(tr("New &Sequence..."), "newSequenceAction");
-    connect(m_newSequenceAction, &QAction::triggered, this,
-            [this] { newSequence(currentDocument(), m_current.station); });
-    m_removeUnitAction = action(tr("&Remove Pluto..."), "removeUnitAction");
-    connect(m_removeUnitAction, &QAction::triggered, this,
-            [this] { removeUnit(currentDocument(), m_current.station); });
-    m_remanentAction = action(tr("Re&manent Variables..."), "remanentAction");
-    connect(m_remanentAction, &QAction::triggered, this,
-            [this] { editRemanent(currentDocument(), m_current.station); });
-    m_importCsvAction = action(tr("&Import Variable Names (CSV)..."), "importCsvAction");
-    m_importCsvAction->setIcon(icon("import"));
-    connect(m_importCsvAction, &QAction::triggered, this,
-            [this] { importCsv(currentDocument(), m_current.station); });
-    m_exportCsvAction = action(tr("E&xport Variable Names (CSV)..."), "exportCsvAction");
-    m_exportCsvAction->setIcon(icon("export"));
-    connect(m_exportCsvAction, &QAction::triggered, this,
-            [this] { exportCsv(currentDocument(), m_current.station); });
-
     m_compileAction = action(tr("&Compile"), "compileAction", QKeySequence(Qt::Key_F7));
     m_compileAction->setIcon(icon("compile"));
     m_compileAction->setStatusTip(tr("Check the project and write the compiled file (.hps)"));
@@ -304,13 +293,14 @@ void MainWindow::createMenus() {
 
     QMenu* projectMenu = menuBar()->addMenu(tr("&Project"));
     projectMenu->setObjectName(QStringLiteral("projectMenu"));
-    projectMenu->addAction(m_newUnitAction);
-    projectMenu->addAction(m_newSequenceAction);
-    projectMenu->addAction(m_removeUnitAction);
+    const UnitCommands::Actions& unitActions = m_units->actions();
+    projectMenu->addAction(unitActions.newUnit);
+    projectMenu->addAction(unitActions.newSequence);
+    projectMenu->addAction(unitActions.removeUnit);
     projectMenu->addSeparator();
-    projectMenu->addAction(m_remanentAction);
-    projectMenu->addAction(m_importCsvAction);
-    projectMenu->addAction(m_exportCsvAction);
+    projectMenu->addAction(unitActions.remanent);
+    projectMenu->addAction(unitActions.importCsv);
+    projectMenu->addAction(unitActions.exportCsv);
 
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     build->setObjectName(QStringLiteral("buildMenu"));
@@ -336,7 +326,7 @@ void MainWindow::createToolBar() {
     m_fileToolBar->addAction(m_undoAction);
     m_fileToolBar->addAction(m_redoAction);
     m_fileToolBar->addSeparator();
-    m_fileToolBar->addAction(m_newUnitAction);
+    m_fileToolBar->addAction(m_units->actions().newUnit);
     m_fileToolBar->addAction(m_formatAction);
     m_fileToolBar->addSeparator();
     m_fileToolBar->addAction(m_compileAction);
@@ -566,20 +556,12 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateActions() {
     ProjectDocument* document = currentDocument();
-    const bool hasDocument = document != nullptr;
-    const bool healthy = hasDocument && !document->isDamaged();
-    const bool inUnit = healthy && m_current.station >= 0 &&
-                        project::unitSettings(document->project(), m_current.station).has_value();
     const bool onText = m_pages->currentWidget() == m_textPage;
     m_projects->updateActions(document);
-    m_newUnitAction->setEnabled(healthy && !project::freeStations(document->project()).empty());
-    m_newSequenceAction->setEnabled(inUnit);
-    m_removeUnitAction->setEnabled(inUnit);
-    m_remanentAction->setEnabled(
-        inUnit && project::unitTypeOf(document->project(), m_current.station).remanent);
-    m_importCsvAction->setEnabled(inUnit);
-    m_exportCsvAction->setEnabled(inUnit);
-    m_compileAction->setEnabled(hasDocument && !isCompiling());
+    PageRef shown = m_current;
+    shown.document = document;
+    m_units->updateActions(shown);
+    m_compileAction->setEnabled(document != nullptr && !isCompiling());
     m_formatAction->setEnabled(onText);
     m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
                                  m_current.kind == PageRef::Kind::Ladder);
@@ -632,119 +614,6 @@ void MainWindow::formatDocument() {
     showMessage(tr("Formatted."));
 }
 
-void MainWindow::newUnit(ProjectDocument* document) {
-    if (!document || document->isDamaged())
-        return;
-    if (project::freeStations(document->project()).empty()) {
-        QMessageBox::information(this, tr("New Pluto"),
-                                 tr("The project has 32 units, the most a bus can have."));
-        return;
-    }
-    NewUnitDialog dialog(document->project(), this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const project::UnitSettings settings = dialog.settings();
-    QString refusal;
-    document->edit(tr("New Pluto %1").arg(settings.station), [&](project::Project& p) {
-        if (auto problem = project::addUnit(p, settings))
-            refusal = QString::fromStdString(*problem);
-    });
-    if (!refusal.isEmpty()) {
-        QMessageBox::warning(this, tr("New Pluto"), refusal);
-        return;
-    }
-    showPage({PageRef::Kind::Unit, document, settings.station});
-}
-
-void MainWindow::newSequence(ProjectDocument* document, int station) {
-    if (!document || station < 0)
-        return;
-    const std::vector<int> free = project::freeSequences(document->project(), station);
-    if (free.empty()) {
-        QMessageBox::information(this, tr("New Sequence"),
-                                 tr("Pluto %1 has all nine sequences.").arg(station));
-        return;
-    }
-    QStringList choices;
-    for (int sequence : free)
-        choices << QString::number(sequence);
-    bool ok = false;
-    const QString chosen = QInputDialog::getItem(
-        this, tr("New Sequence"), tr("Sequence number for Pluto %1 (1-9):").arg(station), choices,
-        0, false, &ok);
-    if (!ok)
-        return;
-    const int sequence = chosen.toInt();
-    document->edit(tr("New Sequence %1 of Pluto %2").arg(sequence).arg(station),
-                   [&](project::Project& p) { project::addSequence(p, station, sequence); });
-    showPage({m_current.kind == PageRef::Kind::Ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code,
-              document, station, sequence});
-}
-
-void MainWindow::removeUnit(ProjectDocument* document, int station) {
-    if (!document || !project::unitSettings(document->project(), station))
-        return;
-    const auto answer = QMessageBox::question(
-        this, tr("Remove Pluto"),
-        tr("Remove %1 with its code, names and descriptions from the project? Edit > Undo brings "
-           "it back.")
-            .arg(unitCaption(document->project(), station)));
-    if (answer != QMessageBox::Yes)
-        return;
-    if (m_current.document == document && m_current.station == station)
-        showPage({PageRef::Kind::Project, document});
-    document->edit(tr("Remove Pluto %1").arg(station),
-                   [&](project::Project& p) { project::removeUnit(p, station); });
-}
-
-void MainWindow::editRemanent(ProjectDocument* document, int station) {
-    if (!document || !project::unitTypeOf(document->project(), station).remanent)
-        return;
-    RemanentDialog dialog(station, project::remanentOf(document->project(), station), this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const std::set<lang::Address> selection = dialog.selection();
-    QString refusal;
-    document->edit(tr("Set Remanent Variables of Pluto %1").arg(station), [&](project::Project& p) {
-        if (auto problem = project::setRemanent(p, station, selection))
-            refusal = QString::fromStdString(*problem);
-    });
-    if (!refusal.isEmpty())
-        QMessageBox::warning(this, tr("Remanent Variables"), refusal);
-}
-
-void MainWindow::importCsv(ProjectDocument* document, int station) {
-    if (!document)
-        return;
-    CsvImportDialog dialog(document->project(), station, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    document->replace(tr("Import Variable Names to Pluto %1").arg(station),
-                      dialog.result().project);
-    showMessage(
-        tr("Imported %n variable(s).", nullptr, static_cast<int>(dialog.result().changes.size())));
-}
-
-void MainWindow::exportCsv(ProjectDocument* document, int station) {
-    if (!document)
-        return;
-    const QFileInfo base(suggestedPath(*document));
-    CsvExportDialog dialog(
-        station,
-        base.dir().filePath(
-            QStringLiteral("%1-pluto%2.csv").arg(base.completeBaseName()).arg(station)),
-        this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const std::string csv = project::exportVariablesCsv(document->project(), dialog.options());
-    const QString error = project::writeTextFile(dialog.path(), csv);
-    if (!error.isEmpty()) {
-        QMessageBox::critical(this, tr("Export Variable Names"), error);
-        return;
-    }
-    showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(dialog.path())));
-}
-
 void MainWindow::editPreferences() {
     PreferencesDialog dialog(m_preferences, this);
     if (dialog.exec() != QDialog::Accepted)
@@ -773,7 +642,7 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
     case PageRef::Kind::Project:
     case PageRef::Kind::ProjectText:
         if (!document->isDamaged())
-            add(tr("New &Pluto..."), [this, document] { newUnit(document); });
+            add(tr("New &Pluto..."), [this, document] { m_units->newUnit(document); });
         add(tr("&Save Project"), [this, document] { m_projects->save(document); });
         add(tr("Save Project &As..."), [this, document] { m_projects->saveAs(document); });
         if (!document->isDamaged())
@@ -784,21 +653,22 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
         break;
     case PageRef::Kind::Variables:
         add(tr("&Import Variable Names to Pluto..."),
-            [this, document, page] { importCsv(document, page.station); });
+            [this, document, page] { m_units->importCsv(document, page.station); });
         add(tr("E&xport Variable Names from Pluto..."),
-            [this, document, page] { exportCsv(document, page.station); });
+            [this, document, page] { m_units->exportCsv(document, page.station); });
         if (project::unitTypeOf(document->project(), page.station).remanent)
             add(tr("&Remanent Variables..."),
-                [this, document, page] { editRemanent(document, page.station); });
+                [this, document, page] { m_units->editRemanent(document, page.station); });
         break;
     case PageRef::Kind::Unit:
     case PageRef::Kind::IoOptions:
     case PageRef::Kind::Code:
     case PageRef::Kind::Ladder:
         add(tr("New &Sequence..."),
-            [this, document, page] { newSequence(document, page.station); });
+            [this, document, page] { m_units->newSequence(document, page.station); });
         menu.addSeparator();
-        add(tr("&Remove Pluto..."), [this, document, page] { removeUnit(document, page.station); });
+        add(tr("&Remove Pluto..."),
+            [this, document, page] { m_units->removeUnit(document, page.station); });
         break;
     }
     menu.exec(globalPosition);

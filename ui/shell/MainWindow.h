@@ -3,6 +3,7 @@
 
 #include "document/OpenProjects.h"
 #include "output/CompileRun.h"
+#include "pages/UnitCommands.h"
 #include "shell/PageRef.h"
 #include "shell/Preferences.h"
 
@@ -46,7 +47,8 @@ class VariablesPage;
 // the compiler's Output below. Every edit of every page goes through the
 // undo stack of its project; Edit > Undo and Redo work on the project shown.
 // The window assembles menus, docks and pages and wires them together; the
-// projects' life from opening to closing is OpenProjects', compiling CompileRun's.
+// projects' life from opening to closing is OpenProjects', the Project menu's
+// commands are UnitCommands', compiling is CompileRun's.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -126,12 +128,6 @@ private:
     void undo();
     void redo();
     void formatDocument();
-    void newUnit(ProjectDocument* document);
-    void newSequence(ProjectDocument* document, int station);
-    void removeUnit(ProjectDocument* document, int station);
-    void editRemanent(ProjectDocument* document, int station);
-    void importCsv(ProjectDocument* document, int station);
-    void exportCsv(ProjectDocument* document, int station);
     void editPreferences();
     void about();
     void showTreeMenu(const PageRef& page, const QPoint& globalPosition);
@@ -146,6 +142,7 @@ private:
     QUndoGroup m_undoGroup;
     Preferences m_preferences;
     OpenProjects* m_projects = nullptr;
+    UnitCommands* m_units = nullptr;
     CompileRun* m_compileRun = nullptr;
 
     QStackedWidget* m_pages = nullptr;
@@ -178,12 +175,6 @@ private:
     QAction* m_formatAction = nullptr;
     QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
-    QAction* m_newUnitAction = nullptr;
-    QAction* m_newSequenceAction = nullptr;
-    QAction* m_removeUnitAction = nullptr;
-    QAction* m_remanentAction = nullptr;
-    QAction* m_importCsvAction = nullptr;
-    QAction* m_exportCsvAction = nullptr;
     QAction* m_compileAction = nullptr;
     QAction* m_aboutAction = nullptr;
 };
