@@ -1180,10 +1180,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Über Rungsmith</translation>
     </message>
     <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
         <translation>Das Projekt lässt sich jetzt fehlerfrei lesen; seine Seiten sind wieder da.</translation>
     </message>
@@ -2575,6 +2571,13 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
         <translation>Fügen Sie Variablen hinzu, um sie über die Zeit der Simulation darzustellen.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
     </message>
 </context>
 </TS>

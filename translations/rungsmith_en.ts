@@ -1179,10 +1179,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2573,6 +2569,13 @@ Its text page (F6) shows and edits it.</source>
     <name>rs::ui::WaveformView</name>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1180,10 +1180,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Om Rungsmith</translation>
     </message>
     <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
         <translation>Projektet läses nu utan fel; dess sidor är tillbaka.</translation>
     </message>
@@ -2575,6 +2571,13 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
         <translation>Lägg till variabler för att rita dem över simuleringens tid.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
     </message>
 </context>
 </TS>

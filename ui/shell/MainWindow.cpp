@@ -16,6 +16,7 @@
 #include "shell/PreferencesDialog.h"
 #include "shell/ProjectTree.h"
 #include "shell/Theme.h"
+#include "shell/WelcomePage.h"
 #include "sim/SimulationMode.h"
 #include "text/ProgramEditor.h"
 #include "text/TextPage.h"
@@ -35,7 +36,6 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolBar>
-#include <QVBoxLayout>
 
 namespace rs::ui {
 
@@ -58,8 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_pages->setObjectName(QStringLiteral("pages"));
     setCentralWidget(m_pages);
 
-    m_welcomePage = new QWidget(m_pages);
-    m_welcomePage->setObjectName(QStringLiteral("welcomePage"));
+    m_welcomePage = new WelcomePage(m_pages);
     m_projectPage = new ProjectPage(m_pages);
     m_unitPage = new UnitPage(m_pages);
     m_ioPage = new IoOptionsPage(m_pages);
@@ -71,42 +70,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
                                          m_variablesPage, m_textPage, m_ladderPage})
         m_pages->addWidget(page);
 
-    m_projects = new OpenProjects(this, m_textPage, [this] { return currentDocument(); });
-    connect(m_projects, &OpenProjects::added, this, &MainWindow::documentAdded);
-    connect(m_projects, &OpenProjects::removed, this, &MainWindow::documentRemoved);
-    connect(m_projects, &OpenProjects::opened, this,
-            [this](ProjectDocument* document) { showFirstPageOf(document); });
-    connect(m_projects, &OpenProjects::created, this, [this](ProjectDocument* document) {
-        showPage({PageRef::Kind::Project, document});
-    });
-    connect(m_projects, &OpenProjects::message, this, &MainWindow::showMessage);
-
-    m_units = new UnitCommands(this, [this] {
-        PageRef page = m_current;
-        page.document = currentDocument();
-        return page;
-    });
-    connect(m_projects, &OpenProjects::unitWanted, m_units, &UnitCommands::newUnit);
-    connect(m_units, &UnitCommands::unitAdded, this,
-            [this](ProjectDocument* document, int station) {
-                showPage({PageRef::Kind::Unit, document, station});
-            });
-    connect(m_units, &UnitCommands::sequenceAdded, this,
-            [this](ProjectDocument* document, int station, int sequence) {
-                const bool ladder = m_current.kind == PageRef::Kind::Ladder;
-                showPage({ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code, document, station,
-                          sequence});
-            });
-    connect(m_units, &UnitCommands::unitRemoving, this,
-            [this](ProjectDocument* document, int station) {
-                if (m_current.document == document && m_current.station == station)
-                    showPage({PageRef::Kind::Project, document});
-            });
-    connect(m_units, &UnitCommands::message, this, &MainWindow::showMessage);
-
+    createCommands();
     createActions();
     createToolBar();
     createDocks();
+    // Compiling reports in the Output dock and, while it runs, in the status bar.
     m_compileRun = new CompileRun(this, m_output, m_outputDock, m_textPage, m_ladderPage);
     connect(m_compileRun, &CompileRun::runningChanged, this, &MainWindow::updateActions);
     connect(m_compileRun, &CompileRun::message, this, &MainWindow::showMessage);
@@ -115,27 +83,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_simulation = new SimulationMode(this);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 
-    auto* welcome = new QVBoxLayout(m_welcomePage);
-    auto* heading = new QLabel(tr("<h2>No project is open</h2>"
-                                  "<p>Start a new project, open one, or look at the example from "
-                                  "the manual.</p>"),
-                               m_welcomePage);
-    heading->setAlignment(Qt::AlignCenter);
-    welcome->addStretch();
-    welcome->addWidget(heading);
-    auto* buttons = new QHBoxLayout;
-    buttons->addStretch();
     const OpenProjects::Actions& projectActions = m_projects->actions();
-    for (QAction* action :
-         {projectActions.newProject, projectActions.open, projectActions.example}) {
-        auto* button =
-            new QPushButton(action->icon(), action->text().remove(QLatin1Char('&')), m_welcomePage);
-        connect(button, &QPushButton::clicked, action, &QAction::trigger);
-        buttons->addWidget(button);
-    }
-    buttons->addStretch();
-    welcome->addLayout(buttons);
-    welcome->addStretch();
+    m_welcomePage->offer({projectActions.newProject, projectActions.open, projectActions.example});
 
     connect(m_textPage, &TextPage::diagnosticsChanged, this, [this](const lang::Diagnostics& d) {
         m_problems->setDiagnostics(d);
@@ -176,6 +125,41 @@ MainWindow::~MainWindow() {
 }
 
 // ----- actions and menus
+
+void MainWindow::createCommands() {
+    m_projects = new OpenProjects(this, m_textPage, [this] { return currentDocument(); });
+    connect(m_projects, &OpenProjects::added, this, &MainWindow::documentAdded);
+    connect(m_projects, &OpenProjects::removed, this, &MainWindow::documentRemoved);
+    connect(m_projects, &OpenProjects::opened, this,
+            [this](ProjectDocument* document) { showFirstPageOf(document); });
+    connect(m_projects, &OpenProjects::created, this, [this](ProjectDocument* document) {
+        showPage({PageRef::Kind::Project, document});
+    });
+    connect(m_projects, &OpenProjects::message, this, &MainWindow::showMessage);
+
+    m_units = new UnitCommands(this, [this] {
+        PageRef page = m_current;
+        page.document = currentDocument();
+        return page;
+    });
+    connect(m_projects, &OpenProjects::unitWanted, m_units, &UnitCommands::newUnit);
+    connect(m_units, &UnitCommands::unitAdded, this,
+            [this](ProjectDocument* document, int station) {
+                showPage({PageRef::Kind::Unit, document, station});
+            });
+    connect(m_units, &UnitCommands::sequenceAdded, this,
+            [this](ProjectDocument* document, int station, int sequence) {
+                const bool ladder = m_current.kind == PageRef::Kind::Ladder;
+                showPage({ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code, document, station,
+                          sequence});
+            });
+    connect(m_units, &UnitCommands::unitRemoving, this,
+            [this](ProjectDocument* document, int station) {
+                if (m_current.document == document && m_current.station == station)
+                    showPage({PageRef::Kind::Project, document});
+            });
+    connect(m_units, &UnitCommands::message, this, &MainWindow::showMessage);
+}
 
 void MainWindow::createActions() {
     const auto action = [this](const QString& text, const char* name,

@@ -40,6 +40,7 @@ class SimulationMode;
 class TextPage;
 class UnitPage;
 class VariablesPage;
+class WelcomePage;
 
 // The IDE window (manual Part 1, 4): the project tree at the left with every
 // open project, the page of the chosen node in the middle (project, unit,
@@ -112,6 +113,8 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The projects' and the Project menu's commands, and what the window shows after them.
+    void createCommands();
     void createActions();
     void createMenus();
     void createToolBar();
@@ -146,7 +149,7 @@ private:
     CompileRun* m_compileRun = nullptr;
 
     QStackedWidget* m_pages = nullptr;
-    QWidget* m_welcomePage = nullptr;
+    WelcomePage* m_welcomePage = nullptr;
     ProjectPage* m_projectPage = nullptr;
     UnitPage* m_unitPage = nullptr;
     IoOptionsPage* m_ioPage = nullptr;
