@@ -8,6 +8,7 @@
 #include "project/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectProperties.h"
+#include "shell/NamedIcon.h"
 #include "text/TextPage.h"
 
 #include <QAction>
@@ -29,10 +30,6 @@ constexpr int kMillisecondsPerMinute = 60 * 1000;
 
 QString projectFileFilter() {
     return OpenProjects::tr("Pluto projects (*.sps);;All files (*)");
-}
-
-QIcon icon(const char* name) {
-    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
 }
 
 } // namespace
@@ -61,17 +58,17 @@ void OpenProjects::createActions() {
     };
 
     m_actions.newProject = action(tr("&New Project..."), "newAction", QKeySequence::New);
-    m_actions.newProject->setIcon(icon("document-new"));
+    m_actions.newProject->setIcon(namedIcon("document-new"));
     m_actions.newProject->setStatusTip(tr("Start a new project"));
     connect(m_actions.newProject, &QAction::triggered, this, &OpenProjects::newProject);
 
     m_actions.open = action(tr("&Open Project..."), "openAction", QKeySequence::Open);
-    m_actions.open->setIcon(icon("document-open"));
+    m_actions.open->setIcon(namedIcon("document-open"));
     m_actions.open->setStatusTip(tr("Open a project file"));
     connect(m_actions.open, &QAction::triggered, this, &OpenProjects::open);
 
     m_actions.save = action(tr("&Save Project"), "saveAction", QKeySequence::Save);
-    m_actions.save->setIcon(icon("document-save"));
+    m_actions.save->setIcon(namedIcon("document-save"));
     m_actions.save->setStatusTip(tr("Save the project"));
     connect(m_actions.save, &QAction::triggered, this, [this] { save(m_current()); });
 
@@ -81,7 +78,7 @@ void OpenProjects::createActions() {
 
     m_actions.saveAll =
         action(tr("Save A&ll"), "saveAllAction", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
-    m_actions.saveAll->setIcon(icon("document-save-all"));
+    m_actions.saveAll->setIcon(namedIcon("document-save-all"));
     m_actions.saveAll->setStatusTip(tr("Save every open project"));
     connect(m_actions.saveAll, &QAction::triggered, this, &OpenProjects::saveAll);
 
@@ -99,7 +96,7 @@ void OpenProjects::createActions() {
             [this] { exportProgramText(m_current()); });
 
     m_actions.example = action(tr("Open &Example Project"), "exampleAction");
-    m_actions.example->setIcon(icon("example"));
+    m_actions.example->setIcon(namedIcon("example"));
     connect(m_actions.example, &QAction::triggered, this, &OpenProjects::showExample);
 }
 

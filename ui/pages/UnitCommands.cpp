@@ -12,6 +12,7 @@
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
 #include "project/VariableCsv.h"
+#include "shell/NamedIcon.h"
 #include "shell/UnitCaption.h"
 
 #include <QAction>
@@ -21,14 +22,6 @@
 #include <QMessageBox>
 
 namespace rs::ui {
-
-namespace {
-
-QIcon icon(const char* name) {
-    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
-}
-
-} // namespace
 
 UnitCommands::UnitCommands(QWidget* window, std::function<PageRef()> current)
     : QObject(window), m_window(window), m_current(std::move(current)) {
@@ -50,7 +43,7 @@ void UnitCommands::createActions() {
     };
 
     m_actions.newUnit = action(tr("New &Pluto..."), "newUnitAction");
-    m_actions.newUnit->setIcon(icon("unit-new"));
+    m_actions.newUnit->setIcon(namedIcon("unit-new"));
     m_actions.newUnit->setStatusTip(tr("Add a Pluto unit to the project"));
     connect(m_actions.newUnit, &QAction::triggered, this,
             [this] { newUnit(m_current().document); });
@@ -61,10 +54,10 @@ void UnitCommands::createActions() {
     m_actions.remanent = action(tr("Re&manent Variables..."), "remanentAction");
     connect(m_actions.remanent, &QAction::triggered, this, onUnit(&UnitCommands::editRemanent));
     m_actions.importCsv = action(tr("&Import Variable Names (CSV)..."), "importCsvAction");
-    m_actions.importCsv->setIcon(icon("import"));
+    m_actions.importCsv->setIcon(namedIcon("import"));
     connect(m_actions.importCsv, &QAction::triggered, this, onUnit(&UnitCommands::importCsv));
     m_actions.exportCsv = action(tr("E&xport Variable Names (CSV)..."), "exportCsvAction");
-    m_actions.exportCsv->setIcon(icon("export"));
+    m_actions.exportCsv->setIcon(namedIcon("export"));
     connect(m_actions.exportCsv, &QAction::triggered, this, onUnit(&UnitCommands::exportCsv));
 }
 

@@ -13,6 +13,7 @@
 #include "project/Sequences.h"
 #include "project/TextPlace.h"
 #include "project/UnitSettings.h"
+#include "shell/NamedIcon.h"
 #include "shell/PreferencesDialog.h"
 #include "shell/ProjectTree.h"
 #include "shell/Theme.h"
@@ -45,10 +46,6 @@ const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 
 constexpr int kStatusMessageMs = 4000;
-
-QIcon icon(const char* name) {
-    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
-}
 
 } // namespace
 
@@ -175,10 +172,10 @@ void MainWindow::createActions() {
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
     m_undoAction = action(tr("&Undo"), "undoAction", QKeySequence::Undo);
-    m_undoAction->setIcon(icon("edit-undo"));
+    m_undoAction->setIcon(namedIcon("edit-undo"));
     connect(m_undoAction, &QAction::triggered, this, &MainWindow::undo);
     m_redoAction = action(tr("&Redo"), "redoAction", QKeySequence::Redo);
-    m_redoAction->setIcon(icon("edit-redo"));
+    m_redoAction->setIcon(namedIcon("edit-redo"));
     connect(m_redoAction, &QAction::triggered, this, &MainWindow::redo);
 
     // The clipboard commands act on whatever text field has the focus.
@@ -199,7 +196,7 @@ void MainWindow::createActions() {
 
     m_formatAction = action(tr("&Format Document"), "formatDocumentAction",
                             QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-    m_formatAction->setIcon(icon("format-document"));
+    m_formatAction->setIcon(namedIcon("format-document"));
     m_formatAction->setStatusTip(tr("Rewrite the text in the canonical layout"));
     connect(m_formatAction, &QAction::triggered, this, &MainWindow::formatDocument);
 
@@ -214,12 +211,12 @@ void MainWindow::createActions() {
 
     m_preferencesAction =
         action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
-    m_preferencesAction->setIcon(icon("preferences"));
+    m_preferencesAction->setIcon(namedIcon("preferences"));
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::editPreferences);
 
     m_compileAction = action(tr("&Compile"), "compileAction", QKeySequence(Qt::Key_F7));
-    m_compileAction->setIcon(icon("compile"));
+    m_compileAction->setIcon(namedIcon("compile"));
     m_compileAction->setStatusTip(tr("Check the project and write the compiled file (.hps)"));
     connect(m_compileAction, &QAction::triggered, this, &MainWindow::compile);
 
