@@ -280,6 +280,25 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::CompileRun</name>
+    <message>
+        <source>Compiling</source>
+        <translation>Kompiliert</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>%1 wird kompiliert …</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilieren</translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation>Fehlerfrei kompiliert. Speichern Sie das Projekt, um die kompilierte Datei zu schreiben.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ConfigOptionDialog</name>
     <message>
         <source>&amp;Enabled</source>
@@ -1068,30 +1087,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
 <context>
     <name>rs::ui::MainWindow</name>
     <message>
-        <source>Pluto projects (*.sps);;All files (*)</source>
-        <translation>Pluto-Projekte (*.sps);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>Start a new project</source>
-        <translation>Ein neues Projekt beginnen</translation>
-    </message>
-    <message>
-        <source>Open a project file</source>
-        <translation>Eine Projektdatei öffnen</translation>
-    </message>
-    <message>
-        <source>Save the project</source>
-        <translation>Das Projekt speichern</translation>
-    </message>
-    <message>
-        <source>Save the project under a new name</source>
-        <translation>Das Projekt unter einem neuen Namen speichern</translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -1122,10 +1117,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Rewrite the text in the canonical layout</source>
         <translation>Den Text in die kanonische Form bringen</translation>
-    </message>
-    <message>
-        <source>Open &amp;Example Project</source>
-        <translation>&amp;Beispielprojekt öffnen</translation>
     </message>
     <message>
         <source>&amp;About Rungsmith</source>
@@ -1173,34 +1164,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
             <numerusform>%n Warnungen</numerusform>
         </translation>
     </message>
-    <message>
-        <source>Opened %1</source>
-        <translation>%1 geöffnet</translation>
-    </message>
-    <message>
-        <source>Open Project</source>
-        <translation>Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>Could not open “%1”.</source>
-        <translation>„%1“ konnte nicht geöffnet werden.</translation>
-    </message>
-    <message>
-        <source>Save Project As</source>
-        <translation>Projekt speichern unter</translation>
-    </message>
-    <message>
-        <source>Save Project</source>
-        <translation>Projekt speichern</translation>
-    </message>
-    <message>
-        <source>Could not save “%1”.</source>
-        <translation>„%1“ konnte nicht gespeichert werden.</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>%1 gespeichert</translation>
-    </message>
     <message numerus="yes">
         <source>Not formatted: the text has %n error(s).</source>
         <translation>
@@ -1217,32 +1180,8 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Über Rungsmith</translation>
     </message>
     <message>
-        <source>Unsaved Changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them?</source>
-        <translation>„%1“ hat ungespeicherte Änderungen. Speichern?</translation>
-    </message>
-    <message>
-        <source>&amp;Clear Menu</source>
-        <translation>Menü &amp;leeren</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
         <translation>Das Projekt lässt sich jetzt fehlerfrei lesen; seine Seiten sind wieder da.</translation>
-    </message>
-    <message>
-        <source>&amp;New Project...</source>
-        <translation>&amp;Neues Projekt …</translation>
-    </message>
-    <message>
-        <source>&amp;Open Project...</source>
-        <translation>Projekt ö&amp;ffnen …</translation>
     </message>
     <message>
         <source>&amp;Save Project</source>
@@ -1253,28 +1192,8 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Projekt speichern &amp;unter …</translation>
     </message>
     <message>
-        <source>Save A&amp;ll</source>
-        <translation>A&amp;lle speichern</translation>
-    </message>
-    <message>
-        <source>Save every open project</source>
-        <translation>Alle offenen Projekte speichern</translation>
-    </message>
-    <message>
         <source>&amp;Close Project</source>
         <translation>Projekt s&amp;chließen</translation>
-    </message>
-    <message>
-        <source>Close the project</source>
-        <translation>Das Projekt schließen</translation>
-    </message>
-    <message>
-        <source>&amp;Program Text...</source>
-        <translation>&amp;Programmtext …</translation>
-    </message>
-    <message>
-        <source>Write the program in the language alone, for a text editor or the original compiler</source>
-        <translation>Das Programm nur in der Sprache schreiben, für einen Texteditor oder den Originalcompiler</translation>
     </message>
     <message>
         <source>Pr&amp;eferences...</source>
@@ -1285,28 +1204,12 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Neuer &amp;Pluto …</translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation>Dem Projekt eine Pluto-Einheit hinzufügen</translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation>Neue &amp;Sequenz …</translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
         <translation>Pluto &amp;entfernen …</translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation>Re&amp;manente Variablen …</translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation>Variablennamen &amp;importieren (CSV) …</translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
-        <translation>Variablennamen e&amp;xportieren (CSV) …</translation>
     </message>
     <message>
         <source>&amp;Compile</source>
@@ -1341,30 +1244,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Ausgabe</translation>
     </message>
     <message>
-        <source>Compiling</source>
-        <translation>Kompiliert</translation>
-    </message>
-    <message>
-        <source>Opened %1. It has errors: fix them in its text.</source>
-        <translation>%1 geöffnet. Die Datei hat Fehler: Beheben Sie sie in ihrem Text.</translation>
-    </message>
-    <message>
-        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
-        <translation>Der Code von Pluto %1 hat Fehler, deshalb gehören Ihre letzten Änderungen daran nicht zum Projekt. Das Projekt ohne sie speichern?</translation>
-    </message>
-    <message>
-        <source>Export Program Text</source>
-        <translation>Programmtext exportieren</translation>
-    </message>
-    <message>
-        <source>-program</source>
-        <translation>-programm</translation>
-    </message>
-    <message>
-        <source>Wrote the program text to %1</source>
-        <translation>Programmtext nach %1 geschrieben</translation>
-    </message>
-    <message>
         <source>Code With Errors</source>
         <translation>Code mit Fehlern</translation>
     </message>
@@ -1389,73 +1268,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <source>New Pluto</source>
-        <translation>Neuer Pluto</translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation>Das Projekt hat 32 Einheiten, die höchste Zahl, die ein Bus haben kann.</translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation>Neuer Pluto %1</translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation>Neue Sequenz</translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation>Pluto %1 hat alle neun Sequenzen.</translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation>Sequenznummer für Pluto %1 (1-9):</translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation>Neue Sequenz %1 von Pluto %2</translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation>Pluto entfernen</translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation>%1 mit Code, Namen und Beschreibungen aus dem Projekt entfernen? Bearbeiten &gt; Rückgängig holt die Einheit zurück.</translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation>Pluto %1 entfernen</translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation>Remanente Variablen von Pluto %1 setzen</translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation>Remanente Variablen</translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation>Variablennamen in Pluto %1 importieren</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>%n Variable importiert.</numerusform>
-            <numerusform>%n Variablen importiert.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation>Variablennamen exportieren</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 geschrieben</translation>
-    </message>
-    <message>
         <source>Export Program &amp;Text...</source>
         <translation>Programm&amp;text exportieren …</translation>
     </message>
@@ -1472,34 +1284,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>&amp;Remanente Variablen …</translation>
     </message>
     <message>
-        <source>Compiling %1...</source>
-        <translation>%1 wird kompiliert …</translation>
-    </message>
-    <message>
-        <source>Compile</source>
-        <translation>Kompilieren</translation>
-    </message>
-    <message>
-        <source>Compiled without errors. Save the project to write the compiled file.</source>
-        <translation>Fehlerfrei kompiliert. Speichern Sie das Projekt, um die kompilierte Datei zu schreiben.</translation>
-    </message>
-    <message>
-        <source>Autosave failed: %1</source>
-        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Recover Projects</source>
-        <translation>Projekte wiederherstellen</translation>
-    </message>
-    <message>
-        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
-        <translation>Rungsmith wurde nicht ordnungsgemäß beendet. Diese Projekte haben Änderungen, die automatisch gesichert wurden:</translation>
-    </message>
-    <message>
-        <source>&amp;Recover</source>
-        <translation>&amp;Wiederherstellen</translation>
-    </message>
-    <message>
         <source>&amp;Ladder or Text</source>
         <translation>&amp;Kontaktplan oder Text</translation>
     </message>
@@ -1510,6 +1294,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program as ladder and as text, checked, compiled and simulated.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für Pluto-Sicherheitssteuerungen: Projekte, Einheiten, E/A-Optionen, Variablen und das Programm als Kontaktplan und als Text, geprüft, übersetzt und simuliert.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2 und QScintilla %3.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
     </message>
 </context>
 <context>
@@ -1552,6 +1340,149 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
         <translation>Wählen Sie den Pluto-Typ und eine Stationsnummer, die keine andere Einheit des Projekts hat. Die Stationsnummer ist Teil jeder Adresse der Einheit: Die Eingänge von Pluto 1 sind I1.0, I1.1, …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::OpenProjects</name>
+    <message>
+        <source>Pluto projects (*.sps);;All files (*)</source>
+        <translation>Pluto-Projekte (*.sps);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation>&amp;Neues Projekt …</translation>
+    </message>
+    <message>
+        <source>Start a new project</source>
+        <translation>Ein neues Projekt beginnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation>Projekt ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>Open a project file</source>
+        <translation>Eine Projektdatei öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save the project</source>
+        <translation>Das Projekt speichern</translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation>Projekt speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save the project under a new name</source>
+        <translation>Das Projekt unter einem neuen Namen speichern</translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation>A&amp;lle speichern</translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation>Alle offenen Projekte speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation>Projekt s&amp;chließen</translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation>Das Projekt schließen</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation>&amp;Programmtext …</translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation>Das Programm nur in der Sprache schreiben, für einen Texteditor oder den Originalcompiler</translation>
+    </message>
+    <message>
+        <source>Open &amp;Example Project</source>
+        <translation>&amp;Beispielprojekt öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>Menü &amp;leeren</translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation>%1 geöffnet. Die Datei hat Fehler: Beheben Sie sie in ihrem Text.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation>„%1“ konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation>Der Code von Pluto %1 hat Fehler, deshalb gehören Ihre letzten Änderungen daran nicht zum Projekt. Das Projekt ohne sie speichern?</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”.</source>
+        <translation>„%1“ konnte nicht gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them?</source>
+        <translation>„%1“ hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation>Programmtext exportieren</translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation>-programm</translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation>Programmtext nach %1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation>Projekte wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation>Rungsmith wurde nicht ordnungsgemäß beendet. Diese Projekte haben Änderungen, die automatisch gesichert wurden:</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
     </message>
 </context>
 <context>
@@ -2148,6 +2079,104 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Neuer &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Dem Projekt eine Pluto-Einheit hinzufügen</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Neue &amp;Sequenz …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>Pluto &amp;entfernen …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manente Variablen …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>Variablennamen &amp;importieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>Variablennamen e&amp;xportieren (CSV) …</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Neuer Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Das Projekt hat 32 Einheiten, die höchste Zahl, die ein Bus haben kann.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Neuer Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Neue Sequenz</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 hat alle neun Sequenzen.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sequenznummer für Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Neue Sequenz %1 von Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Pluto entfernen</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>%1 mit Code, Namen und Beschreibungen aus dem Projekt entfernen? Bearbeiten &gt; Rückgängig holt die Einheit zurück.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Pluto %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Remanente Variablen von Pluto %1 setzen</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanente Variablen</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Variablennamen in Pluto %1 importieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>%n Variable importiert.</numerusform>
+            <numerusform>%n Variablen importiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Variablennamen exportieren</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::UnitPage</name>
     <message>
         <source>&amp;Remanent Variables...</source>
@@ -2542,6 +2571,13 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
         <translation>Fügen Sie Variablen hinzu, um sie über die Zeit der Simulation darzustellen.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
     </message>
 </context>
 </TS>

@@ -280,6 +280,25 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::CompileRun</name>
+    <message>
+        <source>Compiling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ConfigOptionDialog</name>
     <message>
         <source>&amp;Enabled</source>
@@ -1067,30 +1086,6 @@ Its text page (F6) shows and edits it.</source>
 <context>
     <name>rs::ui::MainWindow</name>
     <message>
-        <source>Pluto projects (*.sps);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Start a new project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open a project file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save the project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save the project under a new name</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1120,10 +1115,6 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Rewrite the text in the canonical layout</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open &amp;Example Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1172,34 +1163,6 @@ Its text page (F6) shows and edits it.</source>
             <numerusform>%n warnings</numerusform>
         </translation>
     </message>
-    <message>
-        <source>Opened %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open Project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not open “%1”.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Project As</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not save “%1”.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>Not formatted: the text has %n error(s).</source>
         <translation>
@@ -1216,31 +1179,7 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Unsaved Changes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Clear Menu</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;New Project...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Open Project...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1252,27 +1191,7 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Save A&amp;ll</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save every open project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Close Project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Close the project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Program Text...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write the program in the language alone, for a text editor or the original compiler</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1284,27 +1203,11 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1340,30 +1243,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Compiling</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Opened %1. It has errors: fix them in its text.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export Program Text</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>-program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Wrote the program text to %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Code With Errors</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1388,73 +1267,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>New Pluto</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>Imported %n variable.</numerusform>
-            <numerusform>Imported %n variables.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Export Program &amp;Text...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1471,34 +1283,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Compiling %1...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compile</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compiled without errors. Save the project to write the compiled file.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Autosave failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Recover Projects</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Recover</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Ladder or Text</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1508,6 +1292,10 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program as ladder and as text, checked, compiled and simulated.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1550,6 +1338,149 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::OpenProjects</name>
+    <message>
+        <source>Pluto projects (*.sps);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start a new project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a project file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the project under a new name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Example Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save “%1”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2147,6 +2078,104 @@ Its text page (F6) shows and edits it.</source>
     </message>
 </context>
 <context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Imported %n variable.</numerusform>
+            <numerusform>Imported %n variables.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::UnitPage</name>
     <message>
         <source>&amp;Remanent Variables...</source>
@@ -2540,6 +2569,13 @@ Its text page (F6) shows and edits it.</source>
     <name>rs::ui::WaveformView</name>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -280,6 +280,25 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::CompileRun</name>
+    <message>
+        <source>Compiling</source>
+        <translation>Kompilerar</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>Kompilerar %1 …</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilera</translation>
+    </message>
+    <message>
+        <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation>Kompilerat utan fel. Spara projektet för att skriva den kompilerade filen.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ConfigOptionDialog</name>
     <message>
         <source>&amp;Enabled</source>
@@ -1068,30 +1087,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
 <context>
     <name>rs::ui::MainWindow</name>
     <message>
-        <source>Pluto projects (*.sps);;All files (*)</source>
-        <translation>Pluto-projekt (*.sps);;Alla filer (*)</translation>
-    </message>
-    <message>
-        <source>Start a new project</source>
-        <translation>Starta ett nytt projekt</translation>
-    </message>
-    <message>
-        <source>Open a project file</source>
-        <translation>Öppna en projektfil</translation>
-    </message>
-    <message>
-        <source>Save the project</source>
-        <translation>Spara projektet</translation>
-    </message>
-    <message>
-        <source>Save the project under a new name</source>
-        <translation>Spara projektet under ett nytt namn</translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation>&amp;Avsluta</translation>
-    </message>
-    <message>
         <source>&amp;Undo</source>
         <translation>&amp;Ångra</translation>
     </message>
@@ -1122,10 +1117,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Rewrite the text in the canonical layout</source>
         <translation>Skriv om texten i kanonisk form</translation>
-    </message>
-    <message>
-        <source>Open &amp;Example Project</source>
-        <translation>Öppna &amp;exempelprojekt</translation>
     </message>
     <message>
         <source>&amp;About Rungsmith</source>
@@ -1173,34 +1164,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
             <numerusform>%n varningar</numerusform>
         </translation>
     </message>
-    <message>
-        <source>Opened %1</source>
-        <translation>Öppnade %1</translation>
-    </message>
-    <message>
-        <source>Open Project</source>
-        <translation>Öppna projekt</translation>
-    </message>
-    <message>
-        <source>Could not open “%1”.</source>
-        <translation>Kunde inte öppna ”%1”.</translation>
-    </message>
-    <message>
-        <source>Save Project As</source>
-        <translation>Spara projekt som</translation>
-    </message>
-    <message>
-        <source>Save Project</source>
-        <translation>Spara projekt</translation>
-    </message>
-    <message>
-        <source>Could not save “%1”.</source>
-        <translation>Kunde inte spara ”%1”.</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Sparade %1</translation>
-    </message>
     <message numerus="yes">
         <source>Not formatted: the text has %n error(s).</source>
         <translation>
@@ -1217,32 +1180,8 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Om Rungsmith</translation>
     </message>
     <message>
-        <source>Unsaved Changes</source>
-        <translation>Osparade ändringar</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them?</source>
-        <translation>”%1” har ändringar som inte är sparade. Spara dem?</translation>
-    </message>
-    <message>
-        <source>&amp;Clear Menu</source>
-        <translation>&amp;Töm menyn</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>The project reads without errors now; its pages are back.</source>
         <translation>Projektet läses nu utan fel; dess sidor är tillbaka.</translation>
-    </message>
-    <message>
-        <source>&amp;New Project...</source>
-        <translation>&amp;Nytt projekt …</translation>
-    </message>
-    <message>
-        <source>&amp;Open Project...</source>
-        <translation>Ö&amp;ppna projekt …</translation>
     </message>
     <message>
         <source>&amp;Save Project</source>
@@ -1253,28 +1192,8 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Spara projekt &amp;som …</translation>
     </message>
     <message>
-        <source>Save A&amp;ll</source>
-        <translation>Spara a&amp;lla</translation>
-    </message>
-    <message>
-        <source>Save every open project</source>
-        <translation>Spara alla öppna projekt</translation>
-    </message>
-    <message>
         <source>&amp;Close Project</source>
         <translation>S&amp;täng projekt</translation>
-    </message>
-    <message>
-        <source>Close the project</source>
-        <translation>Stäng projektet</translation>
-    </message>
-    <message>
-        <source>&amp;Program Text...</source>
-        <translation>&amp;Programtext …</translation>
-    </message>
-    <message>
-        <source>Write the program in the language alone, for a text editor or the original compiler</source>
-        <translation>Skriv programmet enbart i språket, för en textredigerare eller den ursprungliga kompilatorn</translation>
     </message>
     <message>
         <source>Pr&amp;eferences...</source>
@@ -1285,28 +1204,12 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Ny &amp;Pluto …</translation>
     </message>
     <message>
-        <source>Add a Pluto unit to the project</source>
-        <translation>Lägg till en Pluto-enhet i projektet</translation>
-    </message>
-    <message>
         <source>New &amp;Sequence...</source>
         <translation>Ny s&amp;ekvens …</translation>
     </message>
     <message>
         <source>&amp;Remove Pluto...</source>
         <translation>&amp;Ta bort Pluto …</translation>
-    </message>
-    <message>
-        <source>Re&amp;manent Variables...</source>
-        <translation>Re&amp;manenta variabler …</translation>
-    </message>
-    <message>
-        <source>&amp;Import Variable Names (CSV)...</source>
-        <translation>&amp;Importera variabelnamn (CSV) …</translation>
-    </message>
-    <message>
-        <source>E&amp;xport Variable Names (CSV)...</source>
-        <translation>E&amp;xportera variabelnamn (CSV) …</translation>
     </message>
     <message>
         <source>&amp;Compile</source>
@@ -1341,30 +1244,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Utdata</translation>
     </message>
     <message>
-        <source>Compiling</source>
-        <translation>Kompilerar</translation>
-    </message>
-    <message>
-        <source>Opened %1. It has errors: fix them in its text.</source>
-        <translation>Öppnade %1. Den har fel: rätta dem i dess text.</translation>
-    </message>
-    <message>
-        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
-        <translation>Koden för Pluto %1 har fel, så dina senaste ändringar i den ingår inte i projektet. Spara projektet utan dem?</translation>
-    </message>
-    <message>
-        <source>Export Program Text</source>
-        <translation>Exportera programtext</translation>
-    </message>
-    <message>
-        <source>-program</source>
-        <translation>-program</translation>
-    </message>
-    <message>
-        <source>Wrote the program text to %1</source>
-        <translation>Skrev programtexten till %1</translation>
-    </message>
-    <message>
         <source>Code With Errors</source>
         <translation>Kod med fel</translation>
     </message>
@@ -1389,73 +1268,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>&amp;Gör om %1</translation>
     </message>
     <message>
-        <source>New Pluto</source>
-        <translation>Ny Pluto</translation>
-    </message>
-    <message>
-        <source>The project has 32 units, the most a bus can have.</source>
-        <translation>Projektet har 32 enheter, det största antal en buss kan ha.</translation>
-    </message>
-    <message>
-        <source>New Pluto %1</source>
-        <translation>Ny Pluto %1</translation>
-    </message>
-    <message>
-        <source>New Sequence</source>
-        <translation>Ny sekvens</translation>
-    </message>
-    <message>
-        <source>Pluto %1 has all nine sequences.</source>
-        <translation>Pluto %1 har alla nio sekvenser.</translation>
-    </message>
-    <message>
-        <source>Sequence number for Pluto %1 (1-9):</source>
-        <translation>Sekvensnummer för Pluto %1 (1-9):</translation>
-    </message>
-    <message>
-        <source>New Sequence %1 of Pluto %2</source>
-        <translation>Ny sekvens %1 i Pluto %2</translation>
-    </message>
-    <message>
-        <source>Remove Pluto</source>
-        <translation>Ta bort Pluto</translation>
-    </message>
-    <message>
-        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
-        <translation>Ta bort %1 med dess kod, namn och beskrivningar från projektet? Redigera &gt; Ångra tar tillbaka den.</translation>
-    </message>
-    <message>
-        <source>Remove Pluto %1</source>
-        <translation>Ta bort Pluto %1</translation>
-    </message>
-    <message>
-        <source>Set Remanent Variables of Pluto %1</source>
-        <translation>Ställ in remanenta variabler för Pluto %1</translation>
-    </message>
-    <message>
-        <source>Remanent Variables</source>
-        <translation>Remanenta variabler</translation>
-    </message>
-    <message>
-        <source>Import Variable Names to Pluto %1</source>
-        <translation>Importera variabelnamn till Pluto %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>Imported %n variable(s).</source>
-        <translation>
-            <numerusform>Importerade %n variabel.</numerusform>
-            <numerusform>Importerade %n variabler.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Export Variable Names</source>
-        <translation>Exportera variabelnamn</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>Skrev %1</translation>
-    </message>
-    <message>
         <source>Export Program &amp;Text...</source>
         <translation>Exportera program&amp;text …</translation>
     </message>
@@ -1472,34 +1284,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>&amp;Remanenta variabler …</translation>
     </message>
     <message>
-        <source>Compiling %1...</source>
-        <translation>Kompilerar %1 …</translation>
-    </message>
-    <message>
-        <source>Compile</source>
-        <translation>Kompilera</translation>
-    </message>
-    <message>
-        <source>Compiled without errors. Save the project to write the compiled file.</source>
-        <translation>Kompilerat utan fel. Spara projektet för att skriva den kompilerade filen.</translation>
-    </message>
-    <message>
-        <source>Autosave failed: %1</source>
-        <translation>Automatisk sparning misslyckades: %1</translation>
-    </message>
-    <message>
-        <source>Recover Projects</source>
-        <translation>Återställ projekt</translation>
-    </message>
-    <message>
-        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
-        <translation>Rungsmith stängdes inte på rätt sätt. De här projekten har ändringar som sparades automatiskt:</translation>
-    </message>
-    <message>
-        <source>&amp;Recover</source>
-        <translation>&amp;Återställ</translation>
-    </message>
-    <message>
         <source>&amp;Ladder or Text</source>
         <translation>&amp;Stegdiagram eller text</translation>
     </message>
@@ -1510,6 +1294,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;An IDE for Pluto safety PLCs: projects, units, I/O options, variables and the program as ladder and as text, checked, compiled and simulated.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QScintilla %3.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Rungsmith %1&lt;/h3&gt;&lt;p&gt;En utvecklingsmiljö för Pluto säkerhets-PLC: projekt, enheter, I/O-alternativ, variabler och programmet som stegdiagram och som text, kontrollerat, kompilerat och simulerat.&lt;/p&gt;&lt;p&gt;Byggd med Qt %2 och QScintilla %3.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Avsluta</translation>
     </message>
 </context>
 <context>
@@ -1552,6 +1340,149 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Choose the Pluto type and a station number that no other unit of the project has. The station number is part of every address of the unit: inputs of Pluto 1 are I1.0, I1.1, ...</source>
         <translation>Välj Pluto-typ och ett stationsnummer som ingen annan enhet i projektet har. Stationsnumret ingår i varje adress för enheten: ingångarna i Pluto 1 är I1.0, I1.1, …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::OpenProjects</name>
+    <message>
+        <source>Pluto projects (*.sps);;All files (*)</source>
+        <translation>Pluto-projekt (*.sps);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New Project...</source>
+        <translation>&amp;Nytt projekt …</translation>
+    </message>
+    <message>
+        <source>Start a new project</source>
+        <translation>Starta ett nytt projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Open Project...</source>
+        <translation>Ö&amp;ppna projekt …</translation>
+    </message>
+    <message>
+        <source>Open a project file</source>
+        <translation>Öppna en projektfil</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>&amp;Spara projekt</translation>
+    </message>
+    <message>
+        <source>Save the project</source>
+        <translation>Spara projektet</translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As...</source>
+        <translation>Spara projekt &amp;som …</translation>
+    </message>
+    <message>
+        <source>Save the project under a new name</source>
+        <translation>Spara projektet under ett nytt namn</translation>
+    </message>
+    <message>
+        <source>Save A&amp;ll</source>
+        <translation>Spara a&amp;lla</translation>
+    </message>
+    <message>
+        <source>Save every open project</source>
+        <translation>Spara alla öppna projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Close Project</source>
+        <translation>S&amp;täng projekt</translation>
+    </message>
+    <message>
+        <source>Close the project</source>
+        <translation>Stäng projektet</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text...</source>
+        <translation>&amp;Programtext …</translation>
+    </message>
+    <message>
+        <source>Write the program in the language alone, for a text editor or the original compiler</source>
+        <translation>Skriv programmet enbart i språket, för en textredigerare eller den ursprungliga kompilatorn</translation>
+    </message>
+    <message>
+        <source>Open &amp;Example Project</source>
+        <translation>Öppna &amp;exempelprojekt</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Töm menyn</translation>
+    </message>
+    <message>
+        <source>Opened %1. It has errors: fix them in its text.</source>
+        <translation>Öppnade %1. Den har fel: rätta dem i dess text.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Öppnade %1</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Öppna projekt</translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation>Kunde inte öppna ”%1”.</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Spara projekt</translation>
+    </message>
+    <message>
+        <source>The code of Pluto %1 has errors, so your last changes to it are not part of the project. Save the project without them?</source>
+        <translation>Koden för Pluto %1 har fel, så dina senaste ändringar i den ingår inte i projektet. Spara projektet utan dem?</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Spara projekt som</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”.</source>
+        <translation>Kunde inte spara ”%1”.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Sparade %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Osparade ändringar</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them?</source>
+        <translation>”%1” har ändringar som inte är sparade. Spara dem?</translation>
+    </message>
+    <message>
+        <source>Export Program Text</source>
+        <translation>Exportera programtext</translation>
+    </message>
+    <message>
+        <source>-program</source>
+        <translation>-program</translation>
+    </message>
+    <message>
+        <source>Wrote the program text to %1</source>
+        <translation>Skrev programtexten till %1</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisk sparning misslyckades: %1</translation>
+    </message>
+    <message>
+        <source>Recover Projects</source>
+        <translation>Återställ projekt</translation>
+    </message>
+    <message>
+        <source>Rungsmith was not closed properly. These projects have changes that were saved automatically:</source>
+        <translation>Rungsmith stängdes inte på rätt sätt. De här projekten har ändringar som sparades automatiskt:</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Återställ</translation>
     </message>
 </context>
 <context>
@@ -2148,6 +2079,104 @@ Dess textsida (F6) visar och redigerar den.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::UnitCommands</name>
+    <message>
+        <source>New &amp;Pluto...</source>
+        <translation>Ny &amp;Pluto …</translation>
+    </message>
+    <message>
+        <source>Add a Pluto unit to the project</source>
+        <translation>Lägg till en Pluto-enhet i projektet</translation>
+    </message>
+    <message>
+        <source>New &amp;Sequence...</source>
+        <translation>Ny s&amp;ekvens …</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Pluto...</source>
+        <translation>&amp;Ta bort Pluto …</translation>
+    </message>
+    <message>
+        <source>Re&amp;manent Variables...</source>
+        <translation>Re&amp;manenta variabler …</translation>
+    </message>
+    <message>
+        <source>&amp;Import Variable Names (CSV)...</source>
+        <translation>&amp;Importera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>E&amp;xport Variable Names (CSV)...</source>
+        <translation>E&amp;xportera variabelnamn (CSV) …</translation>
+    </message>
+    <message>
+        <source>New Pluto</source>
+        <translation>Ny Pluto</translation>
+    </message>
+    <message>
+        <source>The project has 32 units, the most a bus can have.</source>
+        <translation>Projektet har 32 enheter, det största antal en buss kan ha.</translation>
+    </message>
+    <message>
+        <source>New Pluto %1</source>
+        <translation>Ny Pluto %1</translation>
+    </message>
+    <message>
+        <source>New Sequence</source>
+        <translation>Ny sekvens</translation>
+    </message>
+    <message>
+        <source>Pluto %1 has all nine sequences.</source>
+        <translation>Pluto %1 har alla nio sekvenser.</translation>
+    </message>
+    <message>
+        <source>Sequence number for Pluto %1 (1-9):</source>
+        <translation>Sekvensnummer för Pluto %1 (1-9):</translation>
+    </message>
+    <message>
+        <source>New Sequence %1 of Pluto %2</source>
+        <translation>Ny sekvens %1 i Pluto %2</translation>
+    </message>
+    <message>
+        <source>Remove Pluto</source>
+        <translation>Ta bort Pluto</translation>
+    </message>
+    <message>
+        <source>Remove %1 with its code, names and descriptions from the project? Edit &gt; Undo brings it back.</source>
+        <translation>Ta bort %1 med dess kod, namn och beskrivningar från projektet? Redigera &gt; Ångra tar tillbaka den.</translation>
+    </message>
+    <message>
+        <source>Remove Pluto %1</source>
+        <translation>Ta bort Pluto %1</translation>
+    </message>
+    <message>
+        <source>Set Remanent Variables of Pluto %1</source>
+        <translation>Ställ in remanenta variabler för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Remanent Variables</source>
+        <translation>Remanenta variabler</translation>
+    </message>
+    <message>
+        <source>Import Variable Names to Pluto %1</source>
+        <translation>Importera variabelnamn till Pluto %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n variable(s).</source>
+        <translation>
+            <numerusform>Importerade %n variabel.</numerusform>
+            <numerusform>Importerade %n variabler.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Variable Names</source>
+        <translation>Exportera variabelnamn</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::UnitPage</name>
     <message>
         <source>&amp;Remanent Variables...</source>
@@ -2542,6 +2571,13 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Add variables to plot them over the simulation&apos;s time.</source>
         <translation>Lägg till variabler för att rita dem över simuleringens tid.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::WelcomePage</name>
+    <message>
+        <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
     </message>
 </context>
 </TS>

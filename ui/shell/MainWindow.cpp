@@ -1,31 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "shell/MainWindow.h"
 
-#include "compiler/ImageCodec.h"
-#include "document/Autosave.h"
+#include "compiler/ProgramCheck.h"
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
-#include "pages/CsvExportDialog.h"
-#include "pages/CsvImportDialog.h"
 #include "pages/IoOptionsPage.h"
-#include "pages/NewProjectDialog.h"
-#include "pages/NewUnitDialog.h"
 #include "pages/ProjectPage.h"
-#include "pages/RemanentDialog.h"
 #include "pages/UnitPage.h"
 #include "pages/VariablesPage.h"
-#include "project/ProgramText.h"
-#include "project/ProjectFile.h"
-#include "project/ProjectProperties.h"
-#include "project/RemanentVariables.h"
 #include "project/Sequences.h"
+#include "project/TextPlace.h"
 #include "project/UnitSettings.h"
+#include "shell/NamedIcon.h"
 #include "shell/PreferencesDialog.h"
 #include "shell/ProjectTree.h"
 #include "shell/Theme.h"
-#include "shell/UnitCaption.h"
+#include "shell/WelcomePage.h"
 #include "sim/SimulationMode.h"
 #include "text/ProgramEditor.h"
 #include "text/TextPage.h"
@@ -35,11 +27,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -47,41 +35,17 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStackedWidget>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
-#include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 namespace rs::ui {
 
 namespace {
 
-const QString kExamplePath = QStringLiteral(":/examples/muting.sps");
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
-const QString kDirectoryKey = QStringLiteral("mainWindow/lastDirectory");
 
 constexpr int kStatusMessageMs = 4000;
-constexpr int kMillisecondsPerMinute = 60 * 1000;
-
-QString projectFileFilter() {
-    return MainWindow::tr("Pluto projects (*.sps);;All files (*)");
-}
-
-QIcon icon(const char* name) {
-    return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)));
-}
-
-QString lastDirectory() {
-    const QString stored = QSettings().value(kDirectoryKey).toString();
-    return stored.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
-                            : stored;
-}
-
-void rememberDirectory(const QString& path) {
-    QSettings().setValue(kDirectoryKey, QFileInfo(path).absolutePath());
-}
 
 } // namespace
 
@@ -91,8 +55,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_pages->setObjectName(QStringLiteral("pages"));
     setCentralWidget(m_pages);
 
-    m_welcomePage = new QWidget(m_pages);
-    m_welcomePage->setObjectName(QStringLiteral("welcomePage"));
+    m_welcomePage = new WelcomePage(m_pages);
     m_projectPage = new ProjectPage(m_pages);
     m_unitPage = new UnitPage(m_pages);
     m_ioPage = new IoOptionsPage(m_pages);
@@ -104,33 +67,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
                                          m_variablesPage, m_textPage, m_ladderPage})
         m_pages->addWidget(page);
 
+    createCommands();
     createActions();
     createToolBar();
     createDocks();
+    // Compiling reports in the Output dock and, while it runs, in the status bar.
+    m_compileRun = new CompileRun(this, m_output, m_outputDock, m_textPage, m_ladderPage);
+    connect(m_compileRun, &CompileRun::runningChanged, this, &MainWindow::updateActions);
+    connect(m_compileRun, &CompileRun::message, this, &MainWindow::showMessage);
     createMenus();
     createStatusBar();
     m_simulation = new SimulationMode(this);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 
-    auto* welcome = new QVBoxLayout(m_welcomePage);
-    auto* heading = new QLabel(tr("<h2>No project is open</h2>"
-                                  "<p>Start a new project, open one, or look at the example from "
-                                  "the manual.</p>"),
-                               m_welcomePage);
-    heading->setAlignment(Qt::AlignCenter);
-    welcome->addStretch();
-    welcome->addWidget(heading);
-    auto* buttons = new QHBoxLayout;
-    buttons->addStretch();
-    for (QAction* action : {m_newAction, m_openAction, m_exampleAction}) {
-        auto* button =
-            new QPushButton(action->icon(), action->text().remove(QLatin1Char('&')), m_welcomePage);
-        connect(button, &QPushButton::clicked, action, &QAction::trigger);
-        buttons->addWidget(button);
-    }
-    buttons->addStretch();
-    welcome->addLayout(buttons);
-    welcome->addStretch();
+    const OpenProjects::Actions& projectActions = m_projects->actions();
+    m_welcomePage->offer({projectActions.newProject, projectActions.open, projectActions.example});
 
     connect(m_textPage, &TextPage::diagnosticsChanged, this, [this](const lang::Diagnostics& d) {
         m_problems->setDiagnostics(d);
@@ -147,19 +98,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
                   m_ladderPage->sequence()});
     });
     connect(m_ladderPage, &LadderPage::newSequenceRequested, this,
-            [this] { newSequence(m_ladderPage->document(), m_ladderPage->station()); });
-    connect(m_unitPage, &UnitPage::remanentRequested, this, &MainWindow::editRemanent);
-    connect(m_variablesPage, &VariablesPage::remanentRequested, this, &MainWindow::editRemanent);
-    connect(m_variablesPage, &VariablesPage::csvImportRequested, this, &MainWindow::importCsv);
-    connect(m_variablesPage, &VariablesPage::csvExportRequested, this, &MainWindow::exportCsv);
+            [this] { m_units->newSequence(m_ladderPage->document(), m_ladderPage->station()); });
+    connect(m_unitPage, &UnitPage::remanentRequested, m_units, &UnitCommands::editRemanent);
+    connect(m_variablesPage, &VariablesPage::remanentRequested, m_units,
+            &UnitCommands::editRemanent);
+    connect(m_variablesPage, &VariablesPage::csvImportRequested, m_units, &UnitCommands::importCsv);
+    connect(m_variablesPage, &VariablesPage::csvExportRequested, m_units, &UnitCommands::exportCsv);
     connect(&m_undoGroup, &QUndoGroup::canUndoChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::canRedoChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::undoTextChanged, this, &MainWindow::updateActions);
     connect(&m_undoGroup, &QUndoGroup::redoTextChanged, this, &MainWindow::updateActions);
-    connect(&m_compileWatcher, &QFutureWatcher<Compiled>::finished, this,
-            &MainWindow::compileFinished);
-    connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
-    m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+    m_projects->setAutosaveInterval(m_preferences.autosaveMinutes);
 
     resize(1280, 800);
     rebuildTree();
@@ -167,14 +116,47 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
 }
 
 MainWindow::~MainWindow() {
-    m_compileWatcher.waitForFinished();
-    for (ProjectDocument* document : m_documents) {
+    // The projects outlive the window's members; nothing of theirs may reach them.
+    for (ProjectDocument* document : m_projects->documents())
         disconnect(document, nullptr, this, nullptr);
-        Autosave::release(document->autosaveId());
-    }
 }
 
 // ----- actions and menus
+
+void MainWindow::createCommands() {
+    m_projects = new OpenProjects(this, m_textPage, [this] { return currentDocument(); });
+    connect(m_projects, &OpenProjects::added, this, &MainWindow::documentAdded);
+    connect(m_projects, &OpenProjects::removed, this, &MainWindow::documentRemoved);
+    connect(m_projects, &OpenProjects::opened, this,
+            [this](ProjectDocument* document) { showFirstPageOf(document); });
+    connect(m_projects, &OpenProjects::created, this, [this](ProjectDocument* document) {
+        showPage({PageRef::Kind::Project, document});
+    });
+    connect(m_projects, &OpenProjects::message, this, &MainWindow::showMessage);
+
+    m_units = new UnitCommands(this, [this] {
+        PageRef page = m_current;
+        page.document = currentDocument();
+        return page;
+    });
+    connect(m_projects, &OpenProjects::unitWanted, m_units, &UnitCommands::newUnit);
+    connect(m_units, &UnitCommands::unitAdded, this,
+            [this](ProjectDocument* document, int station) {
+                showPage({PageRef::Kind::Unit, document, station});
+            });
+    connect(m_units, &UnitCommands::sequenceAdded, this,
+            [this](ProjectDocument* document, int station, int sequence) {
+                const bool ladder = m_current.kind == PageRef::Kind::Ladder;
+                showPage({ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code, document, station,
+                          sequence});
+            });
+    connect(m_units, &UnitCommands::unitRemoving, this,
+            [this](ProjectDocument* document, int station) {
+                if (m_current.document == document && m_current.station == station)
+                    showPage({PageRef::Kind::Project, document});
+            });
+    connect(m_units, &UnitCommands::message, this, &MainWindow::showMessage);
+}
 
 void MainWindow::createActions() {
     const auto action = [this](const QString& text, const char* name,
@@ -185,58 +167,15 @@ void MainWindow::createActions() {
         return created;
     };
 
-    m_newAction = action(tr("&New Project..."), "newAction", QKeySequence::New);
-    m_newAction->setIcon(icon("document-new"));
-    m_newAction->setStatusTip(tr("Start a new project"));
-    connect(m_newAction, &QAction::triggered, this, &MainWindow::newProject);
-
-    m_openAction = action(tr("&Open Project..."), "openAction", QKeySequence::Open);
-    m_openAction->setIcon(icon("document-open"));
-    m_openAction->setStatusTip(tr("Open a project file"));
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::open);
-
-    m_saveAction = action(tr("&Save Project"), "saveAction", QKeySequence::Save);
-    m_saveAction->setIcon(icon("document-save"));
-    m_saveAction->setStatusTip(tr("Save the project"));
-    connect(m_saveAction, &QAction::triggered, this, [this] { saveDocument(currentDocument()); });
-
-    m_saveAsAction = action(tr("Save Project &As..."), "saveAsAction", QKeySequence::SaveAs);
-    m_saveAsAction->setStatusTip(tr("Save the project under a new name"));
-    connect(m_saveAsAction, &QAction::triggered, this,
-            [this] { saveDocumentAs(currentDocument()); });
-
-    m_saveAllAction =
-        action(tr("Save A&ll"), "saveAllAction", QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
-    m_saveAllAction->setIcon(icon("document-save-all"));
-    m_saveAllAction->setStatusTip(tr("Save every open project"));
-    connect(m_saveAllAction, &QAction::triggered, this, [this] {
-        for (ProjectDocument* document : std::vector<ProjectDocument*>(m_documents))
-            if (document->isModified() && !saveDocument(document))
-                return;
-    });
-
-    m_closeAction = action(tr("&Close Project"), "closeAction", QKeySequence::Close);
-    m_closeAction->setStatusTip(tr("Close the project"));
-    connect(m_closeAction, &QAction::triggered, this, [this] {
-        if (ProjectDocument* document = currentDocument())
-            closeDocument(document);
-    });
-
-    m_exportTextAction = action(tr("&Program Text..."), "exportTextAction");
-    m_exportTextAction->setStatusTip(
-        tr("Write the program in the language alone, for a text editor or the original compiler"));
-    connect(m_exportTextAction, &QAction::triggered, this,
-            [this] { exportProgramText(currentDocument()); });
-
     m_quitAction = action(tr("&Quit"), "quitAction", QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
     m_undoAction = action(tr("&Undo"), "undoAction", QKeySequence::Undo);
-    m_undoAction->setIcon(icon("edit-undo"));
+    m_undoAction->setIcon(namedIcon("edit-undo"));
     connect(m_undoAction, &QAction::triggered, this, &MainWindow::undo);
     m_redoAction = action(tr("&Redo"), "redoAction", QKeySequence::Redo);
-    m_redoAction->setIcon(icon("edit-redo"));
+    m_redoAction->setIcon(namedIcon("edit-redo"));
     connect(m_redoAction, &QAction::triggered, this, &MainWindow::redo);
 
     // The clipboard commands act on whatever text field has the focus.
@@ -257,7 +196,7 @@ void MainWindow::createActions() {
 
     m_formatAction = action(tr("&Format Document"), "formatDocumentAction",
                             QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-    m_formatAction->setIcon(icon("format-document"));
+    m_formatAction->setIcon(namedIcon("format-document"));
     m_formatAction->setStatusTip(tr("Rewrite the text in the canonical layout"));
     connect(m_formatAction, &QAction::triggered, this, &MainWindow::formatDocument);
 
@@ -272,66 +211,42 @@ void MainWindow::createActions() {
 
     m_preferencesAction =
         action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
-    m_preferencesAction->setIcon(icon("preferences"));
+    m_preferencesAction->setIcon(namedIcon("preferences"));
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::editPreferences);
 
-    m_newUnitAction = action(tr("New &Pluto..."), "newUnitAction");
-    m_newUnitAction->setIcon(icon("unit-new"));
-    m_newUnitAction->setStatusTip(tr("Add a Pluto unit to the project"));
-    connect(m_newUnitAction, &QAction::triggered, this, [this] { newUnit(currentDocument()); });
-    m_newSequenceAction = action(tr("New &Sequence..."), "newSequenceAction");
-    connect(m_newSequenceAction, &QAction::triggered, this,
-            [this] { newSequence(currentDocument(), m_current.station); });
-    m_removeUnitAction = action(tr("&Remove Pluto..."), "removeUnitAction");
-    connect(m_removeUnitAction, &QAction::triggered, this,
-            [this] { removeUnit(currentDocument(), m_current.station); });
-    m_remanentAction = action(tr("Re&manent Variables..."), "remanentAction");
-    connect(m_remanentAction, &QAction::triggered, this,
-            [this] { editRemanent(currentDocument(), m_current.station); });
-    m_importCsvAction = action(tr("&Import Variable Names (CSV)..."), "importCsvAction");
-    m_importCsvAction->setIcon(icon("import"));
-    connect(m_importCsvAction, &QAction::triggered, this,
-            [this] { importCsv(currentDocument(), m_current.station); });
-    m_exportCsvAction = action(tr("E&xport Variable Names (CSV)..."), "exportCsvAction");
-    m_exportCsvAction->setIcon(icon("export"));
-    connect(m_exportCsvAction, &QAction::triggered, this,
-            [this] { exportCsv(currentDocument(), m_current.station); });
-
     m_compileAction = action(tr("&Compile"), "compileAction", QKeySequence(Qt::Key_F7));
-    m_compileAction->setIcon(icon("compile"));
+    m_compileAction->setIcon(namedIcon("compile"));
     m_compileAction->setStatusTip(tr("Check the project and write the compiled file (.hps)"));
     connect(m_compileAction, &QAction::triggered, this, &MainWindow::compile);
 
-    m_exampleAction = action(tr("Open &Example Project"), "exampleAction");
-    m_exampleAction->setIcon(icon("example"));
-    connect(m_exampleAction, &QAction::triggered, this, &MainWindow::showExample);
     m_aboutAction = action(tr("&About Rungsmith"), "aboutAction");
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
 }
 
 void MainWindow::createMenus() {
+    const OpenProjects::Actions& projectActions = m_projects->actions();
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
-    file->addAction(m_newAction);
-    file->addAction(m_openAction);
+    file->addAction(projectActions.newProject);
+    file->addAction(projectActions.open);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     file->addSeparator();
-    file->addAction(m_saveAction);
-    file->addAction(m_saveAsAction);
-    file->addAction(m_saveAllAction);
-    file->addAction(m_closeAction);
+    file->addAction(projectActions.save);
+    file->addAction(projectActions.saveAs);
+    file->addAction(projectActions.saveAll);
+    file->addAction(projectActions.close);
     file->addSeparator();
     QMenu* exportMenu = file->addMenu(tr("&Export"));
     exportMenu->setObjectName(QStringLiteral("exportMenu"));
-    exportMenu->addAction(m_exportTextAction);
+    exportMenu->addAction(projectActions.exportText);
     file->addSeparator();
     file->addAction(m_quitAction);
     // Another window may have changed the list since this one last showed it.
-    connect(file, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
-    fillRecentMenu();
+    connect(file, &QMenu::aboutToShow, this, [this] { m_projects->fillRecentMenu(m_recentMenu); });
+    m_projects->fillRecentMenu(m_recentMenu);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edit->setObjectName(QStringLiteral("editMenu"));
@@ -359,13 +274,14 @@ void MainWindow::createMenus() {
 
     QMenu* projectMenu = menuBar()->addMenu(tr("&Project"));
     projectMenu->setObjectName(QStringLiteral("projectMenu"));
-    projectMenu->addAction(m_newUnitAction);
-    projectMenu->addAction(m_newSequenceAction);
-    projectMenu->addAction(m_removeUnitAction);
+    const UnitCommands::Actions& unitActions = m_units->actions();
+    projectMenu->addAction(unitActions.newUnit);
+    projectMenu->addAction(unitActions.newSequence);
+    projectMenu->addAction(unitActions.removeUnit);
     projectMenu->addSeparator();
-    projectMenu->addAction(m_remanentAction);
-    projectMenu->addAction(m_importCsvAction);
-    projectMenu->addAction(m_exportCsvAction);
+    projectMenu->addAction(unitActions.remanent);
+    projectMenu->addAction(unitActions.importCsv);
+    projectMenu->addAction(unitActions.exportCsv);
 
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     build->setObjectName(QStringLiteral("buildMenu"));
@@ -373,7 +289,7 @@ void MainWindow::createMenus() {
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->setObjectName(QStringLiteral("helpMenu"));
-    help->addAction(m_exampleAction);
+    help->addAction(projectActions.example);
     help->addSeparator();
     help->addAction(m_aboutAction);
 }
@@ -382,15 +298,16 @@ void MainWindow::createToolBar() {
     m_fileToolBar = addToolBar(tr("Main"));
     m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
     m_fileToolBar->setIconSize(QSize(20, 20));
-    m_fileToolBar->addAction(m_newAction);
-    m_fileToolBar->addAction(m_openAction);
-    m_fileToolBar->addAction(m_saveAction);
-    m_fileToolBar->addAction(m_saveAllAction);
+    const OpenProjects::Actions& projectActions = m_projects->actions();
+    m_fileToolBar->addAction(projectActions.newProject);
+    m_fileToolBar->addAction(projectActions.open);
+    m_fileToolBar->addAction(projectActions.save);
+    m_fileToolBar->addAction(projectActions.saveAll);
     m_fileToolBar->addSeparator();
     m_fileToolBar->addAction(m_undoAction);
     m_fileToolBar->addAction(m_redoAction);
     m_fileToolBar->addSeparator();
-    m_fileToolBar->addAction(m_newUnitAction);
+    m_fileToolBar->addAction(m_units->actions().newUnit);
     m_fileToolBar->addAction(m_formatAction);
     m_fileToolBar->addSeparator();
     m_fileToolBar->addAction(m_compileAction);
@@ -436,13 +353,7 @@ void MainWindow::createStatusBar() {
     m_position->setObjectName(QStringLiteral("cursorPositionLabel"));
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("problemSummaryLabel"));
-    m_progress = new QProgressBar(this);
-    m_progress->setObjectName(QStringLiteral("compileProgress"));
-    m_progress->setRange(0, 0); // the compiler reports no steps: busy, not a percentage
-    m_progress->setMaximumWidth(140);
-    m_progress->setFormat(tr("Compiling"));
-    m_progress->hide();
-    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_compileRun->progressBar());
     for (QLabel* label : {m_position, m_summary}) {
         label->setContentsMargins(8, 0, 8, 0);
         statusBar()->addPermanentWidget(label);
@@ -460,48 +371,40 @@ void MainWindow::createStatusBar() {
 ProjectDocument* MainWindow::currentDocument() const {
     if (m_current.document)
         return m_current.document;
-    return m_documents.empty() ? nullptr : m_documents.back();
+    const std::vector<ProjectDocument*>& documents = m_projects->documents();
+    return documents.empty() ? nullptr : documents.back();
 }
 
 ProgramEditor* MainWindow::editor() const {
     return m_textPage->editor();
 }
 
-void MainWindow::addDocument(ProjectDocument* document) {
-    document->setParent(this);
-    m_documents.push_back(document);
+void MainWindow::documentAdded(ProjectDocument* document) {
     m_undoGroup.addStack(document->undoStack());
     connect(document, &ProjectDocument::changed, this, [this] {
         rebuildTree();
         updateTitle();
     });
-    connect(document, &ProjectDocument::modificationChanged, this, [this, document](bool modified) {
-        if (!modified)
-            Autosave::remove(document->autosaveId());
-        updateTitle();
-    });
+    connect(document, &ProjectDocument::modificationChanged, this, &MainWindow::updateTitle);
     connect(document, &ProjectDocument::pathChanged, this, &MainWindow::updateTitle);
     rebuildTree();
 }
 
-void MainWindow::removeDocument(ProjectDocument* document) {
-    Autosave::remove(document->autosaveId());
+void MainWindow::documentRemoved(ProjectDocument* document) {
     m_undoGroup.removeStack(document->undoStack());
-    std::erase(m_documents, document);
     if (m_current.document == document) {
         m_current = {};
         m_textPage->showUnit(nullptr, 0);
     }
     rebuildTree();
-    document->deleteLater();
-    if (m_documents.empty())
+    if (documents().empty())
         showPage(PageRef{});
     else
-        showFirstPageOf(m_documents.back());
+        showFirstPageOf(documents().back());
 }
 
 void MainWindow::rebuildTree() {
-    m_tree->setDocuments(m_documents);
+    m_tree->setDocuments(documents());
     m_tree->select(m_current);
 }
 
@@ -515,173 +418,6 @@ void MainWindow::showFirstPageOf(ProjectDocument* document, PageRef::Kind codeVi
         showPage({PageRef::Kind::Project, document});
     else
         showPage({codeView, document, stations.front(), 0});
-}
-
-QString MainWindow::loadFile(const QString& path) {
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    for (ProjectDocument* document : m_documents) {
-        if (document->path() == absolute) {
-            showFirstPageOf(document);
-            return {};
-        }
-    }
-    QString error;
-    ProjectDocument* document = ProjectDocument::open(path, error, this);
-    if (!document)
-        return error;
-    addDocument(document);
-    showFirstPageOf(document);
-    return {};
-}
-
-bool MainWindow::openFile(const QString& path) {
-    const QString error = loadFile(path);
-    if (error.isEmpty()) {
-        m_recentFiles.add(QFileInfo(path).absoluteFilePath());
-        rememberDirectory(path);
-        ProjectDocument* document = currentDocument();
-        showMessage(document && document->isDamaged()
-                        ? tr("Opened %1. It has errors: fix them in its text.")
-                              .arg(QDir::toNativeSeparators(path))
-                        : tr("Opened %1").arg(QDir::toNativeSeparators(path)));
-        return true;
-    }
-    QMessageBox box(QMessageBox::Warning, tr("Open Project"),
-                    tr("Could not open “%1”.").arg(QDir::toNativeSeparators(path)), QMessageBox::Ok,
-                    this);
-    box.setInformativeText(error);
-    box.exec();
-    return false;
-}
-
-void MainWindow::showExample() {
-    const project::FileText file = project::readTextFile(kExamplePath);
-    ProjectDocument* document =
-        ProjectDocument::fromText(QByteArray::fromStdString(file.text), this);
-    addDocument(document);
-    showFirstPageOf(document);
-}
-
-ProjectDocument* MainWindow::createProject(const QString& name, const QString& description,
-                                           bool includeSource) {
-    auto* document = new ProjectDocument(
-        project::newProject(name.toStdString(), description.toStdString(), includeSource), this);
-    document->setModifiedWithoutUndo(true);
-    addDocument(document);
-    showPage({PageRef::Kind::Project, document});
-    return document;
-}
-
-void MainWindow::newProject() {
-    NewProjectDialog dialog(this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    ProjectDocument* document =
-        createProject(dialog.name(), dialog.description(), dialog.includeSource());
-    // The manual's next step: the project's first unit.
-    newUnit(document);
-}
-
-void MainWindow::open() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), lastDirectory(),
-                                                      projectFileFilter());
-    if (!path.isEmpty())
-        openFile(path);
-}
-
-bool MainWindow::saveDocument(ProjectDocument* document) {
-    if (!document)
-        return false;
-    if (document->path().isEmpty() || document->path().startsWith(QLatin1Char(':')))
-        return saveDocumentAs(document);
-    return saveDocumentAs(document, document->path());
-}
-
-bool MainWindow::saveDocumentAs(ProjectDocument* document, const QString& requested) {
-    if (!document)
-        return false;
-    if (m_textPage->document() == document && !m_textPage->applyNow() &&
-        m_textPage->station() != TextPage::kWholeProject) {
-        const auto answer = QMessageBox::warning(
-            this, tr("Save Project"),
-            tr("The code of Pluto %1 has errors, so your last changes to it are not part of the "
-               "project. Save the project without them?")
-                .arg(m_textPage->station()),
-            QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
-        if (answer != QMessageBox::Save)
-            return false;
-    }
-    QString path = requested;
-    if (path.isEmpty()) {
-        const QString suggestion =
-            document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
-                ? QDir(lastDirectory()).filePath(document->displayName())
-                : document->path();
-        path = QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestion,
-                                            projectFileFilter());
-        if (path.isEmpty())
-            return false;
-        if (QFileInfo(path).suffix().isEmpty())
-            path += QStringLiteral(".sps");
-    }
-    const QString error = document->saveTo(path);
-    if (!error.isEmpty()) {
-        QMessageBox box(QMessageBox::Critical, tr("Save Project"),
-                        tr("Could not save “%1”.").arg(QDir::toNativeSeparators(path)),
-                        QMessageBox::Ok, this);
-        box.setInformativeText(error);
-        box.exec();
-        return false;
-    }
-    m_recentFiles.add(document->path());
-    rememberDirectory(path);
-    showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document->path())));
-    return true;
-}
-
-bool MainWindow::maybeSave(ProjectDocument* document) {
-    if (!document->isModified())
-        return true;
-    const auto answer = QMessageBox::warning(
-        this, tr("Unsaved Changes"),
-        tr("“%1” has changes that are not saved. Save them?").arg(document->displayName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return saveDocument(document);
-    return answer == QMessageBox::Discard;
-}
-
-bool MainWindow::closeDocument(ProjectDocument* document) {
-    if (!document || !maybeSave(document))
-        return false;
-    removeDocument(document);
-    return true;
-}
-
-bool MainWindow::exportProgramText(ProjectDocument* document, const QString& requested) {
-    if (!document || document->isDamaged())
-        return false;
-    QString path = requested;
-    if (path.isEmpty()) {
-        const QString base =
-            document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
-                ? QDir(lastDirectory()).filePath(document->displayName())
-                : document->path();
-        const QFileInfo info(base);
-        path = QFileDialog::getSaveFileName(
-            this, tr("Export Program Text"),
-            info.dir().filePath(info.completeBaseName() + tr("-program") + QStringLiteral(".sps")),
-            projectFileFilter());
-        if (path.isEmpty())
-            return false;
-    }
-    const QString error = project::writeTextFile(path, project::programText(document->project()));
-    if (!error.isEmpty()) {
-        QMessageBox::critical(this, tr("Export Program Text"), error);
-        return false;
-    }
-    showMessage(tr("Wrote the program text to %1").arg(QDir::toNativeSeparators(path)));
-    return true;
 }
 
 // ----- pages
@@ -721,7 +457,7 @@ bool MainWindow::showPage(const PageRef& page) {
     switch (page.kind) {
     case PageRef::Kind::None:
         m_pages->setCurrentWidget(m_welcomePage);
-        if (!m_documents.empty())
+        if (!documents().empty())
             m_current.document = nullptr;
         break;
     case PageRef::Kind::Project:
@@ -801,24 +537,12 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateActions() {
     ProjectDocument* document = currentDocument();
-    const bool hasDocument = document != nullptr;
-    const bool healthy = hasDocument && !document->isDamaged();
-    const bool inUnit = healthy && m_current.station >= 0 &&
-                        project::unitSettings(document->project(), m_current.station).has_value();
     const bool onText = m_pages->currentWidget() == m_textPage;
-    m_saveAction->setEnabled(hasDocument);
-    m_saveAsAction->setEnabled(hasDocument);
-    m_saveAllAction->setEnabled(!m_documents.empty());
-    m_closeAction->setEnabled(hasDocument);
-    m_exportTextAction->setEnabled(healthy);
-    m_newUnitAction->setEnabled(healthy && !project::freeStations(document->project()).empty());
-    m_newSequenceAction->setEnabled(inUnit);
-    m_removeUnitAction->setEnabled(inUnit);
-    m_remanentAction->setEnabled(
-        inUnit && project::unitTypeOf(document->project(), m_current.station).remanent);
-    m_importCsvAction->setEnabled(inUnit);
-    m_exportCsvAction->setEnabled(inUnit);
-    m_compileAction->setEnabled(hasDocument && !isCompiling());
+    m_projects->updateActions(document);
+    PageRef shown = m_current;
+    shown.document = document;
+    m_units->updateActions(shown);
+    m_compileAction->setEnabled(document != nullptr && !isCompiling());
     m_formatAction->setEnabled(onText);
     m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
                                  m_current.kind == PageRef::Kind::Ladder);
@@ -871,121 +595,6 @@ void MainWindow::formatDocument() {
     showMessage(tr("Formatted."));
 }
 
-void MainWindow::newUnit(ProjectDocument* document) {
-    if (!document || document->isDamaged())
-        return;
-    if (project::freeStations(document->project()).empty()) {
-        QMessageBox::information(this, tr("New Pluto"),
-                                 tr("The project has 32 units, the most a bus can have."));
-        return;
-    }
-    NewUnitDialog dialog(document->project(), this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const project::UnitSettings settings = dialog.settings();
-    QString refusal;
-    document->edit(tr("New Pluto %1").arg(settings.station), [&](project::Project& p) {
-        if (auto problem = project::addUnit(p, settings))
-            refusal = QString::fromStdString(*problem);
-    });
-    if (!refusal.isEmpty()) {
-        QMessageBox::warning(this, tr("New Pluto"), refusal);
-        return;
-    }
-    showPage({PageRef::Kind::Unit, document, settings.station});
-}
-
-void MainWindow::newSequence(ProjectDocument* document, int station) {
-    if (!document || station < 0)
-        return;
-    const std::vector<int> free = project::freeSequences(document->project(), station);
-    if (free.empty()) {
-        QMessageBox::information(this, tr("New Sequence"),
-                                 tr("Pluto %1 has all nine sequences.").arg(station));
-        return;
-    }
-    QStringList choices;
-    for (int sequence : free)
-        choices << QString::number(sequence);
-    bool ok = false;
-    const QString chosen = QInputDialog::getItem(
-        this, tr("New Sequence"), tr("Sequence number for Pluto %1 (1-9):").arg(station), choices,
-        0, false, &ok);
-    if (!ok)
-        return;
-    const int sequence = chosen.toInt();
-    document->edit(tr("New Sequence %1 of Pluto %2").arg(sequence).arg(station),
-                   [&](project::Project& p) { project::addSequence(p, station, sequence); });
-    showPage({m_current.kind == PageRef::Kind::Ladder ? PageRef::Kind::Ladder : PageRef::Kind::Code,
-              document, station, sequence});
-}
-
-void MainWindow::removeUnit(ProjectDocument* document, int station) {
-    if (!document || !project::unitSettings(document->project(), station))
-        return;
-    const auto answer = QMessageBox::question(
-        this, tr("Remove Pluto"),
-        tr("Remove %1 with its code, names and descriptions from the project? Edit > Undo brings "
-           "it back.")
-            .arg(unitCaption(document->project(), station)));
-    if (answer != QMessageBox::Yes)
-        return;
-    if (m_current.document == document && m_current.station == station)
-        showPage({PageRef::Kind::Project, document});
-    document->edit(tr("Remove Pluto %1").arg(station),
-                   [&](project::Project& p) { project::removeUnit(p, station); });
-}
-
-void MainWindow::editRemanent(ProjectDocument* document, int station) {
-    if (!document || !project::unitTypeOf(document->project(), station).remanent)
-        return;
-    RemanentDialog dialog(station, project::remanentOf(document->project(), station), this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const std::set<lang::Address> selection = dialog.selection();
-    QString refusal;
-    document->edit(tr("Set Remanent Variables of Pluto %1").arg(station), [&](project::Project& p) {
-        if (auto problem = project::setRemanent(p, station, selection))
-            refusal = QString::fromStdString(*problem);
-    });
-    if (!refusal.isEmpty())
-        QMessageBox::warning(this, tr("Remanent Variables"), refusal);
-}
-
-void MainWindow::importCsv(ProjectDocument* document, int station) {
-    if (!document)
-        return;
-    CsvImportDialog dialog(document->project(), station, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    document->replace(tr("Import Variable Names to Pluto %1").arg(station),
-                      dialog.result().project);
-    showMessage(
-        tr("Imported %n variable(s).", nullptr, static_cast<int>(dialog.result().changes.size())));
-}
-
-void MainWindow::exportCsv(ProjectDocument* document, int station) {
-    if (!document)
-        return;
-    const QFileInfo base(document->path().isEmpty() || document->path().startsWith(QLatin1Char(':'))
-                             ? QDir(lastDirectory()).filePath(document->displayName())
-                             : document->path());
-    CsvExportDialog dialog(
-        station,
-        base.dir().filePath(
-            QStringLiteral("%1-pluto%2.csv").arg(base.completeBaseName()).arg(station)),
-        this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const std::string csv = project::exportVariablesCsv(document->project(), dialog.options());
-    const QString error = project::writeTextFile(dialog.path(), csv);
-    if (!error.isEmpty()) {
-        QMessageBox::critical(this, tr("Export Variable Names"), error);
-        return;
-    }
-    showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(dialog.path())));
-}
-
 void MainWindow::editPreferences() {
     PreferencesDialog dialog(m_preferences, this);
     if (dialog.exec() != QDialog::Accepted)
@@ -996,7 +605,7 @@ void MainWindow::editPreferences() {
     m_preferences.save();
     if (themeChanged)
         applyTheme(m_preferences.theme);
-    m_autosaveTimer.start(m_preferences.autosaveMinutes * kMillisecondsPerMinute);
+    m_projects->setAutosaveInterval(m_preferences.autosaveMinutes);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
 }
 
@@ -1008,37 +617,39 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
     };
     switch (page.kind) {
     case PageRef::Kind::None:
-        menu.addAction(m_newAction);
-        menu.addAction(m_openAction);
+        menu.addAction(m_projects->actions().newProject);
+        menu.addAction(m_projects->actions().open);
         break;
     case PageRef::Kind::Project:
     case PageRef::Kind::ProjectText:
         if (!document->isDamaged())
-            add(tr("New &Pluto..."), [this, document] { newUnit(document); });
-        add(tr("&Save Project"), [this, document] { saveDocument(document); });
-        add(tr("Save Project &As..."), [this, document] { saveDocumentAs(document); });
+            add(tr("New &Pluto..."), [this, document] { m_units->newUnit(document); });
+        add(tr("&Save Project"), [this, document] { m_projects->save(document); });
+        add(tr("Save Project &As..."), [this, document] { m_projects->saveAs(document); });
         if (!document->isDamaged())
-            add(tr("Export Program &Text..."), [this, document] { exportProgramText(document); });
+            add(tr("Export Program &Text..."),
+                [this, document] { m_projects->exportProgramText(document); });
         menu.addSeparator();
-        add(tr("&Close Project"), [this, document] { closeDocument(document); });
+        add(tr("&Close Project"), [this, document] { m_projects->close(document); });
         break;
     case PageRef::Kind::Variables:
         add(tr("&Import Variable Names to Pluto..."),
-            [this, document, page] { importCsv(document, page.station); });
+            [this, document, page] { m_units->importCsv(document, page.station); });
         add(tr("E&xport Variable Names from Pluto..."),
-            [this, document, page] { exportCsv(document, page.station); });
+            [this, document, page] { m_units->exportCsv(document, page.station); });
         if (project::unitTypeOf(document->project(), page.station).remanent)
             add(tr("&Remanent Variables..."),
-                [this, document, page] { editRemanent(document, page.station); });
+                [this, document, page] { m_units->editRemanent(document, page.station); });
         break;
     case PageRef::Kind::Unit:
     case PageRef::Kind::IoOptions:
     case PageRef::Kind::Code:
     case PageRef::Kind::Ladder:
         add(tr("New &Sequence..."),
-            [this, document, page] { newSequence(document, page.station); });
+            [this, document, page] { m_units->newSequence(document, page.station); });
         menu.addSeparator();
-        add(tr("&Remove Pluto..."), [this, document, page] { removeUnit(document, page.station); });
+        add(tr("&Remove Pluto..."),
+            [this, document, page] { m_units->removeUnit(document, page.station); });
         break;
     }
     menu.exec(globalPosition);
@@ -1046,85 +657,15 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
 
 // ----- compiling
 
-bool MainWindow::isCompiling() const {
-    return m_compileRunning;
-}
-
 void MainWindow::compile() {
-    ProjectDocument* document = currentDocument();
-    if (!document || isCompiling())
-        return;
-    if (m_textPage->document() == document)
-        m_textPage->applyNow();
-    m_compiling = document;
-    m_compileRunning = true;
-    m_compiledText = document->isDamaged() ? document->damagedText().toStdString()
-                                           : project::writeProject(document->project());
     compiler::CheckOptions options;
     options.warnUnconfiguredIo = m_preferences.warnUnconfiguredIo;
-    m_output->showRunning(document->displayName());
-    m_outputDock->show();
-    m_outputDock->raise();
-    m_progress->show();
-    statusBar()->showMessage(tr("Compiling %1...").arg(document->displayName()));
-    // The image goes beside a project that has a file of its own; it is made
-    // and written on the worker too, as a large one takes a while.
-    QString imagePath;
-    if (!document->path().isEmpty() && !document->path().startsWith(QLatin1Char(':'))) {
-        const QFileInfo info(document->path());
-        imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
-    }
-    m_compileWatcher.setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath] {
-        Compiled compiled{compiler::compileText(text, options), {}, {}};
-        if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
-            try {
-                compiled.imageError =
-                    project::writeTextFile(imagePath, compiler::writeHps(compiled.result.images));
-            } catch (const std::exception& e) {
-                // An image the Intel HEX writer refuses (issue 13): said, not a crash.
-                compiled.imageError = QString::fromUtf8(e.what());
-            }
-            if (compiled.imageError.isEmpty())
-                compiled.imagePath = imagePath;
-        }
-        return compiled;
-    }));
-    updateActions();
-}
-
-void MainWindow::compileFinished() {
-    m_compileRunning = false;
-    m_progress->hide();
-    const Compiled compiled = m_compileWatcher.result();
-    const compiler::CompileResult& result = compiled.result;
-    ProjectDocument* document = m_compiling;
-    const QString written = QDir::toNativeSeparators(compiled.imagePath);
-    m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
-                         written, compiled.imageError);
-    if (!compiled.imageError.isEmpty())
-        QMessageBox::warning(this, tr("Compile"), compiled.imageError);
-    if (document && m_ladderPage->document() == document) {
-        // The ladder marks the elements the diagnostics of its unit concern.
-        lang::Diagnostics onLadder;
-        for (lang::Diagnostic diagnostic : result.diagnostics) {
-            const project::TextPlace place = project::placeOfLine(m_compiledText, diagnostic.line);
-            if (place.kind != project::TextPlace::Kind::UnitCode ||
-                place.station != m_ladderPage->station())
-                continue;
-            diagnostic.line = place.line;
-            onLadder.push_back(diagnostic);
-        }
-        m_ladderPage->setDiagnostics(onLadder);
-    }
-    if (document && result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
-        showMessage(tr("Compiled without errors. Save the project to write the compiled file."));
-    else
-        statusBar()->showMessage(m_output->closingLine(), kStatusMessageMs);
-    updateActions();
+    m_compileRun->start(currentDocument(), options);
 }
 
 void MainWindow::showCompilePlace(const project::TextPlace& place, int column) {
-    ProjectDocument* document = m_compiling ? m_compiling.data() : currentDocument();
+    ProjectDocument* document =
+        m_compileRun->document() ? m_compileRun->document() : currentDocument();
     if (!document)
         return;
     using Kind = project::TextPlace::Kind;
@@ -1148,65 +689,9 @@ void MainWindow::showCompilePlace(const project::TextPlace& place, int column) {
     }
 }
 
-// ----- autosave
-
-void MainWindow::autosaveNow() {
-    for (ProjectDocument* document : m_documents) {
-        if (!document->isModified())
-            continue;
-        if (m_textPage->document() == document)
-            m_textPage->applyNow();
-        const QString error = Autosave::write(*document);
-        if (!error.isEmpty())
-            statusBar()->showMessage(tr("Autosave failed: %1").arg(error), kStatusMessageMs);
-    }
-}
-
-int MainWindow::recoverAutosaved() {
-    const QList<Autosave::Copy> copies = Autosave::copies();
-    if (copies.isEmpty())
-        return 0;
-    QStringList names;
-    for (const auto& copy : copies)
-        names << QStringLiteral("%1 (%2)").arg(
-            copy.displayName, QLocale().toString(copy.written, QLocale::ShortFormat));
-    QMessageBox box(QMessageBox::Question, tr("Recover Projects"),
-                    tr("Rungsmith was not closed properly. These projects have changes that were "
-                       "saved automatically:"),
-                    QMessageBox::NoButton, this);
-    box.setInformativeText(names.join(QLatin1Char('\n')));
-    QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
-    box.setDefaultButton(recover);
-    QAbstractButton* discard = box.addButton(QMessageBox::Discard);
-    box.exec();
-    if (box.clickedButton() == discard) {
-        for (const auto& copy : copies)
-            Autosave::remove(copy.id);
-        return 0;
-    }
-    if (box.clickedButton() != recover) // closed without an answer: ask again next time
-        return 0;
-    int recovered = 0;
-    for (const auto& copy : copies) {
-        const project::FileText file = project::readTextFile(copy.copyPath);
-        if (!file.error.isEmpty())
-            continue;
-        ProjectDocument* document =
-            ProjectDocument::fromText(QByteArray::fromStdString(file.text), this);
-        document->setAutosaveId(copy.id);
-        if (!copy.path.isEmpty())
-            document->setPath(copy.path);
-        document->setModifiedWithoutUndo(true);
-        addDocument(document);
-        showFirstPageOf(document);
-        ++recovered;
-    }
-    return recovered;
-}
-
 // ----- the rest
 
-void MainWindow::showSummary(const lang::Diagnostics& diagnostics) {
+void MainWindow::showSummary(const std::vector<lang::Diagnostic>& diagnostics) {
     const int errors = lang::errorCount(diagnostics);
     const int warnings = static_cast<int>(diagnostics.size()) - errors;
     m_summary->setText(tr("%n error(s)", nullptr, errors) + QStringLiteral(", ") +
@@ -1228,24 +713,6 @@ void MainWindow::about() {
                  QStringLiteral(QSCINTILLA_VERSION_STR)));
 }
 
-void MainWindow::fillRecentMenu() {
-    m_recentMenu->clear();
-    const QStringList paths = m_recentFiles.paths();
-    for (int i = 0; i < paths.size(); ++i) {
-        const QString shown =
-            fontMetrics().elidedText(QDir::toNativeSeparators(paths[i]), Qt::ElideMiddle, 480);
-        QAction* entry = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(
-            QString(shown).replace(QLatin1Char('&'), QStringLiteral("&&"))));
-        entry->setStatusTip(paths[i]);
-        connect(entry, &QAction::triggered, this, [this, path = paths[i]] { openFile(path); });
-    }
-    if (!paths.isEmpty()) {
-        m_recentMenu->addSeparator();
-        m_recentMenu->addAction(tr("&Clear Menu"), this, [this] { m_recentFiles.clear(); });
-    }
-    m_recentMenu->menuAction()->setEnabled(!paths.isEmpty());
-}
-
 void MainWindow::restoreLayout() {
     const QSettings settings;
     if (settings.contains(kGeometryKey))
@@ -1258,14 +725,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         event->ignore();
         return;
     }
-    for (ProjectDocument* document : m_documents) {
-        if (!maybeSave(document)) {
-            event->ignore();
-            return;
-        }
+    if (!m_projects->prepareToQuit()) {
+        event->ignore();
+        return;
     }
-    for (ProjectDocument* document : m_documents)
-        Autosave::remove(document->autosaveId());
     QSettings settings;
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());

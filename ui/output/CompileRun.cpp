@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "output/CompileRun.h"
+
+#include "compiler/Compiler.h"
+#include "compiler/ImageCodec.h"
+#include "document/ProjectDocument.h"
+#include "document/ProjectPaths.h"
+#include "ladder/LadderPage.h"
+#include "output/CompileOutput.h"
+#include "project/ProjectFile.h"
+#include "project/TextPlace.h"
+#include "text/TextPage.h"
+
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace rs::ui {
+
+// What the worker gives back: the findings, and the image written beside the
+// project (its path; or why it could not be).
+struct CompileRun::Compiled {
+    compiler::CompileResult result;
+    QString imagePath;
+    QString imageError;
+};
+
+CompileRun::CompileRun(QMainWindow* window, CompileOutput* output, QDockWidget* outputDock,
+                       TextPage* textPage, LadderPage* ladderPage)
+    : QObject(window), m_window(window), m_output(output), m_outputDock(outputDock),
+      m_textPage(textPage), m_ladderPage(ladderPage), m_progress(new QProgressBar(window)),
+      m_watcher(std::make_unique<QFutureWatcher<Compiled>>()) {
+    m_progress->setObjectName(QStringLiteral("compileProgress"));
+    m_progress->setRange(0, 0); // the compiler reports no steps: busy, not a percentage
+    m_progress->setMaximumWidth(140);
+    m_progress->setFormat(tr("Compiling"));
+    m_progress->hide();
+    connect(m_watcher.get(), &QFutureWatcher<Compiled>::finished, this, &CompileRun::finish);
+}
+
+CompileRun::~CompileRun() {
+    m_watcher->waitForFinished();
+}
+
+ProjectDocument* CompileRun::document() const {
+    return m_document;
+}
+
+void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& options) {
+    if (!document || isRunning())
+        return;
+    if (m_textPage->document() == document)
+        m_textPage->applyNow();
+    m_document = document;
+    m_running = true;
+    m_compiledText = document->isDamaged() ? document->damagedText().toStdString()
+                                           : project::writeProject(document->project());
+    m_output->showRunning(document->displayName());
+    m_outputDock->show();
+    m_outputDock->raise();
+    m_progress->show();
+    m_window->statusBar()->showMessage(tr("Compiling %1...").arg(document->displayName()));
+    // The image goes beside a project that has a file of its own; it is made
+    // and written on the worker too, as a large one takes a while.
+    QString imagePath;
+    if (hasOwnFile(*document)) {
+        const QFileInfo info(document->path());
+        imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
+    }
+    m_watcher->setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath] {
+        Compiled compiled{compiler::compileText(text, options), {}, {}};
+        if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
+            try {
+                compiled.imageError =
+                    project::writeTextFile(imagePath, compiler::writeHps(compiled.result.images));
+            } catch (const std::exception& e) {
+                // An image the Intel HEX writer refuses (issue 13): said, not a crash.
+                compiled.imageError = QString::fromUtf8(e.what());
+            }
+            if (compiled.imageError.isEmpty())
+                compiled.imagePath = imagePath;
+        }
+        return compiled;
+    }));
+    emit runningChanged();
+}
+
+void CompileRun::finish() {
+    m_running = false;
+    m_progress->hide();
+    const Compiled compiled = m_watcher->result();
+    const compiler::CompileResult& result = compiled.result;
+    ProjectDocument* document = m_document;
+    const QString written = QDir::toNativeSeparators(compiled.imagePath);
+    m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
+                         written, compiled.imageError);
+    if (!compiled.imageError.isEmpty())
+        QMessageBox::warning(m_window, tr("Compile"), compiled.imageError);
+    if (document && m_ladderPage->document() == document) {
+        // The ladder marks the elements the diagnostics of its unit concern.
+        lang::Diagnostics onLadder;
+        for (lang::Diagnostic diagnostic : result.diagnostics) {
+            const project::TextPlace place = project::placeOfLine(m_compiledText, diagnostic.line);
+            if (place.kind != project::TextPlace::Kind::UnitCode ||
+                place.station != m_ladderPage->station())
+                continue;
+            diagnostic.line = place.line;
+            onLadder.push_back(diagnostic);
+        }
+        m_ladderPage->setDiagnostics(onLadder);
+    }
+    if (document && result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
+        emit message(tr("Compiled without errors. Save the project to write the compiled file."));
+    else
+        emit message(m_output->closingLine());
+    emit runningChanged();
+}
+
+} // namespace rs::ui

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+
+#include <memory>
+#include <string>
+
+class QDockWidget;
+class QMainWindow;
+class QProgressBar;
+template <typename T> class QFutureWatcher;
+
+namespace rs::compiler {
+struct CheckOptions;
+}
+
+namespace rs::ui {
+
+class CompileOutput;
+class LadderPage;
+class ProjectDocument;
+class TextPage;
+
+// Build > Compile: one compile at a time, off the window's thread. The
+// project's text is taken as it is when the compile starts (with the text
+// page's typing read in), checked and compiled on a worker, which also writes
+// the image (.hps) beside a project that has a file of its own. Meanwhile a
+// busy bar shows in the status bar; then the Output dock shows the result and
+// the ladder page marks the elements that the diagnostics of its unit concern.
+class CompileRun : public QObject {
+    Q_OBJECT
+public:
+    CompileRun(QMainWindow* window, CompileOutput* output, QDockWidget* outputDock,
+               TextPage* textPage, LadderPage* ladderPage);
+    // Waits for a compile still running.
+    ~CompileRun() override;
+
+    // Starts compiling the project; nothing while a compile runs.
+    void start(ProjectDocument* document, const compiler::CheckOptions& options);
+    // From start until the result is shown.
+    bool isRunning() const { return m_running; }
+    // The project compiled last, whose places the Output dock lists; null once closed.
+    ProjectDocument* document() const;
+    // The status bar's busy bar, shown while a compile runs.
+    QProgressBar* progressBar() const { return m_progress; }
+
+signals:
+    // A compile started, or its result is shown.
+    void runningChanged();
+    // A line for the status bar.
+    void message(const QString& message);
+
+private:
+    struct Compiled;
+    void finish();
+
+    QMainWindow* m_window;
+    CompileOutput* m_output;
+    QDockWidget* m_outputDock;
+    TextPage* m_textPage;
+    LadderPage* m_ladderPage;
+    QProgressBar* m_progress;
+    std::unique_ptr<QFutureWatcher<Compiled>> m_watcher;
+    QPointer<ProjectDocument> m_document;
+    bool m_running = false;
+    std::string m_compiledText;
+};
+
+} // namespace rs::ui
