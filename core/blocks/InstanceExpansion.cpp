@@ -171,6 +171,7 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
     std::vector<std::string> firstScan;               // lines put before the body
 
     // A private variable: the recorded one, or a new one.
+    bool exhausted = false;
     auto privateOperand = [&](const std::string& recordName,
                               PrivateKind kind) -> std::optional<std::string> {
         if (const Binding* recorded = instance.findPrivate(recordName)) {
@@ -182,10 +183,13 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
             }
             return recorded->operand;
         }
+        if (exhausted)
+            return std::nullopt; // said once
         const std::optional<lang::Address> address = take(variables, kind);
         if (!address) {
             error("unit " + std::to_string(station) + " has no free " + std::string(wordOf(kind)) +
                   " left for the instance's " + recordName);
+            exhausted = true;
             return std::nullopt;
         }
         const std::string operand = lang::toString(*address);
