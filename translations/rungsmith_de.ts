@@ -1688,6 +1688,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
 <context>
     <name>rs::ui::ProjectDocument</name>
     <message>
+        <source>Expand Block Instances</source>
+        <translation>Bausteininstanzen expandieren</translation>
+    </message>
+    <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>

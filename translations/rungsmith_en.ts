@@ -1687,6 +1687,10 @@ Its text page (F6) shows and edits it.</source>
 <context>
     <name>rs::ui::ProjectDocument</name>
     <message>
+        <source>Expand Block Instances</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Untitled</source>
         <translation type="unfinished"></translation>
     </message>

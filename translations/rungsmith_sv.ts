@@ -1688,6 +1688,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
 <context>
     <name>rs::ui::ProjectDocument</name>
     <message>
+        <source>Expand Block Instances</source>
+        <translation>Expandera blockinstanser</translation>
+    </message>
+    <message>
         <source>Untitled</source>
         <translation>Namnlöst</translation>
     </message>

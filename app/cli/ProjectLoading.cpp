@@ -30,9 +30,8 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
         loaded.status = UsageOrIo;
         return loaded;
     }
-    const blocks::LibrarySet libraries = blocks::loadLibraries(
-        blocks::standardLibraryFolders(QCoreApplication::applicationDirPath()),
-        QFileInfo(path).absolutePath(), libraryFiles);
+    const blocks::LibrarySet libraries =
+        blocks::librariesFor(QCoreApplication::applicationDirPath(), path, libraryFiles);
     for (const auto& problem : libraries.problems) {
         if (!problem.readError.isEmpty()) {
             std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(problem.readError));

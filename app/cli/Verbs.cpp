@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Verbs.h"
 
+#include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
 #include "compiler/ImageCodec.h"
 #include "project/ProjectFile.h"
@@ -65,20 +66,7 @@ int runFormat(const QString& path, const QStringList& libraryFiles, Streams stre
 
 compiler::CompileResult compiled(const LoadedProject& loaded,
                                  const compiler::CheckOptions& options) {
-    if (!loaded.ok())
-        return {loaded.diagnostics, {}};
-    compiler::CompileResult result = compiler::compile(loaded.project, options);
-    result.diagnostics.insert(result.diagnostics.begin(), loaded.diagnostics.begin(),
-                              loaded.diagnostics.end());
-    lang::sortByPlace(result.diagnostics);
-    // An image records the lines of the text it was made from, and holds the
-    // canonical text: once expansions were written in, those are the lines
-    // of the canonical text, so the file as `format` writes it compiles to
-    // the same image.
-    if (loaded.expanded && !result.errors())
-        result.images =
-            compiler::compileText(project::writeProject(loaded.project), options).images;
-    return result;
+    return blocks::compileProject(loaded.project, loaded.diagnostics, loaded.expanded, options);
 }
 
 } // namespace rs::cli

@@ -8,6 +8,8 @@
 #include "lang/NameResolver.h"
 #include "target/UnitType.h"
 
+#include <QFileInfo>
+
 #include <algorithm>
 
 namespace rs::blocks {
@@ -152,6 +154,27 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
     lang::sortByPlace(read.diagnostics);
     result.expanded = expansion.expanded > 0;
     return result;
+}
+
+compiler::CompileResult compileProject(const project::Project& project,
+                                       const lang::Diagnostics& readDiagnostics, bool expanded,
+                                       const compiler::CheckOptions& options) {
+    if (lang::errorCount(readDiagnostics) > 0)
+        return {readDiagnostics, {}};
+    compiler::CompileResult result = compiler::compile(project, options);
+    result.diagnostics.insert(result.diagnostics.begin(), readDiagnostics.begin(),
+                              readDiagnostics.end());
+    lang::sortByPlace(result.diagnostics);
+    if (expanded && !result.errors())
+        result.images = compiler::compileText(project::writeProject(project), options).images;
+    return result;
+}
+
+LibrarySet librariesFor(const QString& executableDir, const QString& projectPath,
+                        const QStringList& userFiles) {
+    return loadLibraries(standardLibraryFolders(executableDir),
+                         projectPath.isEmpty() ? QString() : QFileInfo(projectPath).absolutePath(),
+                         userFiles);
 }
 
 } // namespace rs::blocks

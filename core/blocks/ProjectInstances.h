@@ -2,6 +2,7 @@
 #pragma once
 
 #include "LibrarySearch.h"
+#include "compiler/Compiler.h"
 #include "lang/Ast.h"
 #include "lang/Diagnostic.h"
 #include "project/ProjectFile.h"
@@ -34,5 +35,19 @@ struct ProjectWithInstances {
     bool expanded = false; // the project is no longer the text: it holds expansions
 };
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibrarySet& libraries);
+
+// Compiles a project read with its instances: the reading's diagnostics
+// first, then the compiler's, by place. An image records the lines of the
+// text it was made from and holds the canonical text; once expansions were
+// written in, the images are made from the canonical text, so the file as
+// `format` writes it compiles to the same image.
+compiler::CompileResult compileProject(const project::Project& project,
+                                       const lang::Diagnostics& readDiagnostics, bool expanded,
+                                       const compiler::CheckOptions& options = {});
+
+// The libraries a project at `projectPath` sees: the standard ones of the
+// program in `executableDir`, the project folder's, and `userFiles`.
+LibrarySet librariesFor(const QString& executableDir, const QString& projectPath,
+                        const QStringList& userFiles = {});
 
 } // namespace rs::blocks

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "document/ProjectDocument.h"
 
+#include "blocks/ProjectInstances.h"
 #include "document/ProjectCommand.h"
 #include "project/ProjectFile.h"
+
+#include <QCoreApplication>
 
 #include <QFileInfo>
 #include <QUuid>
@@ -47,6 +50,16 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
     }
     ProjectDocument* document = fromText(QByteArray::fromStdString(file.text), parent);
     document->m_path = QFileInfo(path).absoluteFilePath();
+    if (!document->isDamaged()) {
+        // Instances written without their statements get them now, as one
+        // undoable edit, so the project shows them and saving writes them.
+        project::Project expanded = document->project();
+        const blocks::InstanceExpansion expansion = blocks::expandInstances(
+            expanded.program,
+            blocks::librariesFor(QCoreApplication::applicationDirPath(), document->m_path));
+        if (expansion.expanded > 0)
+            document->replace(tr("Expand Block Instances"), expanded);
+    }
     return document;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "output/CompileRun.h"
 
+#include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
 #include "compiler/ImageCodec.h"
 #include "document/ProjectDocument.h"
@@ -11,6 +12,7 @@
 #include "project/TextPlace.h"
 #include "text/TextPage.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -73,8 +75,14 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
         const QFileInfo info(document->path());
         imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
     }
-    m_watcher->setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath] {
-        Compiled compiled{compiler::compileText(text, options), {}, {}};
+    m_watcher->setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath,
+                                            projectPath = document->path()] {
+        const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
+            text, blocks::librariesFor(QCoreApplication::applicationDirPath(), projectPath));
+        Compiled compiled{blocks::compileProject(read.read.project, read.read.diagnostics,
+                                                 read.expanded, options),
+                          {},
+                          {}};
         if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
             try {
                 compiled.imageError =
