@@ -143,19 +143,53 @@ void placeAt(lang::Line& line, lang::SourceLocation at) {
 
 } // namespace
 
+UnitFrame::UnitFrame(const lang::Document& document, int station)
+    : m_station(station), m_names(unitNames(document, station)) {
+    // What name resolution needs: the declarations (types for the rules of
+    // names, the names themselves), without the code.
+    for (const auto& line : document.preamble)
+        if (std::holds_alternative<lang::Declaration>(line.body))
+            m_frame.preamble.push_back(line);
+    lang::UnitProgram unit;
+    for (const auto& existing : document.units)
+        if (existing.station() == station)
+            unit.declarations = existing.declarations;
+    unit.header.body = lang::Declaration{lang::ProgramDeclaration{station}, {}};
+    m_frame.units.push_back(std::move(unit));
+    m_head = "! pgm_pluto:" + std::string(station < 10 ? "0" : "") + std::to_string(station) +
+             "\n" + lang::toString(lang::StepAddress{station, 0, 0}) + "\n";
+}
+
+std::vector<lang::Line> UnitFrame::read(const std::string& body, lang::Diagnostics& problems) {
+    lang::ParseResult parsed = lang::parse(m_head + body);
+    problems = std::move(parsed.diagnostics);
+    if (lang::errorCount(problems) > 0 || parsed.document.units.empty())
+        return {};
+    auto& steps = m_frame.units.front().steps;
+    steps = std::move(parsed.document.units.front().steps);
+    const lang::Diagnostics resolved = lang::resolveNames(m_frame);
+    problems.insert(problems.end(), resolved.begin(), resolved.end());
+    std::vector<lang::Line> lines;
+    if (!steps.empty())
+        lines = std::move(steps.front().lines);
+    steps.clear();
+    return lines;
+}
+
 std::string standInName(const Pin& pin) {
     return "pin." + pin.name;
 }
 
-Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
-                         const lang::Document& document, int station, PrivateVariables& variables) {
+Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, UnitFrame& frame,
+                         PrivateVariables& variables) {
+    const int station = frame.station();
     Expansion expansion;
     const lang::SourceLocation at = instance.location;
     auto error = [&](std::string message) {
         expansion.diagnostics.push_back(
             {lang::Severity::Error, at.line, at.column, block.name + ": " + std::move(message)});
     };
-    const auto names = unitNames(document, station);
+    const auto& names = frame.names();
 
     for (const auto& binding : instance.pins)
         if (!block.findPin(binding.name)) {
@@ -245,31 +279,14 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
         body += substituted.text + "\n";
     }
 
-    // Read with the unit's names around it, as any code of the unit.
-    lang::Document frame;
-    frame.preamble = document.preamble;
-    lang::UnitProgram unit;
-    for (const auto& existing : document.units)
-        if (existing.station() == station)
-            unit.declarations = existing.declarations;
-    unit.header.body = lang::Declaration{lang::ProgramDeclaration{station}, {}};
-    frame.units.push_back(std::move(unit));
-    const std::string text =
-        lang::print(frame) + lang::toString(lang::StepAddress{station, 0, 0}) + "\n" + body;
-    lang::ParseResult parsed = lang::parse(text);
-    lang::Diagnostics problems = parsed.diagnostics;
-    if (lang::errorCount(problems) == 0) {
-        const lang::Diagnostics resolved = lang::resolveNames(parsed.document);
-        problems.insert(problems.end(), resolved.begin(), resolved.end());
-    }
+    lang::Diagnostics problems;
+    std::vector<lang::Line> lines = frame.read(body, problems);
     for (const auto& problem : problems)
         if (problem.severity == lang::Severity::Error) {
             error("its statements do not read with these operands: " + problem.message);
             return expansion;
         }
-    if (parsed.document.units.empty() || parsed.document.units.back().steps.empty())
-        return expansion;
-    for (auto& line : parsed.document.units.back().steps.back().lines) {
+    for (auto& line : lines) {
         placeAt(line, at);
         expansion.lines.push_back(std::move(line));
     }

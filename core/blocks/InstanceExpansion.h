@@ -7,6 +7,7 @@
 #include "lang/Ast.h"
 #include "lang/Diagnostic.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,24 @@
 // An input without a default must be bound.
 namespace rs::blocks {
 
+// The unit an instance stands in, as its statements are read: its names
+// (and the project's global ones), made once for all instances of the unit.
+class UnitFrame {
+public:
+    UnitFrame(const lang::Document& document, int station);
+
+    int station() const { return m_station; }
+    const std::map<std::string, lang::Address>& names() const { return m_names; }
+    // Statements read as code of the unit, names resolved; problems in `problems`.
+    std::vector<lang::Line> read(const std::string& body, lang::Diagnostics& problems);
+
+private:
+    int m_station;
+    std::map<std::string, lang::Address> m_names;
+    lang::Document m_frame; // the unit's declarations; the statements come and go
+    std::string m_head;     // its program header and a step
+};
+
 // The name under which a private variable standing in for an unbound pin is
 // recorded: "#pin.Fault".
 std::string standInName(const Pin& pin);
@@ -38,7 +57,7 @@ struct Expansion {
 // beforehand (so that no other instance gets them); those it lacks are
 // taken now and added to `instance.privates`. A shortage, an unknown pin, an
 // operand of a kind the pin does not take or an input left open is an error.
-Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance,
-                         const lang::Document& document, int station, PrivateVariables& variables);
+Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, UnitFrame& frame,
+                         PrivateVariables& variables);
 
 } // namespace rs::blocks

@@ -11,6 +11,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <numeric>
 
 namespace rs::blocks {
 
@@ -85,6 +86,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
                     variables.take(word.address);
             }
 
+        UnitFrame frame(document, station);
         std::vector<Pending> pending;
         for (auto& [step, instance] : instances) {
             const BlockDefinition* block = definitionOf(instance, libraries);
@@ -101,7 +103,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
                 }
                 BlockInstance again = instance;
                 PrivateVariables spare = variables; // what the check takes is not kept
-                const Expansion expected = expandInstance(*block, again, document, station, spare);
+                const Expansion expected = expandInstance(*block, again, frame, spare);
                 const auto first = step->lines.begin() + std::ptrdiff_t(instance.record + 1);
                 const auto last = step->lines.begin() + std::ptrdiff_t(instance.end);
                 if (!expected.ok() || meaningful(first, last) != expected.lines)
@@ -120,7 +122,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
                                                    : " in library '" + instance.library + "'")});
                 continue;
             }
-            Expansion expansion = expandInstance(*block, instance, document, station, variables);
+            Expansion expansion = expandInstance(*block, instance, frame, variables);
             diagnostics.insert(diagnostics.end(), expansion.diagnostics.begin(),
                                expansion.diagnostics.end());
             if (!expansion.ok())
@@ -129,15 +131,32 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
             instance.version = block->version;
             pending.push_back({step, std::move(instance), std::move(expansion.lines)});
         }
-        // Last first, so that the places of the earlier ones in their step stay.
-        for (auto it = pending.rbegin(); it != pending.rend(); ++it) {
-            auto& lines = it->step->lines;
-            std::get<lang::CommentLine>(lines[it->instance.record].body).text =
-                recordText(it->instance);
-            lines.insert(lines.begin() + std::ptrdiff_t(it->instance.end),
-                         std::make_move_iterator(it->lines.begin()),
-                         std::make_move_iterator(it->lines.end()));
-            ++result.expanded;
+        // Each step is written once, its expansions in place: inserting them
+        // one by one would move the lines after them again for every instance.
+        for (auto first = pending.begin(); first != pending.end();) {
+            lang::Step* step = first->step;
+            const auto last = std::find_if(first, pending.end(),
+                                           [&](const Pending& p) { return p.step != step; });
+            std::vector<lang::Line> lines;
+            lines.reserve(step->lines.size() + std::accumulate(first, last, std::size_t{0},
+                                                               [](std::size_t n, const Pending& p) {
+                                                                   return n + p.lines.size();
+                                                               }));
+            auto next = first;
+            for (std::size_t i = 0; i < step->lines.size(); ++i) {
+                if (next != last && i == next->instance.end) {
+                    lines.insert(lines.end(), std::make_move_iterator(next->lines.begin()),
+                                 std::make_move_iterator(next->lines.end()));
+                    ++next;
+                    ++result.expanded;
+                }
+                lines.push_back(std::move(step->lines[i]));
+                if (next != last && i == next->instance.record)
+                    std::get<lang::CommentLine>(lines.back().body).text =
+                        recordText(next->instance);
+            }
+            step->lines = std::move(lines);
+            first = last;
         }
     }
     return result;
