@@ -2,6 +2,7 @@
 #include "BlockInstance.h"
 
 #include "BlockLibrary.h"
+#include "BodyTemplate.h"
 #include "project/Annotation.h"
 
 #include <variant>
@@ -39,12 +40,22 @@ const Binding* BlockInstance::findPrivate(std::string_view name) const {
     return findBinding(privates, name);
 }
 
-std::optional<BlockInstance> instanceOf(const project::Annotation& record, lang::SourceLocation at,
-                                        lang::Diagnostics& diagnostics) {
+std::optional<BlockInstance> instanceOf(const project::Annotation& record, std::string_view text,
+                                        lang::SourceLocation at, lang::Diagnostics& diagnostics) {
     if (record.kind != kBlockRecord)
         return std::nullopt;
-    auto error = [&](std::string message) {
-        diagnostics.push_back({lang::Severity::Error, at.line, at.column, std::move(message)});
+    auto error = [&](std::string message, int column = 0) {
+        diagnostics.push_back(
+            {lang::Severity::Error, at.line, column ? column : at.column, std::move(message)});
+    };
+    // The column of each key in turn: keys stand in the text in their order.
+    std::size_t searched = 0;
+    auto columnOf = [&](const std::string& key) {
+        const std::size_t found = text.find(" " + key + "=", searched);
+        if (found == std::string_view::npos)
+            return 0;
+        searched = found + key.size() + 2;
+        return at.column + characterColumn(text, found + 1);
     };
     if (record.arguments.size() != 1) {
         error(record.arguments.empty()
@@ -57,6 +68,7 @@ std::optional<BlockInstance> instanceOf(const project::Annotation& record, lang:
     instance.location = at;
     bool good = true;
     for (const auto& [key, value] : record.attributes) {
+        const int column = columnOf(key);
         if (key == "lib") {
             instance.library = value;
         } else if (key == "version") {
@@ -65,18 +77,19 @@ std::optional<BlockInstance> instanceOf(const project::Annotation& record, lang:
             const std::string name = key.substr(1);
             if (name.empty() || instance.findPrivate(name)) {
                 error("@block " + instance.type + ": private variable '" + key +
-                      (name.empty() ? "' has no name" : "' is given twice"));
+                          (name.empty() ? "' has no name" : "' is given twice"),
+                      column);
                 good = false;
                 continue;
             }
-            instance.privates.push_back({name, value});
+            instance.privates.push_back({name, value, column});
         } else {
             if (instance.findPin(key)) {
-                error("@block " + instance.type + ": pin '" + key + "' is bound twice");
+                error("@block " + instance.type + ": pin '" + key + "' is bound twice", column);
                 good = false;
                 continue;
             }
-            instance.pins.push_back({key, value});
+            instance.pins.push_back({key, value, column});
         }
     }
     if (!good)
@@ -126,7 +139,8 @@ StepInstances findInstances(const lang::Step& step) {
                                           "cannot hold another");
                 open.reset();
             }
-            open = instanceOf(*record, line.location, found.diagnostics);
+            open = instanceOf(*record, std::get<lang::CommentLine>(line.body).text, line.location,
+                              found.diagnostics);
             if (open)
                 open->record = i;
         } else if (open && record->kind == "network") {

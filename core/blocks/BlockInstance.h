@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rs::project {
@@ -27,6 +28,7 @@ inline constexpr const char* kEndRecord = "end";
 struct Binding {
     std::string name;    // a pin, or a private variable without its '#'
     std::string operand; // as written
+    int column = 0;      // of the name in the record's line; 0 when not read from one
 };
 
 struct BlockInstance {

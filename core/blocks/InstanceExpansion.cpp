@@ -185,9 +185,10 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
     const int station = frame.station();
     Expansion expansion;
     const lang::SourceLocation at = instance.location;
-    auto error = [&](std::string message) {
-        expansion.diagnostics.push_back(
-            {lang::Severity::Error, at.line, at.column, block.name + ": " + std::move(message)});
+    auto error = [&](std::string message, int column = 0) {
+        expansion.diagnostics.push_back({lang::Severity::Error, at.line,
+                                         column ? column : at.column,
+                                         block.name + ": " + std::move(message)});
     };
     const auto& names = frame.names();
 
@@ -196,7 +197,7 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
             std::string pins;
             for (const auto& pin : block.pins)
                 pins += (pins.empty() ? "" : ", ") + pin.name;
-            error("no pin '" + binding.name + "'; its pins are " + pins);
+            error("no pin '" + binding.name + "'; its pins are " + pins, binding.column);
         }
 
     // What each placeholder is replaced with.
@@ -212,7 +213,8 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
             const lang::AddressWord word = lang::readAddressWord(recorded->operand);
             if (word.shape != lang::AddressWord::Shape::Variable || word.address.unit != station) {
                 error("#" + recordName + "=\"" + recorded->operand + "\" is no variable of unit " +
-                      std::to_string(station));
+                          std::to_string(station),
+                      recorded->column);
                 return std::nullopt;
             }
             return recorded->operand;
@@ -235,7 +237,7 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
         if (const Binding* bound = instance.findPin(pin.name)) {
             if (const std::string problem = bindingProblem(pin, bound->operand, names, station);
                 !problem.empty())
-                error(problem);
+                error(problem, bound->column);
             pinValues[pin.name] = bound->operand;
             continue;
         }

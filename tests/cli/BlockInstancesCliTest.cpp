@@ -61,7 +61,7 @@ TEST(BlockInstancesCli, ABadCallIsAnErrorAtItsRecordAndNothingIsWritten) {
     const auto check = runCli({"check", path, "--no-io-warnings"});
     EXPECT_EQ(check.exitCode, 1);
     EXPECT_TRUE(check.errText().contains(
-        path + ":7:1: error: EquivalentInputs: no pin 'Chanel2'; its pins are Channel1, "
+        path + ":7:44: error: EquivalentInputs: no pin 'Chanel2'; its pins are Channel1, "
                "Channel2, DiscrepancyTime, Out, Fault\n"))
         << check.err.toStdString();
     EXPECT_TRUE(check.errText().contains(

@@ -70,7 +70,7 @@ TEST_F(BlockInstancesTest, ABadCallIsACompileErrorAtItsRecordAndTheRecordIsKept)
         const QTreeWidgetItem* item = output->topLevelItem(i);
         if (item->text(1).contains(QStringLiteral("pin Out takes"))) {
             found = true;
-            EXPECT_EQ(item->text(0), QStringLiteral("Pluto 0, line 3:1")) << item->text(1).toStdString();
+            EXPECT_EQ(item->text(0), QStringLiteral("Pluto 0, line 3:62")) << item->text(1).toStdString();
         }
     }
     EXPECT_TRUE(found);
