@@ -30,9 +30,9 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
         loaded.status = UsageOrIo;
         return loaded;
     }
-    const blocks::LibrarySet libraries =
-        blocks::librariesFor(QCoreApplication::applicationDirPath(), path, libraryFiles);
-    for (const auto& problem : libraries.problems) {
+    blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
+        file.text, {QCoreApplication::applicationDirPath(), path, libraryFiles});
+    for (const auto& problem : read.libraryProblems) {
         if (!problem.readError.isEmpty()) {
             std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(problem.readError));
             loaded.status = UsageOrIo;
@@ -41,7 +41,6 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
     }
     if (loaded.status != Ok)
         return loaded;
-    blocks::ProjectWithInstances read = blocks::readProjectWithInstances(file.text, libraries);
     loaded.project = std::move(read.read.project);
     loaded.diagnostics = std::move(read.read.diagnostics);
     loaded.expanded = read.expanded;

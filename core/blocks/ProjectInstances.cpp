@@ -8,6 +8,7 @@
 #include "lang/NameResolver.h"
 #include "target/UnitType.h"
 
+#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>
@@ -163,7 +164,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
 }
 
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibrarySet& libraries) {
-    ProjectWithInstances result{project::readProject(text), false};
+    ProjectWithInstances result{project::readProject(text), false, {}};
     project::ProjectReadResult& read = result.read;
     if (!read.ok())
         return result;
@@ -189,11 +190,50 @@ compiler::CompileResult compileProject(const project::Project& project,
     return result;
 }
 
-LibrarySet librariesFor(const QString& executableDir, const QString& projectPath,
-                        const QStringList& userFiles) {
-    return loadLibraries(standardLibraryFolders(executableDir),
-                         projectPath.isEmpty() ? QString() : QFileInfo(projectPath).absolutePath(),
-                         userFiles);
+LibrarySet librariesFor(const LibraryPlaces& places,
+                        const std::vector<std::string>& projectLibraries) {
+    const QString projectFolder =
+        places.projectPath.isEmpty() ? QString() : QFileInfo(places.projectPath).absolutePath();
+    const QStringList standardFolders = standardLibraryFolders(places.executableDir);
+    if (projectLibraries.empty())
+        return loadLibraries(standardFolders, projectFolder, places.userFiles);
+    const LibrarySet standard = loadLibraries(standardFolders, {}, {});
+    LibrarySet set;
+    set.problems = standard.problems;
+    for (const auto& named : projectLibraries) {
+        const QString name = QString::fromStdString(named);
+        if (name.endsWith(QStringLiteral(".") + QLatin1String(kLibraryExtension)) ||
+            name.contains(QLatin1Char('/'))) {
+            addLibraryFile(set, QDir(projectFolder).absoluteFilePath(name), LibraryOrigin::User);
+        } else if (const LoadedLibrary* found = standard.findLibrary(named)) {
+            if (!set.findLibrary(named))
+                set.libraries.push_back(*found);
+        } else {
+            set.problems.push_back(
+                {places.projectPath,
+                 {},
+                 {{lang::Severity::Warning, 1, 1,
+                   "the project uses the library '" + named + "', which is not installed"}}});
+        }
+    }
+    for (const QString& path : places.userFiles)
+        addLibraryFile(set, path, LibraryOrigin::User);
+    return set;
+}
+
+ProjectWithInstances readProjectWithInstances(std::string_view text, const LibraryPlaces& places) {
+    ProjectWithInstances result{project::readProject(text), false, {}};
+    project::ProjectReadResult& read = result.read;
+    if (!read.ok())
+        return result;
+    LibrarySet libraries = librariesFor(places, read.project.libraries);
+    const InstanceExpansion expansion = expandInstances(read.project.program, libraries);
+    read.diagnostics.insert(read.diagnostics.end(), expansion.diagnostics.begin(),
+                            expansion.diagnostics.end());
+    lang::sortByPlace(read.diagnostics);
+    result.expanded = expansion.expanded > 0;
+    result.libraryProblems = std::move(libraries.problems);
+    return result;
 }
 
 } // namespace rs::blocks

@@ -33,8 +33,26 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
 struct ProjectWithInstances {
     project::ProjectReadResult read;
     bool expanded = false; // the project is no longer the text: it holds expansions
+    std::vector<LibraryFileProblem> libraryProblems; // of the libraries it was read with
 };
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibrarySet& libraries);
+
+// Where a project's libraries are looked for: the program's folder (for the
+// standard ones), the project's file, and the user libraries given besides.
+struct LibraryPlaces {
+    QString executableDir;
+    QString projectPath; // empty for a project without a file
+    QStringList userFiles;
+};
+
+// The libraries the project uses (Project::libraries; every library found
+// when it names none), with those of `places.userFiles`. A library the
+// project names that is not found is a warning at the project's first line.
+LibrarySet librariesFor(const LibraryPlaces& places,
+                        const std::vector<std::string>& projectLibraries);
+
+// Reads the project, then expands its instances from the libraries it uses.
+ProjectWithInstances readProjectWithInstances(std::string_view text, const LibraryPlaces& places);
 
 // Compiles a project read with its instances: the reading's diagnostics
 // first, then the compiler's, by place. An image records the lines of the
@@ -44,10 +62,5 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics, bool expanded,
                                        const compiler::CheckOptions& options = {});
-
-// The libraries a project at `projectPath` sees: the standard ones of the
-// program in `executableDir`, the project folder's, and `userFiles`.
-LibrarySet librariesFor(const QString& executableDir, const QString& projectPath,
-                        const QStringList& userFiles = {});
 
 } // namespace rs::blocks

@@ -23,6 +23,11 @@ struct Project {
     std::set<lang::Address> exportedVariables;
     // The manual's [R]: registers and memories kept at power off (10.3).
     std::set<lang::Address> remanentVariables;
+    // The function libraries the project uses (manual Part 1, 12.1): a
+    // standard library by its name, a user library by its file, relative to
+    // the project's folder. None named: every library found is used
+    // (docs/block-libraries.md).
+    std::vector<std::string> libraries;
 
     // The project name from "$name", empty when the file has none.
     std::string name() const;

@@ -18,8 +18,10 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,          project.includeSource,     project.unitDescriptions,
-            project.variableDescriptions, project.exportedVariables, project.remanentVariables};
+    return {project.description,       project.includeSource,
+            project.unitDescriptions,  project.variableDescriptions,
+            project.exportedVariables, project.remanentVariables,
+            project.libraries};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {
@@ -29,6 +31,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;
+    project.libraries = records.libraries;
 }
 
 ProjectChange ProjectChange::between(const Project& before, const Project& after) {
@@ -39,7 +42,7 @@ ProjectChange ProjectChange::between(const Project& before, const Project& after
         was.unitDescriptions != is.unitDescriptions ||
         was.variableDescriptions != is.variableDescriptions ||
         was.exportedVariables != is.exportedVariables ||
-        was.remanentVariables != is.remanentVariables)
+        was.remanentVariables != is.remanentVariables || was.libraries != is.libraries)
         change.m_records = Replacement<Records>{std::move(was), std::move(is)};
     if (!(before.program.preamble == after.program.preamble))
         change.m_preamble = {before.program.preamble, after.program.preamble};

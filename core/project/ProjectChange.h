@@ -35,6 +35,7 @@ private:
         std::map<lang::Address, std::string> variableDescriptions;
         std::set<lang::Address> exportedVariables;
         std::set<lang::Address> remanentVariables;
+        std::vector<std::string> libraries;
     };
     struct UnitChange {
         std::size_t index = 0;

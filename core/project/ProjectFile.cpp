@@ -99,6 +99,9 @@ private:
             std::string flag = annotation->value("include_source");
             if (!flag.empty() && !parseFlag(flag, m_project.includeSource))
                 error(at, "include_source must be yes or no, not '" + flag + "'");
+            for (const auto& [key, value] : annotation->attributes)
+                if (key == "library" && !value.empty())
+                    m_project.libraries.push_back(value);
             return true;
         }
         if (kind == "unit") {
@@ -226,12 +229,14 @@ std::string writeProject(const Project& project) {
     for (std::size_t i = 0; i < preamble.size(); ++i)
         if (std::holds_alternative<lang::Directive>(preamble[i].body))
             at = i + 1;
-    if (!project.description.empty() || project.includeSource) {
+    if (!project.description.empty() || project.includeSource || !project.libraries.empty()) {
         Annotation record{"project", {}, {}};
         if (!project.description.empty())
             record.attributes.emplace_back("description", project.description);
         if (project.includeSource)
             record.attributes.emplace_back("include_source", "yes");
+        for (const auto& library : project.libraries)
+            record.attributes.emplace_back("library", library);
         preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at), commentLine(record));
     }
 

@@ -108,7 +108,7 @@ TEST(InstanceExpansion, TheSavedExpansionReadsBackUnchangedWithoutWarnings) {
     EXPECT_FALSE(again.expanded);
     EXPECT_EQ(project::writeProject(again.read.project), saved);
     // Without the library the saved file is still the same program.
-    const auto alone = blocks::readProjectWithInstances(saved, {});
+    const auto alone = blocks::readProjectWithInstances(saved, blocks::LibrarySet{});
     EXPECT_TRUE(alone.read.diagnostics.empty()) << messages(alone.read.diagnostics);
     EXPECT_EQ(project::writeProject(alone.read.project), saved);
 }

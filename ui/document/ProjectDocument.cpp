@@ -56,7 +56,8 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
         project::Project expanded = document->project();
         const blocks::InstanceExpansion expansion = blocks::expandInstances(
             expanded.program,
-            blocks::librariesFor(QCoreApplication::applicationDirPath(), document->m_path));
+            blocks::librariesFor({QCoreApplication::applicationDirPath(), document->m_path, {}},
+                                 expanded.libraries));
         if (expansion.expanded > 0)
             document->replace(tr("Expand Block Instances"), expanded);
     }

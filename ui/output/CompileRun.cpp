@@ -78,7 +78,7 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
     m_watcher->setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath,
                                             projectPath = document->path()] {
         const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
-            text, blocks::librariesFor(QCoreApplication::applicationDirPath(), projectPath));
+            text, blocks::LibraryPlaces{QCoreApplication::applicationDirPath(), projectPath, {}});
         Compiled compiled{blocks::compileProject(read.read.project, read.read.diagnostics,
                                                  read.expanded, options),
                           {},

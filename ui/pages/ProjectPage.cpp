@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/ProjectPage.h"
 
+#include "blocks/LibrarySearch.h"
+#include "blocks/ProjectInstances.h"
 #include "document/ProjectDocument.h"
 #include "project/ProjectProperties.h"
 #include "project/UnitSettings.h"
@@ -9,12 +11,20 @@
 #include "shell/UnitCaption.h"
 
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QDir>
+#include <QFileDialog>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace rs::ui {
 
@@ -28,7 +38,37 @@ ProjectPage::ProjectPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_name(new QLineEdit(this)),
       m_nameProblem(new QLabel(this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
-      m_file(new QLabel(this)), m_units(new QLabel(this)) {
+      m_file(new QLabel(this)), m_units(new QLabel(this)), m_libraries(new QListWidget(this)),
+      m_addStandard(new QPushButton(tr("Add &Standard Library"), this)),
+      m_addUser(new QPushButton(tr("Add &User Library..."), this)),
+      m_remove(new QPushButton(tr("&Remove Library"), this)) {
+    m_libraries->setObjectName(QStringLiteral("projectLibrariesList"));
+    m_libraries->setMaximumHeight(110);
+    m_addStandard->setObjectName(QStringLiteral("addStandardLibraryButton"));
+    m_addUser->setObjectName(QStringLiteral("addUserLibraryButton"));
+    m_remove->setObjectName(QStringLiteral("removeLibraryButton"));
+    // The standard libraries are offered as they are found when the menu opens.
+    auto* standardMenu = new QMenu(m_addStandard);
+    m_addStandard->setMenu(standardMenu);
+    connect(standardMenu, &QMenu::aboutToShow, this, [this, standardMenu] {
+        standardMenu->clear();
+        if (!m_document)
+            return;
+        const auto& used = m_document->project().libraries;
+        const blocks::LibrarySet found = blocks::loadLibraries(
+            blocks::standardLibraryFolders(QCoreApplication::applicationDirPath()), {}, {});
+        for (const auto& loaded : found.libraries) {
+            const QString name = QString::fromStdString(loaded.library.name);
+            QAction* add = standardMenu->addAction(name, this, [this, name] { addLibrary(name); });
+            add->setEnabled(std::find(used.begin(), used.end(), loaded.library.name) == used.end());
+        }
+        if (found.libraries.empty())
+            standardMenu->addAction(tr("No standard library is installed"))->setEnabled(false);
+    });
+    connect(m_addUser, &QPushButton::clicked, this, &ProjectPage::addUserLibrary);
+    connect(m_remove, &QPushButton::clicked, this, &ProjectPage::removeLibrary);
+    connect(m_libraries, &QListWidget::currentRowChanged, this,
+            [this](int row) { m_remove->setEnabled(row >= 0); });
     m_name->setObjectName(QStringLiteral("projectNameEdit"));
     m_description->setObjectName(QStringLiteral("projectDescriptionEdit"));
     m_description->setTabChangesFocus(true);
@@ -48,6 +88,17 @@ ProjectPage::ProjectPage(QWidget* parent)
     form->addRow(QString(), m_includeSource);
     form->addRow(tr("File:"), m_file);
     form->addRow(tr("Units:"), m_units);
+    auto* libraryButtons = new QHBoxLayout;
+    libraryButtons->addWidget(m_addStandard);
+    libraryButtons->addWidget(m_addUser);
+    libraryButtons->addWidget(m_remove);
+    libraryButtons->addStretch();
+    auto* libraries = new QVBoxLayout;
+    libraries->addWidget(m_libraries);
+    libraries->addLayout(libraryButtons);
+    auto* librariesLabel = new QLabel(tr("Function &libraries:"), this);
+    librariesLabel->setBuddy(m_libraries);
+    form->addRow(librariesLabel, libraries);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
     layout->addLayout(form);
@@ -106,7 +157,76 @@ void ProjectPage::refresh() {
         units << unitCaption(unit);
     m_units->setText(units.isEmpty() ? tr("None yet. Add one with Project > New Pluto.")
                                      : units.join(QStringLiteral(", ")));
+    refreshLibraries();
     m_refreshing = false;
+}
+
+void ProjectPage::refreshLibraries() {
+    const project::Project& p = m_document->project();
+    const int row = m_libraries->currentRow();
+    m_libraries->clear();
+    if (p.libraries.empty()) {
+        // Nothing named: every library found is used, which the list says.
+        auto* all = new QListWidgetItem(
+            tr("Every library found: the standard ones and those in the project's folder"),
+            m_libraries);
+        all->setFlags(Qt::NoItemFlags);
+    }
+    const blocks::LibrarySet found = blocks::librariesFor(
+        {QCoreApplication::applicationDirPath(), m_document->path(), {}}, p.libraries);
+    for (const auto& entry : p.libraries) {
+        auto* item = new QListWidgetItem(QString::fromStdString(entry), m_libraries);
+        const bool user = entry.find('/') != std::string::npos ||
+                          QString::fromStdString(entry).endsWith(QStringLiteral(".rslib"));
+        bool present = false;
+        for (const auto& loaded : found.libraries)
+            present = present || (user ? loaded.origin == blocks::LibraryOrigin::User
+                                       : loaded.library.name == entry);
+        if (user && present)
+            item->setToolTip(tr("A user library in the project's folder"));
+        else if (present)
+            item->setToolTip(tr("A standard library"));
+        if (!present) {
+            item->setText(tr("%1 (not found)").arg(item->text()));
+            item->setForeground(errorTextColor(m_libraries->palette()));
+        }
+    }
+    if (!p.libraries.empty())
+        m_libraries->setCurrentRow(std::min(std::max(row, 0), m_libraries->count() - 1));
+    m_remove->setEnabled(!p.libraries.empty() && m_libraries->currentRow() >= 0);
+}
+
+void ProjectPage::addLibrary(const QString& entry) {
+    if (!m_document)
+        return;
+    const std::string added = entry.toStdString();
+    m_document->edit(tr("Add Library %1").arg(entry), [&](project::Project& p) {
+        if (std::find(p.libraries.begin(), p.libraries.end(), added) == p.libraries.end())
+            p.libraries.push_back(added);
+    });
+}
+
+void ProjectPage::addUserLibrary() {
+    if (!m_document)
+        return;
+    const QString folder = m_document->path().isEmpty()
+                               ? QDir::homePath()
+                               : QFileInfo(m_document->path()).absolutePath();
+    const QString file = QFileDialog::getOpenFileName(this, tr("Add User Library"), folder,
+                                                      tr("Function block libraries (*.rslib)"));
+    if (file.isEmpty())
+        return;
+    // Kept relative to the project, so the two move together.
+    addLibrary(m_document->path().isEmpty() ? file : QDir(folder).relativeFilePath(file));
+}
+
+void ProjectPage::removeLibrary() {
+    const int row = m_libraries->currentRow();
+    if (!m_document || row < 0 || row >= static_cast<int>(m_document->project().libraries.size()))
+        return;
+    const std::string removed = m_document->project().libraries[static_cast<std::size_t>(row)];
+    m_document->edit(tr("Remove Library %1").arg(QString::fromStdString(removed)),
+                     [&](project::Project& p) { p.libraries.erase(p.libraries.begin() + row); });
 }
 
 void ProjectPage::applyName() {

@@ -8,15 +8,18 @@
 class QCheckBox;
 class QLabel;
 class QLineEdit;
+class QListWidget;
 class QPlainTextEdit;
+class QPushButton;
 
 namespace rs::ui {
 
 class PageTitle;
 class ProjectDocument;
 
-// The page of a project (manual Part 1, 3.2, 3.3, 12): its name, description
-// and the include-source option, edited in place, and what it holds.
+// The page of a project (manual Part 1, 3.2, 3.3, 12): its name, description,
+// the include-source option and the function libraries it uses, edited in
+// place, and what it holds.
 class ProjectPage : public QWidget {
     Q_OBJECT
 public:
@@ -28,6 +31,10 @@ private:
     void refresh();
     void applyName();
     void applyDescription();
+    void refreshLibraries();
+    void addLibrary(const QString& entry);
+    void addUserLibrary();
+    void removeLibrary();
 
     PageTitle* m_title;
     QLineEdit* m_name;
@@ -36,6 +43,10 @@ private:
     QCheckBox* m_includeSource;
     QLabel* m_file;
     QLabel* m_units;
+    QListWidget* m_libraries;
+    QPushButton* m_addStandard;
+    QPushButton* m_addUser;
+    QPushButton* m_remove;
     QTimer m_descriptionTimer;
     QPointer<ProjectDocument> m_document;
     bool m_refreshing = false;
