@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "LadderView.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QContextMenuEvent>
 #include <QMimeData>
@@ -87,11 +88,17 @@ void LadderView::wheelEvent(QWheelEvent* event) {
     QGraphicsView::wheelEvent(event);
 }
 
+// A key sent to the view itself (as QTest and some input methods do) reaches
+// the view's actions even when the shortcut machinery passed it by.
 void LadderView::keyPressEvent(QKeyEvent* event) {
-    if (keyHandler && keyHandler(event)) {
-        event->accept();
-        return;
-    }
+    const QKeySequence pressed(
+        QKeyCombination(event->modifiers() & ~Qt::KeypadModifier, Qt::Key(event->key())));
+    for (QAction* action : actions())
+        if (action->isEnabled() && action->shortcuts().contains(pressed)) {
+            action->trigger();
+            event->accept();
+            return;
+        }
     QGraphicsView::keyPressEvent(event);
 }
 

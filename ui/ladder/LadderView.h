@@ -4,13 +4,11 @@
 #include <QGraphicsView>
 #include <QVariantAnimation>
 
-#include <functional>
-
 namespace rs::ui {
 
 // The scrolling view of a ladder page's scene. It zooms with Ctrl+wheel and
-// hands clicks, double clicks, context menus, drags and keys to the page,
-// which knows what the items stand for.
+// hands clicks, double clicks, context menus and drags to the page, which
+// knows what the items stand for. Keys are the page's actions added to the view.
 class LadderView : public QGraphicsView {
     Q_OBJECT
 public:
@@ -24,13 +22,11 @@ public:
     void zoomIn();
     void zoomOut();
 
-    std::function<bool(QKeyEvent*)> keyHandler;
-
 public slots:
     // The window's Edit > Cut, Copy and Paste act on the widget with the focus.
-    void cut() { emit clipboardRequested(Qt::Key_X); }
-    void copy() { emit clipboardRequested(Qt::Key_C); }
-    void paste() { emit clipboardRequested(Qt::Key_V); }
+    void cut() { emit cutRequested(); }
+    void copy() { emit copyRequested(); }
+    void paste() { emit pasteRequested(); }
 
 signals:
     void pressed(const QPointF& scenePosition, Qt::MouseButton button,
@@ -41,7 +37,9 @@ signals:
     void dragStarted(const QPointF& from);
     void dropped(const QPointF& scenePosition, const QByteArray& payload);
     void zoomChanged(qreal zoom);
-    void clipboardRequested(int key); // Qt::Key_X cut, Key_C copy, Key_V paste
+    void cutRequested();
+    void copyRequested();
+    void pasteRequested();
 
 protected:
     void wheelEvent(QWheelEvent* event) override;
