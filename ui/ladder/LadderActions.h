@@ -1,20 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "ElementKind.h"
+
 #include <QCoreApplication>
 #include <QString>
 
-#include <cstdint>
 #include <utility>
 #include <vector>
 
 class QAction;
 class QActionGroup;
 class QWidget;
-
-namespace rs::ladder {
-enum class ElementKind : std::uint8_t;
-} // namespace rs::ladder
 
 namespace rs::ui {
 
