@@ -26,12 +26,16 @@ QString LadderActions::keyOf(const QAction* action) {
     return action->shortcut().toString(QKeySequence::NativeText);
 }
 
-LadderActions::LadderActions(QWidget* page, QWidget* view) {
-    // An action with keys answers them in the view, and its tooltip names its first key.
-    auto keyed = [view](QAction* action, const QList<QKeySequence>& keys) {
+LadderActions::LadderActions(QWidget* page) {
+    // An action with keys answers them when the view receives them (LadderView
+    // asks its key actions), and its tooltip names its first key. The shortcut
+    // context is the action's own widget, which never has the focus: matched
+    // by the focus widget, Enter or a letter would reach the view while one of
+    // the page's dialogs opens and has not taken the focus yet.
+    auto keyed = [this](QAction* action, const QList<QKeySequence>& keys) {
         action->setShortcuts(keys);
-        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        view->addAction(action);
+        action->setShortcutContext(Qt::WidgetShortcut);
+        viewKeys.push_back(action);
         if (!action->toolTip().isEmpty() && action->toolTip() != action->iconText())
             action->setToolTip(tr("%1 (key %2)").arg(action->toolTip(), keyOf(action)));
         return action;

@@ -21,9 +21,8 @@ namespace rs::ui {
 class LadderActions {
     Q_DECLARE_TR_FUNCTIONS(LadderActions)
 public:
-    // The actions are children of `page`; those with keys answer them while
-    // the focus is in `view`.
-    LadderActions(QWidget* page, QWidget* view);
+    // The actions are children of `page`.
+    explicit LadderActions(QWidget* page);
 
     QAction* showText;
     QActionGroup* placements;
@@ -64,6 +63,10 @@ public:
     QAction* networkComment;
     QAction* newStep;
     QAction* newSequence;
+
+    // The actions whose keys the view answers (all with keys but zooming,
+    // which answers anywhere on the page).
+    std::vector<QAction*> viewKeys;
 
     // The toolbar of the page, in order (nullptr a separator).
     std::vector<QAction*> toolBar() const;

@@ -34,7 +34,7 @@ namespace rs::ui {
 LadderPage::LadderPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_toolBar(new QToolBar(this)),
       m_scene(new QGraphicsScene(this)), m_view(new LadderView(m_scene, this)),
-      m_status(new QLabel(this)), m_actions(std::make_unique<LadderActions>(this, m_view)),
+      m_status(new QLabel(this)), m_actions(std::make_unique<LadderActions>(this)),
       m_idleTool(std::make_unique<IdleTool>(*this)),
       m_networkEditTool(std::make_unique<NetworkEditTool>(*this)),
       m_dragTool(std::make_unique<DragTool>(*this)), m_liveTool(std::make_unique<LiveTool>(*this)),
@@ -66,6 +66,7 @@ LadderPage::LadderPage(QWidget* parent)
     m_toolBar->setIconSize(kElementIconSize);
     drawElementIcons();
     connectActions();
+    m_view->setKeyActions(m_actions->viewKeys);
     connect(m_view, &LadderView::pressed, this,
             [this](const QPointF& at, Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
                 m_tool->pressed(at, button, modifiers);

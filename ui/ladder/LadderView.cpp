@@ -88,17 +88,22 @@ void LadderView::wheelEvent(QWheelEvent* event) {
     QGraphicsView::wheelEvent(event);
 }
 
-// A key sent to the view itself (as QTest and some input methods do) reaches
-// the view's actions even when the shortcut machinery passed it by.
 void LadderView::keyPressEvent(QKeyEvent* event) {
-    const QKeySequence pressed(
-        QKeyCombination(event->modifiers() & ~Qt::KeypadModifier, Qt::Key(event->key())));
-    for (QAction* action : actions())
-        if (action->isEnabled() && action->shortcuts().contains(pressed)) {
-            action->trigger();
-            event->accept();
-            return;
-        }
+    const Qt::KeyboardModifiers modifiers =
+        event->modifiers() & ~(Qt::KeypadModifier | Qt::GroupSwitchModifier);
+    const auto key = Qt::Key(event->key());
+    std::vector<QKeySequence> pressed = {QKeySequence(QKeyCombination(modifiers, key))};
+    // A symbol typed with Shift (+ | / = on many layouts) is the symbol's key.
+    const bool letter = key <= 0xffff && QChar(static_cast<char16_t>(key)).isLetter();
+    if (!letter && modifiers == Qt::ShiftModifier)
+        pressed.emplace_back(key);
+    for (const QKeySequence& sequence : pressed)
+        for (QAction* action : m_keyActions)
+            if (action->isEnabled() && action->shortcuts().contains(sequence)) {
+                action->trigger();
+                event->accept();
+                return;
+            }
     QGraphicsView::keyPressEvent(event);
 }
 

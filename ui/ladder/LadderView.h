@@ -4,11 +4,17 @@
 #include <QGraphicsView>
 #include <QVariantAnimation>
 
+#include <utility>
+#include <vector>
+
+class QAction;
+
 namespace rs::ui {
 
 // The scrolling view of a ladder page's scene. It zooms with Ctrl+wheel and
 // hands clicks, double clicks, context menus and drags to the page, which
-// knows what the items stand for. Keys are the page's actions added to the view.
+// knows what the items stand for. A key pressed in the view triggers the
+// page's action with that shortcut.
 class LadderView : public QGraphicsView {
     Q_OBJECT
 public:
@@ -21,6 +27,8 @@ public:
     void setZoom(qreal zoom);
     void zoomIn();
     void zoomOut();
+    // The actions a key pressed in the view triggers, by their shortcuts.
+    void setKeyActions(std::vector<QAction*> actions) { m_keyActions = std::move(actions); }
 
 public slots:
     // The window's Edit > Cut, Copy and Paste act on the widget with the focus.
@@ -54,6 +62,7 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    std::vector<QAction*> m_keyActions;
     qreal m_zoom = 1;
     QVariantAnimation m_glide; // smooth scrolling by wheel notches
     int m_glideTarget = 0;
