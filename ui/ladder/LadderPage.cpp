@@ -226,7 +226,7 @@ void LadderPage::updateTitle() {
         tr("Keys: %1 insert the toolbar's elements; %2 %3 %4 before, after, "
            "parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.")
             .arg(inserts.join(QLatin1Char(' ')), LadderActions::keyOf(a.placeBefore),
-                 LadderActions::keyOf(a.placeAfter), keys(a.placeParallel),
+                 LadderActions::keyOf(a.placeAfter), LadderActions::keyOf(a.placeParallel),
                  LadderActions::keyOf(a.properties), LadderActions::keyOf(a.deleteSelection),
                  LadderActions::keyOf(a.newNetwork), LadderActions::keyOf(a.editNetwork)));
 }
