@@ -152,6 +152,209 @@
     </message>
 </context>
 <context>
+    <name>LadderActions</name>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation>%1 (Taste %2)</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation>Diesen Code als Text zeigen</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Danach</translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection</source>
+        <translation>In Reihe nach der Auswahl einfügen</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Davor</translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection</source>
+        <translation>In Reihe vor der Auswahl einfügen</translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation>Parallel</translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection</source>
+        <translation>In einem parallelen Zweig um die Auswahl einfügen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selected element</source>
+        <translation>Das ausgewählte Element löschen</translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation>&amp;Neues Netzwerk</translation>
+    </message>
+    <message>
+        <source>A new network below the selected one</source>
+        <translation>Ein neues Netzwerk unter dem ausgewählten</translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation>Alle aufklappen</translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation>Die Strompfade aller Netzwerke zeigen</translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation>Alle zuklappen</translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation>Nur die Kommentare der Netzwerke zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation>Netzwerk &amp;bearbeiten</translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update</source>
+        <translation>Die nächsten Änderungen an diesem Netzwerk bis Aktualisieren sammeln</translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step</source>
+        <translation>Die Änderungen am Netzwerk als einen einzigen Bearbeitungsschritt übernehmen</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation>Netzwerk rückgängig</translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network</source>
+        <translation>Die Änderungen am Netzwerk verwerfen</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Originalgröße</translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation>Drucken …</translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation>Die Netzwerke dieser Seite drucken</translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation>PDF …</translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation>Die Netzwerke dieser Seite als PDF exportieren</translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation>&amp;Eigenschaften …</translation>
+    </message>
+    <message>
+        <source>&amp;Toggle</source>
+        <translation>&amp;Umschalten</translation>
+    </message>
+    <message>
+        <source>&amp;Force...</source>
+        <translation>&amp;Forcen …</translation>
+    </message>
+    <message>
+        <source>Move Left</source>
+        <translation>Nach links</translation>
+    </message>
+    <message>
+        <source>Move Right</source>
+        <translation>Nach rechts</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>Select Enclosing Group</source>
+        <translation>Umgebende Gruppe auswählen</translation>
+    </message>
+    <message>
+        <source>Select Network</source>
+        <translation>Netzwerk auswählen</translation>
+    </message>
+    <message>
+        <source>New &amp;Config Option...</source>
+        <translation>Neue &amp;Konfigurationsoption …</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation>Netzwerk(e) &amp;ausschneiden</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation>Netzwerk(e) &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation>Netzwerk(e) ein&amp;fügen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation>Netzwerk(e) &amp;löschen</translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation>Netzwerkkommen&amp;tar …</translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation>Neuer Sch&amp;ritt</translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation>Neue Se&amp;quenz …</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -693,146 +896,6 @@
 <context>
     <name>rs::ui::LadderPage</name>
     <message>
-        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
-        <translation>Noch keine Netzwerke. Drücken Sie Einfg oder klicken Sie mit der rechten Maustaste &gt; Neues Netzwerk, und fügen Sie dann den Ausgang des Netzwerks (L Spule, S Setzen, R Rücksetzen, J Sprung …) und seine Kontakte ein.</translation>
-    </message>
-    <message>
-        <source>Text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <source>Show this code as text</source>
-        <translation>Diesen Code als Text zeigen</translation>
-    </message>
-    <message>
-        <source>After</source>
-        <translation>Danach</translation>
-    </message>
-    <message>
-        <source>Insert in series after the selection (key ])</source>
-        <translation>In Reihe nach der Auswahl einfügen (Taste ])</translation>
-    </message>
-    <message>
-        <source>Before</source>
-        <translation>Davor</translation>
-    </message>
-    <message>
-        <source>Insert in series before the selection (key [)</source>
-        <translation>In Reihe vor der Auswahl einfügen (Taste [)</translation>
-    </message>
-    <message>
-        <source>Parallel</source>
-        <translation>Parallel</translation>
-    </message>
-    <message>
-        <source>Insert in a parallel branch around the selection (key \)</source>
-        <translation>In einem Parallelzweig um die Auswahl einfügen (Taste \)</translation>
-    </message>
-    <message>
-        <source>%1 (key %2)</source>
-        <translation>%1 (Taste %2)</translation>
-    </message>
-    <message>
-        <source>Delete</source>
-        <translation>Löschen</translation>
-    </message>
-    <message>
-        <source>Delete the selected element (Del)</source>
-        <translation>Das ausgewählte Element löschen (Entf)</translation>
-    </message>
-    <message>
-        <source>New Network</source>
-        <translation>Neues Netzwerk</translation>
-    </message>
-    <message>
-        <source>A new network below the selected one (Ins)</source>
-        <translation>Ein neues Netzwerk unter dem ausgewählten (Einfg)</translation>
-    </message>
-    <message>
-        <source>Expand All</source>
-        <translation>Alle aufklappen</translation>
-    </message>
-    <message>
-        <source>Show the rungs of every network</source>
-        <translation>Die Strompfade aller Netzwerke zeigen</translation>
-    </message>
-    <message>
-        <source>Collapse All</source>
-        <translation>Alle zuklappen</translation>
-    </message>
-    <message>
-        <source>Show only the comments of the networks</source>
-        <translation>Nur die Kommentare der Netzwerke zeigen</translation>
-    </message>
-    <message>
-        <source>Edit Network</source>
-        <translation>Netzwerk bearbeiten</translation>
-    </message>
-    <message>
-        <source>Gather the next edits of this network until Update (key E)</source>
-        <translation>Die nächsten Änderungen an diesem Netzwerk bis Aktualisieren sammeln (Taste E)</translation>
-    </message>
-    <message>
-        <source>Update</source>
-        <translation>Aktualisieren</translation>
-    </message>
-    <message>
-        <source>Keep the edits of the network as one step (F3)</source>
-        <translation>Die Änderungen am Netzwerk als einen einzigen Bearbeitungsschritt übernehmen (F3)</translation>
-    </message>
-    <message>
-        <source>Undo Network</source>
-        <translation>Netzwerk rückgängig</translation>
-    </message>
-    <message>
-        <source>Drop the edits of the network (F2)</source>
-        <translation>Die Änderungen am Netzwerk verwerfen (F2)</translation>
-    </message>
-    <message>
-        <source>Zoom In</source>
-        <translation>Vergrößern</translation>
-    </message>
-    <message>
-        <source>Zoom in (Ctrl++)</source>
-        <translation>Vergrößern (Strg++)</translation>
-    </message>
-    <message>
-        <source>Zoom Out</source>
-        <translation>Verkleinern</translation>
-    </message>
-    <message>
-        <source>Zoom out (Ctrl+-)</source>
-        <translation>Verkleinern (Strg+-)</translation>
-    </message>
-    <message>
-        <source>100%</source>
-        <translation>100 %</translation>
-    </message>
-    <message>
-        <source>Actual size (Ctrl+0)</source>
-        <translation>Originalgröße (Strg+0)</translation>
-    </message>
-    <message>
-        <source>Print...</source>
-        <translation>Drucken …</translation>
-    </message>
-    <message>
-        <source>Print the networks of this page</source>
-        <translation>Die Netzwerke dieser Seite drucken</translation>
-    </message>
-    <message>
-        <source>PDF...</source>
-        <translation>PDF …</translation>
-    </message>
-    <message>
-        <source>Export the networks of this page as PDF</source>
-        <translation>Die Netzwerke dieser Seite als PDF exportieren</translation>
-    </message>
-    <message>
-        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
-        <translation>Tasten: C Kontakt, / Öffner, P N Flanken, O U F Timer, = Vergleich, L Spule, S R T Setz-, Rücksetz- und Umschaltspule, J Sprung, Q Sequenzrücksetzung, + Arithmetik; [ ] \ davor, danach, parallel; Enter Eigenschaften; Entf löschen; Einfg neues Netzwerk.</translation>
-    </message>
-    <message>
         <source>%1 — PLC Code</source>
         <translation>%1 — SPS-Code</translation>
     </message>
@@ -847,58 +910,6 @@
     <message>
         <source>Step %1</source>
         <translation>Schritt %1</translation>
-    </message>
-    <message>
-        <source>&amp;New Network</source>
-        <translation>&amp;Neues Netzwerk</translation>
-    </message>
-    <message>
-        <source>&amp;Basic Network</source>
-        <translation>&amp;Einfaches Netzwerk</translation>
-    </message>
-    <message>
-        <source>&amp;Config Option...</source>
-        <translation>&amp;Konfigurationsoption …</translation>
-    </message>
-    <message>
-        <source>Cu&amp;t Network(s)</source>
-        <translation>Netzwerk(e) &amp;ausschneiden</translation>
-    </message>
-    <message>
-        <source>&amp;Copy Network(s)</source>
-        <translation>Netzwerk(e) &amp;kopieren</translation>
-    </message>
-    <message>
-        <source>&amp;Paste Network(s)</source>
-        <translation>Netzwerk(e) ein&amp;fügen</translation>
-    </message>
-    <message>
-        <source>&amp;Delete Network(s)</source>
-        <translation>Netzwerk(e) &amp;löschen</translation>
-    </message>
-    <message>
-        <source>P&amp;roperties...</source>
-        <translation>&amp;Eigenschaften …</translation>
-    </message>
-    <message>
-        <source>Delete &amp;Element</source>
-        <translation>Element lö&amp;schen</translation>
-    </message>
-    <message>
-        <source>Network Co&amp;mment...</source>
-        <translation>Netzwerkkommen&amp;tar …</translation>
-    </message>
-    <message>
-        <source>&amp;Edit Network</source>
-        <translation>Netzwerk &amp;bearbeiten</translation>
-    </message>
-    <message>
-        <source>New &amp;Step</source>
-        <translation>Neuer Sch&amp;ritt</translation>
-    </message>
-    <message>
-        <source>New Se&amp;quence...</source>
-        <translation>Neue Se&amp;quenz …</translation>
     </message>
     <message>
         <source>Not done: %1</source>
@@ -1022,10 +1033,6 @@
         <translation>Schritt %1 hinzugefügt: Fügen Sie den Ausgang seines ersten Netzwerks ein.</translation>
     </message>
     <message>
-        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
-        <translation>Netzwerk %1 ist im Bearbeitungsmodus: Aktualisieren (F3) übernimmt die Änderungen als einen einzigen Bearbeitungsschritt, Rückgängig (F2) verwirft sie.</translation>
-    </message>
-    <message>
         <source>Edit Network %1</source>
         <translation>Netzwerk %1 bearbeiten</translation>
     </message>
@@ -1062,10 +1069,6 @@
         <translation>Netzwerk %1</translation>
     </message>
     <message>
-        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
-        <translation>Simulation: Ein Klick oder die Leertaste auf einem Eingang schaltet ihn um; Rechtsklick, Menütaste oder Umschalt+F10 forcen die Variable eines Elements. Bearbeiten beendet die Simulation.</translation>
-    </message>
-    <message>
         <source>No networks in this code.</source>
         <translation>Keine Netzwerke in diesem Code.</translation>
     </message>
@@ -1082,6 +1085,22 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Could not export to %1: %2</source>
         <translation>Export nach %1 nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (%2) keeps its edits as one step, Undo (%3) drops them.</source>
+        <translation>Netzwerk %1 ist im Bearbeitungsmodus: Aktualisieren (%2) übernimmt die Änderungen als einen einzigen Bearbeitungsschritt, Rückgängig (%3) verwirft sie.</translation>
+    </message>
+    <message>
+        <source>No networks yet. Press %1, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation>Noch keine Netzwerke. Drücken Sie %1 oder klicken Sie mit der rechten Maustaste &gt; Neues Netzwerk, und fügen Sie dann den Ausgang des Netzwerks (L Spule, S Setzen, R Rücksetzen, J Sprung …) und seine Kontakte ein.</translation>
+    </message>
+    <message>
+        <source>Simulating: a click or %1 on an input toggles it; a right click or %2 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation>Simulation: Ein Klick oder %1 auf einem Eingang schaltet ihn um; Rechtsklick oder %2 forcen die Variable eines Elements. Bearbeiten beendet die Simulation.</translation>
+    </message>
+    <message>
+        <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
+        <translation>Tasten: %1 fügen die Elemente der Werkzeugleiste ein; %2 %3 %4 davor, danach, parallel; %5 Eigenschaften; %6 löschen; %7 neues Netzwerk; %8 Bearbeitungsmodus.</translation>
     </message>
 </context>
 <context>

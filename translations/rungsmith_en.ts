@@ -152,6 +152,209 @@
     </message>
 </context>
 <context>
+    <name>LadderActions</name>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete the selected element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new network below the selected one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Toggle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Force...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select Enclosing Group</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Config Option...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -159,6 +362,37 @@
     </message>
     <message>
         <source>Option off</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>RemanentDialog</name>
+    <message>
+        <source>Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All 32 registers are remanent, so no memory can be.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -693,146 +927,6 @@
 <context>
     <name>rs::ui::LadderPage</name>
     <message>
-        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Text</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show this code as text</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>After</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Insert in series after the selection (key ])</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Before</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Insert in series before the selection (key [)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Parallel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Insert in a parallel branch around the selection (key \)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 (key %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delete</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delete the selected element (Del)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A new network below the selected one (Ins)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Expand All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the rungs of every network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Collapse All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only the comments of the networks</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Edit Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Gather the next edits of this network until Update (key E)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Update</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Keep the edits of the network as one step (F3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Undo Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drop the edits of the network (F2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom In</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom in (Ctrl++)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom Out</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom out (Ctrl+-)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>100%</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Actual size (Ctrl+0)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Print...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Print the networks of this page</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PDF...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export the networks of this page as PDF</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 — PLC Code</source>
         <translation type="unfinished"></translation>
     </message>
@@ -846,58 +940,6 @@
     </message>
     <message>
         <source>Step %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;New Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Basic Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Config Option...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cu&amp;t Network(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Copy Network(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Paste Network(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Delete Network(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>P&amp;roperties...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delete &amp;Element</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Network Co&amp;mment...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Edit Network</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New &amp;Step</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New Se&amp;quence...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1022,10 +1064,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Edit Network %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1062,10 +1100,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No networks in this code.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1080,6 +1114,22 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Could not export to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (%2) keeps its edits as one step, Undo (%3) drops them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No networks yet. Press %1, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulating: a click or %1 on an input toggles it; a right click or %2 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1774,37 +1824,6 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::RemanentDialog</name>
-    <message>
-        <source>Remanent Variables of Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>None</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Registers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Memories</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>All 32 registers are remanent, so no memory can be.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

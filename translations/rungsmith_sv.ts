@@ -152,6 +152,209 @@
     </message>
 </context>
 <context>
+    <name>LadderActions</name>
+    <message>
+        <source>%1 (key %2)</source>
+        <translation>%1 (tangent %2)</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Show this code as text</source>
+        <translation>Visa koden som text</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Efter</translation>
+    </message>
+    <message>
+        <source>Insert in series after the selection</source>
+        <translation>Infoga i serie efter markeringen</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Före</translation>
+    </message>
+    <message>
+        <source>Insert in series before the selection</source>
+        <translation>Infoga i serie före markeringen</translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation>Parallellt</translation>
+    </message>
+    <message>
+        <source>Insert in a parallel branch around the selection</source>
+        <translation>Infoga i en parallell gren runt markeringen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Ta bort</translation>
+    </message>
+    <message>
+        <source>Delete the selected element</source>
+        <translation>Ta bort det markerade elementet</translation>
+    </message>
+    <message>
+        <source>&amp;New Network</source>
+        <translation>&amp;Nytt nätverk</translation>
+    </message>
+    <message>
+        <source>A new network below the selected one</source>
+        <translation>Ett nytt nätverk under det markerade</translation>
+    </message>
+    <message>
+        <source>Expand All</source>
+        <translation>Fäll ut alla</translation>
+    </message>
+    <message>
+        <source>Show the rungs of every network</source>
+        <translation>Visa strömvägarna i alla nätverk</translation>
+    </message>
+    <message>
+        <source>Collapse All</source>
+        <translation>Fäll ihop alla</translation>
+    </message>
+    <message>
+        <source>Show only the comments of the networks</source>
+        <translation>Visa endast nätverkens kommentarer</translation>
+    </message>
+    <message>
+        <source>&amp;Edit Network</source>
+        <translation>&amp;Redigera nätverk</translation>
+    </message>
+    <message>
+        <source>Gather the next edits of this network until Update</source>
+        <translation>Samla nästa ändringar i nätverket fram till Uppdatera</translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation>Uppdatera</translation>
+    </message>
+    <message>
+        <source>Keep the edits of the network as one step</source>
+        <translation>Behåll ändringarna i nätverket som ett enda ändringssteg</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <translation>Ångra nätverk</translation>
+    </message>
+    <message>
+        <source>Drop the edits of the network</source>
+        <translation>Kasta ändringarna i nätverket</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>Zooma in</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Zooma in</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>Zooma ut</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Zooma ut</translation>
+    </message>
+    <message>
+        <source>100%</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Actual size</source>
+        <translation>Verklig storlek</translation>
+    </message>
+    <message>
+        <source>Print...</source>
+        <translation>Skriv ut …</translation>
+    </message>
+    <message>
+        <source>Print the networks of this page</source>
+        <translation>Skriv ut nätverken på den här sidan</translation>
+    </message>
+    <message>
+        <source>PDF...</source>
+        <translation>PDF …</translation>
+    </message>
+    <message>
+        <source>Export the networks of this page as PDF</source>
+        <translation>Exportera nätverken på den här sidan som PDF</translation>
+    </message>
+    <message>
+        <source>P&amp;roperties...</source>
+        <translation>&amp;Egenskaper …</translation>
+    </message>
+    <message>
+        <source>&amp;Toggle</source>
+        <translation>&amp;Växla</translation>
+    </message>
+    <message>
+        <source>&amp;Force...</source>
+        <translation>&amp;Forcera …</translation>
+    </message>
+    <message>
+        <source>Move Left</source>
+        <translation>Flytta vänster</translation>
+    </message>
+    <message>
+        <source>Move Right</source>
+        <translation>Flytta höger</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Flytta upp</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Flytta ned</translation>
+    </message>
+    <message>
+        <source>Select Enclosing Group</source>
+        <translation>Markera omgivande grupp</translation>
+    </message>
+    <message>
+        <source>Select Network</source>
+        <translation>Markera nätverket</translation>
+    </message>
+    <message>
+        <source>New &amp;Config Option...</source>
+        <translation>Nytt &amp;konfigurationsalternativ …</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Network(s)</source>
+        <translation>Klipp &amp;ut nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Network(s)</source>
+        <translation>&amp;Kopiera nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Network(s)</source>
+        <translation>Klistra &amp;in nätverk</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Network(s)</source>
+        <translation>&amp;Ta bort nätverk</translation>
+    </message>
+    <message>
+        <source>Network Co&amp;mment...</source>
+        <translation>Nätverksko&amp;mmentar …</translation>
+    </message>
+    <message>
+        <source>New &amp;Step</source>
+        <translation>Nytt &amp;steg</translation>
+    </message>
+    <message>
+        <source>New Se&amp;quence...</source>
+        <translation>Ny sek&amp;vens …</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -693,146 +896,6 @@
 <context>
     <name>rs::ui::LadderPage</name>
     <message>
-        <source>No networks yet. Press Ins, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
-        <translation>Inga nätverk än. Tryck på Ins, eller högerklicka &gt; Nytt nätverk, och infoga sedan nätverkets utgång (L spole, S sätt, R återställ, J hopp …) och dess kontakter.</translation>
-    </message>
-    <message>
-        <source>Text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <source>Show this code as text</source>
-        <translation>Visa koden som text</translation>
-    </message>
-    <message>
-        <source>After</source>
-        <translation>Efter</translation>
-    </message>
-    <message>
-        <source>Insert in series after the selection (key ])</source>
-        <translation>Infoga i serie efter markeringen (tangent ])</translation>
-    </message>
-    <message>
-        <source>Before</source>
-        <translation>Före</translation>
-    </message>
-    <message>
-        <source>Insert in series before the selection (key [)</source>
-        <translation>Infoga i serie före markeringen (tangent [)</translation>
-    </message>
-    <message>
-        <source>Parallel</source>
-        <translation>Parallellt</translation>
-    </message>
-    <message>
-        <source>Insert in a parallel branch around the selection (key \)</source>
-        <translation>Infoga i en parallell gren runt markeringen (tangent \)</translation>
-    </message>
-    <message>
-        <source>%1 (key %2)</source>
-        <translation>%1 (tangent %2)</translation>
-    </message>
-    <message>
-        <source>Delete</source>
-        <translation>Ta bort</translation>
-    </message>
-    <message>
-        <source>Delete the selected element (Del)</source>
-        <translation>Ta bort det markerade elementet (Del)</translation>
-    </message>
-    <message>
-        <source>New Network</source>
-        <translation>Nytt nätverk</translation>
-    </message>
-    <message>
-        <source>A new network below the selected one (Ins)</source>
-        <translation>Ett nytt nätverk under det markerade (Ins)</translation>
-    </message>
-    <message>
-        <source>Expand All</source>
-        <translation>Fäll ut alla</translation>
-    </message>
-    <message>
-        <source>Show the rungs of every network</source>
-        <translation>Visa strömvägarna i alla nätverk</translation>
-    </message>
-    <message>
-        <source>Collapse All</source>
-        <translation>Fäll ihop alla</translation>
-    </message>
-    <message>
-        <source>Show only the comments of the networks</source>
-        <translation>Visa endast nätverkens kommentarer</translation>
-    </message>
-    <message>
-        <source>Edit Network</source>
-        <translation>Redigera nätverk</translation>
-    </message>
-    <message>
-        <source>Gather the next edits of this network until Update (key E)</source>
-        <translation>Samla nästa ändringar i nätverket fram till Uppdatera (tangent E)</translation>
-    </message>
-    <message>
-        <source>Update</source>
-        <translation>Uppdatera</translation>
-    </message>
-    <message>
-        <source>Keep the edits of the network as one step (F3)</source>
-        <translation>Behåll ändringarna i nätverket som ett enda ändringssteg (F3)</translation>
-    </message>
-    <message>
-        <source>Undo Network</source>
-        <translation>Ångra nätverk</translation>
-    </message>
-    <message>
-        <source>Drop the edits of the network (F2)</source>
-        <translation>Kasta ändringarna i nätverket (F2)</translation>
-    </message>
-    <message>
-        <source>Zoom In</source>
-        <translation>Zooma in</translation>
-    </message>
-    <message>
-        <source>Zoom in (Ctrl++)</source>
-        <translation>Zooma in (Ctrl++)</translation>
-    </message>
-    <message>
-        <source>Zoom Out</source>
-        <translation>Zooma ut</translation>
-    </message>
-    <message>
-        <source>Zoom out (Ctrl+-)</source>
-        <translation>Zooma ut (Ctrl+-)</translation>
-    </message>
-    <message>
-        <source>100%</source>
-        <translation>100 %</translation>
-    </message>
-    <message>
-        <source>Actual size (Ctrl+0)</source>
-        <translation>Verklig storlek (Ctrl+0)</translation>
-    </message>
-    <message>
-        <source>Print...</source>
-        <translation>Skriv ut …</translation>
-    </message>
-    <message>
-        <source>Print the networks of this page</source>
-        <translation>Skriv ut nätverken på den här sidan</translation>
-    </message>
-    <message>
-        <source>PDF...</source>
-        <translation>PDF …</translation>
-    </message>
-    <message>
-        <source>Export the networks of this page as PDF</source>
-        <translation>Exportera nätverken på den här sidan som PDF</translation>
-    </message>
-    <message>
-        <source>Keys: C contact, / NC, P N edges, O U F timers, = compare, L coil, S R T latches, J jump, Q sequence reset, + arithmetic; [ ] \ before, after, parallel; Enter properties; Del delete; Ins new network.</source>
-        <translation>Tangenter: C kontakt, / NC, P N flanker, O U F timrar, = jämförelse, L spole, S R T sättande, återställande och växlande spolar, J hopp, Q sekvensåterställning, + aritmetik; [ ] \ före, efter, parallellt; Enter egenskaper; Del ta bort; Ins nytt nätverk.</translation>
-    </message>
-    <message>
         <source>%1 — PLC Code</source>
         <translation>%1 — PLC-kod</translation>
     </message>
@@ -847,58 +910,6 @@
     <message>
         <source>Step %1</source>
         <translation>Steg %1</translation>
-    </message>
-    <message>
-        <source>&amp;New Network</source>
-        <translation>&amp;Nytt nätverk</translation>
-    </message>
-    <message>
-        <source>&amp;Basic Network</source>
-        <translation>&amp;Enkelt nätverk</translation>
-    </message>
-    <message>
-        <source>&amp;Config Option...</source>
-        <translation>&amp;Konfigurationsalternativ …</translation>
-    </message>
-    <message>
-        <source>Cu&amp;t Network(s)</source>
-        <translation>Klipp &amp;ut nätverk</translation>
-    </message>
-    <message>
-        <source>&amp;Copy Network(s)</source>
-        <translation>&amp;Kopiera nätverk</translation>
-    </message>
-    <message>
-        <source>&amp;Paste Network(s)</source>
-        <translation>Klistra &amp;in nätverk</translation>
-    </message>
-    <message>
-        <source>&amp;Delete Network(s)</source>
-        <translation>&amp;Ta bort nätverk</translation>
-    </message>
-    <message>
-        <source>P&amp;roperties...</source>
-        <translation>&amp;Egenskaper …</translation>
-    </message>
-    <message>
-        <source>Delete &amp;Element</source>
-        <translation>Ta bort e&amp;lement</translation>
-    </message>
-    <message>
-        <source>Network Co&amp;mment...</source>
-        <translation>Nätverksko&amp;mmentar …</translation>
-    </message>
-    <message>
-        <source>&amp;Edit Network</source>
-        <translation>&amp;Redigera nätverk</translation>
-    </message>
-    <message>
-        <source>New &amp;Step</source>
-        <translation>Nytt &amp;steg</translation>
-    </message>
-    <message>
-        <source>New Se&amp;quence...</source>
-        <translation>Ny sek&amp;vens …</translation>
     </message>
     <message>
         <source>Not done: %1</source>
@@ -1022,10 +1033,6 @@
         <translation>Steg %1 tillagt: infoga utgången i dess första nätverk.</translation>
     </message>
     <message>
-        <source>Network %1 is in edit mode: Update (F3) keeps its edits as one step, Undo (F2) drops them.</source>
-        <translation>Nätverk %1 är i redigeringsläge: Uppdatera (F3) behåller ändringarna som ett enda ändringssteg, Ångra (F2) kastar dem.</translation>
-    </message>
-    <message>
         <source>Edit Network %1</source>
         <translation>Redigera nätverk %1</translation>
     </message>
@@ -1062,10 +1069,6 @@
         <translation>Nätverk %1</translation>
     </message>
     <message>
-        <source>Simulating: a click or Space on an input toggles it; a right click, the Menu key or Shift+F10 forces any element&apos;s variable. Editing ends the simulation.</source>
-        <translation>Simulerar: ett klick eller mellanslag på en ingång växlar den; högerklick, menytangenten eller Shift+F10 forcerar variabeln för valfritt element. Redigering avslutar simuleringen.</translation>
-    </message>
-    <message>
         <source>No networks in this code.</source>
         <translation>Inga nätverk i den här koden.</translation>
     </message>
@@ -1082,6 +1085,22 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Could not export to %1: %2</source>
         <translation>Kunde inte exportera till %1: %2</translation>
+    </message>
+    <message>
+        <source>Network %1 is in edit mode: Update (%2) keeps its edits as one step, Undo (%3) drops them.</source>
+        <translation>Nätverk %1 är i redigeringsläge: Uppdatera (%2) behåller ändringarna som ett enda ändringssteg, Ångra (%3) kastar dem.</translation>
+    </message>
+    <message>
+        <source>No networks yet. Press %1, or right-click &gt; New Network, then insert the network&apos;s output (L coil, S set, R reset, J jump ...) and its contacts.</source>
+        <translation>Inga nätverk än. Tryck på %1, eller högerklicka &gt; Nytt nätverk, och infoga sedan nätverkets utgång (L spole, S sätt, R återställ, J hopp …) och dess kontakter.</translation>
+    </message>
+    <message>
+        <source>Simulating: a click or %1 on an input toggles it; a right click or %2 forces any element&apos;s variable. Editing ends the simulation.</source>
+        <translation>Simulerar: ett klick eller %1 på en ingång växlar den; högerklick eller %2 forcerar variabeln för valfritt element. Redigering avslutar simuleringen.</translation>
+    </message>
+    <message>
+        <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
+        <translation>Tangenter: %1 infogar verktygsfältets element; %2 %3 %4 före, efter, parallellt; %5 egenskaper; %6 ta bort; %7 nytt nätverk; %8 redigeringsläge.</translation>
     </message>
 </context>
 <context>

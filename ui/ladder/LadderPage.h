@@ -10,6 +10,7 @@
 #endif
 
 #include <QColor>
+#include <QPoint>
 #include <QPointer>
 #include <QWidget>
 
@@ -17,25 +18,35 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
 class QAction;
-class QActionGroup;
 class QGraphicsScene;
 class QGraphicsSimpleTextItem;
-class QKeyEvent;
 class QLabel;
 class QPagedPaintDevice;
 class QToolBar;
 
+namespace rs::ladder {
+enum class CursorMove;
+} // namespace rs::ladder
+
 namespace rs::ui {
 
+class DragTool;
+class IdleTool;
+class LadderActions;
+class LadderTool;
 class LadderView;
+class LiveTool;
+class NetworkEditTool;
 class NetworkItem;
 class PageTitle;
 class ProjectDocument;
 class StepHeaderItem;
+struct EditSession;
 
 // The ladder view of a unit's PLC code (sequence 0) or of one of its
 // sequences (manual Part 1, 11): numbered networks with their comments, one
@@ -45,6 +56,13 @@ class StepHeaderItem;
 // ladder out again. In a network's edit mode (manual 11.1, 11.3) edits gather
 // in the network until Update (F3) makes them one undo step or Undo (F2)
 // drops them.
+//
+// The page's definition is in files by idea: LadderPage.cpp (actions,
+// titles, live state, selection), LadderPageScene.cpp (following the model),
+// LadderPageInput.cpp (what the tool states do with the mouse and keys),
+// LadderEditing.cpp, NetworkClipboard.cpp, LadderPrinting.cpp and
+// LadderDiagnostics.cpp. The states themselves are IdleTool,
+// NetworkEditTool, DragTool and LiveTool; the keys are LadderActions.
 class LadderPage : public QWidget {
     Q_OBJECT
 public:
@@ -109,7 +127,7 @@ public:
     void editNetworkComment();
     void newStep();
     void editStepComment(int step);
-    bool isEditingNetwork() const { return m_editSession.has_value(); }
+    bool isEditingNetwork() const { return editSession() != nullptr; }
     void enterEditMode();
     void updateNetwork(); // F3
     void undoNetwork();   // F2
@@ -130,12 +148,15 @@ signals:
     void operandMenuRequested(const QString& address, const QPoint& globalPos);
 
 private:
-    struct EditSession {
-        int step = 0;
-        int network = 0;
-    };
+    static constexpr qreal kNetworkGap = 4; // between the networks, on screen and on paper
 
-    void createActions();
+    // The states of the page's tools hand what the user does to the page.
+    friend class DragTool;
+    friend class IdleTool;
+    friend class LiveTool;
+    friend class NetworkEditTool;
+
+    void connectActions();
     // The insert buttons show the symbols in the theme's colours.
     void drawElementIcons();
     void followModel();
@@ -147,19 +168,35 @@ private:
     void setMessage(const QString& message);
     void repaintItems();
 
-    bool handleLiveKey(int key, Qt::KeyboardModifiers modifiers);
-    bool handleKey(QKeyEvent* event);
-    void pressed(const QPointF& scenePosition, Qt::MouseButton button,
-                 Qt::KeyboardModifiers modifiers);
-    void doubleClicked(const QPointF& scenePosition);
-    void showMenu(const QPointF& scenePosition, const QPoint& globalPosition);
-    void startDrag(const QPointF& from);
-    void drop(const QPointF& scenePosition, const QByteArray& payload);
+    // The state of the tools: events of the view go to it.
+    void setTool(LadderTool& tool);
+    LadderTool& restingTool();
+    void rest();
+    const EditSession* editSession() const;
+    // Leaves the network's edit mode without keeping or dropping anything.
+    void endEditSession();
+    // Whether the page can edit now: a project, a drawn page, a state that edits.
+    bool editable() const;
+
+    // What the states do with the mouse and keys.
+    bool toggleCollapseAt(const QPointF& scenePosition);
+    bool toggleOptionAt(const QPointF& scenePosition);
+    void select(const QPointF& scenePosition, Qt::MouseButton button,
+                Qt::KeyboardModifiers modifiers);
+    void openAt(const QPointF& scenePosition);
+    void openSelected();
+    void showEditMenu(const QPoint& globalPosition);
+    void dragFrom(const QPointF& from, LadderTool& resume);
+    void dragElement(const QPointF& from);
+    void dropElement(const QPointF& scenePosition, const QByteArray& payload);
+    void pointAt(const QPointF& scenePosition);
+    void reportOperand();
+    void reportOperandMenu(std::optional<QPoint> globalPosition = std::nullopt);
 
     NetworkItem* itemAt(const QPointF& scenePosition) const;
     LadderCursor cursorAt(const QPointF& scenePosition) const;
     const ladder::ElementLayout* cursorElement() const;
-    void moveCursor(int key);
+    void moveCursor(ladder::CursorMove move);
     void ensureCursorVisible();
     std::vector<std::pair<int, int>> chosenNetworks() const;
 
@@ -179,7 +216,6 @@ private:
     QLabel* m_status;
     QString m_editingHint; // what an empty page says while editing
     QGraphicsSimpleTextItem* m_emptyHint = nullptr;
-    QActionGroup* m_placementGroup = nullptr;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
     int m_sequence = 0;
@@ -193,8 +229,13 @@ private:
     int m_namesVersion = 0;
     std::size_t m_undrawnLines = 0;               // the code's lines when above what the page draws
     std::optional<std::pair<int, int>> m_pending; // a new network not yet holding a rung
-    std::optional<EditSession> m_editSession;
     Placement m_placement = Placement::After;
+    std::unique_ptr<LadderActions> m_actions;
+    std::unique_ptr<IdleTool> m_idleTool;
+    std::unique_ptr<NetworkEditTool> m_networkEditTool;
+    std::unique_ptr<DragTool> m_dragTool;
+    std::unique_ptr<LiveTool> m_liveTool;
+    LadderTool* m_tool = nullptr;
 };
 
 } // namespace rs::ui

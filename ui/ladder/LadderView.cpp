@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "LadderView.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QContextMenuEvent>
 #include <QMimeData>
@@ -88,10 +89,21 @@ void LadderView::wheelEvent(QWheelEvent* event) {
 }
 
 void LadderView::keyPressEvent(QKeyEvent* event) {
-    if (keyHandler && keyHandler(event)) {
-        event->accept();
-        return;
-    }
+    const Qt::KeyboardModifiers modifiers =
+        event->modifiers() & ~(Qt::KeypadModifier | Qt::GroupSwitchModifier);
+    const auto key = Qt::Key(event->key());
+    std::vector<QKeySequence> pressed = {QKeySequence(QKeyCombination(modifiers, key))};
+    // A symbol typed with Shift (+ | / = on many layouts) is the symbol's key.
+    const bool letter = key <= 0xffff && QChar(static_cast<char16_t>(key)).isLetter();
+    if (!letter && modifiers == Qt::ShiftModifier)
+        pressed.emplace_back(key);
+    for (const QKeySequence& sequence : pressed)
+        for (QAction* action : m_keyActions)
+            if (action->isEnabled() && action->shortcuts().contains(sequence)) {
+                action->trigger();
+                event->accept();
+                return;
+            }
     QGraphicsView::keyPressEvent(event);
 }
 

@@ -4,13 +4,17 @@
 #include <QGraphicsView>
 #include <QVariantAnimation>
 
-#include <functional>
+#include <utility>
+#include <vector>
+
+class QAction;
 
 namespace rs::ui {
 
 // The scrolling view of a ladder page's scene. It zooms with Ctrl+wheel and
-// hands clicks, double clicks, context menus, drags and keys to the page,
-// which knows what the items stand for.
+// hands clicks, double clicks, context menus and drags to the page, which
+// knows what the items stand for. A key pressed in the view triggers the
+// page's action with that shortcut.
 class LadderView : public QGraphicsView {
     Q_OBJECT
 public:
@@ -23,14 +27,14 @@ public:
     void setZoom(qreal zoom);
     void zoomIn();
     void zoomOut();
-
-    std::function<bool(QKeyEvent*)> keyHandler;
+    // The actions a key pressed in the view triggers, by their shortcuts.
+    void setKeyActions(std::vector<QAction*> actions) { m_keyActions = std::move(actions); }
 
 public slots:
     // The window's Edit > Cut, Copy and Paste act on the widget with the focus.
-    void cut() { emit clipboardRequested(Qt::Key_X); }
-    void copy() { emit clipboardRequested(Qt::Key_C); }
-    void paste() { emit clipboardRequested(Qt::Key_V); }
+    void cut() { emit cutRequested(); }
+    void copy() { emit copyRequested(); }
+    void paste() { emit pasteRequested(); }
 
 signals:
     void pressed(const QPointF& scenePosition, Qt::MouseButton button,
@@ -41,7 +45,9 @@ signals:
     void dragStarted(const QPointF& from);
     void dropped(const QPointF& scenePosition, const QByteArray& payload);
     void zoomChanged(qreal zoom);
-    void clipboardRequested(int key); // Qt::Key_X cut, Key_C copy, Key_V paste
+    void cutRequested();
+    void copyRequested();
+    void pasteRequested();
 
 protected:
     void wheelEvent(QWheelEvent* event) override;
@@ -56,6 +62,7 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    std::vector<QAction*> m_keyActions;
     qreal m_zoom = 1;
     QVariantAnimation m_glide; // smooth scrolling by wheel notches
     int m_glideTarget = 0;

@@ -14,6 +14,7 @@
 #include "shell/Theme.h"
 #include "text/TextPage.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QDialog>
@@ -27,6 +28,7 @@
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QWheelEvent>
 
@@ -35,6 +37,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <map>
 #include <tuple>
 
 namespace {
@@ -667,5 +670,32 @@ TEST_P(LadderEditingStates, OptionsAndCollapsedNetworksAreDrawn) {
 INSTANTIATE_TEST_SUITE_P(Themes, LadderEditingStates,
                          ::testing::Values(rs::ui::Preferences::Theme::Light,
                                            rs::ui::Preferences::Theme::Dark));
+
+TEST_F(LadderPageTest, EveryKeyIsOneActionAndTheToolbarNamesIt) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    std::map<QString, QString> owners; // key -> action
+    for (QAction* action : page().findChildren<QAction*>()) {
+        for (const QKeySequence& key : action->shortcuts()) {
+            const QString name = key.toString(QKeySequence::PortableText);
+            EXPECT_FALSE(owners.count(name))
+                << name.toStdString() << " twice: " << owners[name].toStdString() << ", "
+                << action->objectName().toStdString();
+            owners[name] = action->objectName();
+        }
+    }
+    EXPECT_EQ(owners[QStringLiteral("F3")], QStringLiteral("updateNetworkAction"));
+    EXPECT_EQ(owners[QStringLiteral("Del")], QStringLiteral("ladderDeleteAction"));
+    EXPECT_EQ(owners[QStringLiteral("Left")], QStringLiteral("moveLeftAction"));
+    auto* toolBar = page().findChild<QToolBar*>(QStringLiteral("ladderToolBar"));
+    ASSERT_NE(toolBar, nullptr);
+    for (QAction* action : toolBar->actions()) {
+        if (action->shortcut().isEmpty())
+            continue;
+        EXPECT_TRUE(
+            action->toolTip().contains(action->shortcut().toString(QKeySequence::NativeText)))
+            << action->objectName().toStdString() << ": " << action->toolTip().toStdString();
+    }
+}
 
 } // namespace

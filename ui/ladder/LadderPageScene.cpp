@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The ladder page following the model: the unit's ladder read again after
+// every change of the project, one item per network laid out again only
+// when its network changed, and the items placed one below the other.
+#include "LadderPage.h"
+
+#include "LadderTool.h"
+#include "LadderView.h"
+#include "NetworkItem.h"
+#include "StepHeaderItem.h"
+#include "document/ProjectDocument.h"
+#include "ladder/CursorNavigation.h"
+#include "ladder/UnitLadder.h"
+
+#include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
+
+#include <algorithm>
+
+namespace rs::ui {
+
+void LadderPage::followModel() {
+    if (editSession()) {
+        endEditSession();
+        setMessage(tr("The project changed, so the network's edits were dropped."));
+    }
+    rebuild();
+    updateTitle();
+}
+
+void LadderPage::rebuild() {
+    m_steps.clear();
+    m_stepComments.clear();
+    m_undrawnLines = 0;
+    if (m_document) {
+        const project::Project& project = m_document->project();
+        std::vector<lang::Line> names = project.program.preamble;
+        for (const auto& unit : project.program.units) {
+            if (unit.station() != m_station)
+                continue;
+            names.insert(names.end(), unit.declarations.begin(), unit.declarations.end());
+            if (const std::size_t lines = ladder::sequenceLines(unit, m_sequence);
+                lines > ladder::kMostDrawnLines) {
+                m_undrawnLines = lines;
+                continue;
+            }
+            for (auto& page : ladder::unitLadder(unit))
+                if (page.address.sequence == m_sequence)
+                    m_steps.push_back(std::move(page));
+            for (const auto& step : unit.steps)
+                if (step.address.sequence == m_sequence)
+                    m_stepComments.push_back(
+                        QString::fromStdString(step.comment.value_or(std::string())).trimmed());
+        }
+        if (names != m_names || m_namesVersion == 0) {
+            m_names = std::move(names);
+            m_symbols = ladder::SymbolTable::of(project.program, m_station);
+            ++m_namesVersion;
+        }
+    }
+    if (m_undrawnLines > 0) {
+        m_steps.clear();
+        m_stepComments.clear();
+        m_pending.reset();
+    } else if (m_steps.empty() && m_document && m_sequence == 0) {
+        m_steps.push_back({{m_station, 0, 0}, {}, {}});
+        m_stepComments.emplace_back();
+    }
+    if (m_pending) {
+        auto [step, index] = *m_pending;
+        if (step < stepCount() && index <= networkCount(step)) {
+            auto& page = m_steps[step];
+            const std::uint32_t first =
+                index < networkCount(step) ? page.firstStatements[index]
+                : index > 0                ? page.firstStatements[index - 1] +
+                                  ladder::statementCount(page.ladder.networks[index - 1])
+                            : 0;
+            page.ladder.networks.insert(page.ladder.networks.begin() + index, ladder::Network{});
+            page.firstStatements.insert(page.firstStatements.begin() + index, first);
+        } else {
+            m_pending.reset();
+        }
+    }
+
+    // Items are kept by place; an item lays out again only when its network changed.
+    while (m_items.size() > m_steps.size()) {
+        for (NetworkItem* item : m_items.back())
+            delete item;
+        m_items.pop_back();
+        delete m_headers.back();
+        m_headers.pop_back();
+    }
+    for (std::size_t s = 0; s < m_steps.size(); ++s) {
+        const auto& page = m_steps[s];
+        const QString stepText =
+            QStringLiteral("%1   %2   %3")
+                .arg(tr("Step %1").arg(page.address.step),
+                     QString::fromStdString(lang::toString(page.address)), m_stepComments[s]);
+        if (s >= m_items.size()) {
+            m_items.emplace_back();
+            m_headers.push_back(
+                new StepHeaderItem(&m_drawing, m_sequence, page.address.step, stepText));
+            m_scene->addItem(m_headers.back());
+        }
+        m_headers[s]->setText(page.address.step, stepText.trimmed());
+        m_headers[s]->setVisible(m_sequence != 0);
+        auto& items = m_items[s];
+        const int count = static_cast<int>(page.ladder.networks.size());
+        while (static_cast<int>(items.size()) > count) {
+            delete items.back();
+            items.pop_back();
+        }
+        for (int n = 0; n < count; ++n) {
+            if (n >= static_cast<int>(items.size())) {
+                items.push_back(new NetworkItem(&m_drawing, static_cast<int>(s), n));
+                m_scene->addItem(items.back());
+            }
+            ladder::LayoutContext context;
+            context.number = n + 1;
+            context.title = tr("Network %1").arg(n + 1);
+            context.firstStatement = page.firstStatements[n];
+            context.symbols = &m_symbols;
+            items[n]->setIndex(static_cast<int>(s), n);
+            items[n]->setNetwork(page.ladder.networks[n], context, m_namesVersion);
+        }
+    }
+    placeItems();
+    // The cursor stays where it was while that place exists.
+    LadderCursor& cursor = m_drawing.cursor;
+    if (cursor.valid() &&
+        (cursor.step >= stepCount() || cursor.network >= networkCount(cursor.step)))
+        cursor = {};
+    else if (cursor.valid() && !cursor.wholeNetwork() && !cursorElement() &&
+             !(cursor.node &&
+               ladder::nodeAt(m_steps[cursor.step].ladder.networks[cursor.network], *cursor.node)))
+        cursor = {cursor.step, cursor.network, std::nullopt, std::nullopt, -1};
+    updateActions();
+    repaintItems();
+}
+
+void LadderPage::placeItems() {
+    qreal y = 0;
+    qreal width = 400;
+    for (std::size_t s = 0; s < m_items.size(); ++s) {
+        if (m_headers[s]->isVisible()) {
+            m_headers[s]->setPos(0, y);
+            y += StepHeaderItem::kHeight + kNetworkGap;
+        }
+        for (NetworkItem* item : m_items[s]) {
+            if (item->pos() != QPointF(0, y))
+                item->setPos(0, y);
+            const QRectF bounds = item->boundingRect();
+            y += bounds.height() + kNetworkGap;
+            width = std::max(width, bounds.width());
+        }
+    }
+    for (StepHeaderItem* header : m_headers)
+        header->setWidth(width);
+    // An empty page says how to begin.
+    const bool empty =
+        std::all_of(m_items.begin(), m_items.end(), [](const auto& step) { return step.empty(); });
+    m_emptyHint->setVisible(empty && m_document);
+    m_emptyHint->setText(
+        m_undrawnLines > 0
+            ? tr("This code has %1 lines, more than the ladder page draws (%2).\nIts text page "
+                 "(F6) shows and edits it.")
+                  .arg(m_undrawnLines)
+                  .arg(ladder::kMostDrawnLines)
+        : isLive() ? tr("No networks in this code.")
+                   : m_editingHint);
+    m_emptyHint->setBrush(m_drawing.style.commentInk);
+    m_emptyHint->setPos(NetworkItem::kGutter, y + 16);
+    if (empty)
+        y += 60;
+    m_scene->setSceneRect(0, 0, width, std::max<qreal>(y, 1));
+}
+
+void LadderPage::repaintItems() {
+    m_view->viewport()->update();
+}
+
+int LadderPage::networkCount(int step) const {
+    return step >= 0 && step < stepCount() ? static_cast<int>(m_steps[step].ladder.networks.size())
+                                           : 0;
+}
+
+NetworkItem* LadderPage::networkItem(int step, int network) const {
+    if (step < 0 || step >= static_cast<int>(m_items.size()) || network < 0 ||
+        network >= static_cast<int>(m_items[step].size()))
+        return nullptr;
+    return m_items[step][network];
+}
+
+void LadderPage::setAllCollapsed(bool collapsed) {
+    for (auto& step : m_items)
+        for (NetworkItem* item : step)
+            item->setCollapsed(collapsed);
+    placeItems();
+    repaintItems();
+}
+
+void LadderPage::toggleCollapsed(int step, int network) {
+    if (NetworkItem* item = networkItem(step, network)) {
+        item->setCollapsed(!item->collapsed());
+        placeItems();
+        repaintItems();
+    }
+}
+
+} // namespace rs::ui

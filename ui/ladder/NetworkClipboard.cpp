@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Whole networks of a ladder page to and from the clipboard, and deleted:
+// the networks marked with Ctrl or Shift and a click, or the selected one.
+#include "LadderPage.h"
+
+#include "LadderTool.h"
+#include "document/ProjectDocument.h"
+#include "ladder/NetworkText.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QMimeData>
+
+#include <algorithm>
+
+namespace rs::ui {
+
+namespace {
+
+constexpr char kNetworksMimeType[] = "application/x-rungsmith-networks";
+
+} // namespace
+
+std::vector<std::pair<int, int>> LadderPage::chosenNetworks() const {
+    std::vector<std::pair<int, int>> chosen(m_drawing.marked.begin(), m_drawing.marked.end());
+    const LadderCursor& cursor = m_drawing.cursor;
+    if (chosen.empty() && cursor.valid())
+        chosen.emplace_back(cursor.step, cursor.network);
+    return chosen;
+}
+
+void LadderPage::copyNetworks() {
+    std::vector<ladder::Network> networks;
+    for (auto [step, network] : chosenNetworks())
+        if (network < networkCount(step) && !m_steps[step].ladder.networks[network].items.empty())
+            networks.push_back(m_steps[step].ladder.networks[network]);
+    if (networks.empty())
+        return;
+    const QByteArray text = QByteArray::fromStdString(ladder::networksText(networks));
+    auto* data = new QMimeData;
+    data->setData(QLatin1String(kNetworksMimeType), text);
+    data->setText(QString::fromUtf8(text));
+    QApplication::clipboard()->setMimeData(data);
+    setMessage(tr("%n network(s) copied.", nullptr, static_cast<int>(networks.size())));
+}
+
+void LadderPage::cutNetworks() {
+    copyNetworks();
+    deleteNetworks();
+}
+
+void LadderPage::pasteNetworks() {
+    if (!editable() || stepCount() == 0)
+        return;
+    const QMimeData* data = QApplication::clipboard()->mimeData();
+    if (!data)
+        return;
+    const QByteArray text = data->hasFormat(QLatin1String(kNetworksMimeType))
+                                ? data->data(QLatin1String(kNetworksMimeType))
+                                : data->text().toUtf8();
+    ladder::NetworksReading read = ladder::readNetworksText(text.toStdString());
+    if (!read.error.empty() || read.networks.empty()) {
+        setMessage(read.error.empty() ? tr("The clipboard holds no networks.")
+                                      : tr("The clipboard holds no networks: %1")
+                                            .arg(QString::fromStdString(read.error)));
+        return;
+    }
+    const LadderCursor cursor = m_drawing.cursor;
+    const int step = cursor.valid() ? cursor.step : stepCount() - 1;
+    const int index = cursor.valid() ? cursor.network + 1 : networkCount(step);
+    ladder::StepLadder ladder = m_steps[step].ladder;
+    const auto count = static_cast<int>(read.networks.size());
+    ladder.networks.insert(ladder.networks.begin() + index, read.networks.begin(),
+                           read.networks.end());
+    if (m_pending && m_pending->first == step && m_pending->second >= index)
+        m_pending->second += count;
+    commitStep(tr("Paste %n Network(s)", nullptr, count), step, std::move(ladder));
+    m_drawing.marked.clear();
+    for (int n = index; n < index + count && n < networkCount(step); ++n)
+        m_drawing.marked.insert({step, n});
+    setCursor({step, std::min(index, networkCount(step) - 1), std::nullopt, std::nullopt, -1});
+}
+
+void LadderPage::deleteNetworks() {
+    if (!editable())
+        return;
+    std::vector<std::pair<int, int>> chosen = chosenNetworks();
+    if (chosen.empty())
+        return;
+    undoNetwork();
+    std::sort(chosen.begin(), chosen.end());
+    const int step = chosen.front().first;
+    ladder::StepLadder ladder = m_steps[step].ladder;
+    int removed = 0;
+    for (auto it = chosen.rbegin(); it != chosen.rend(); ++it)
+        if (it->first == step && it->second < static_cast<int>(ladder.networks.size())) {
+            if (m_pending == *it)
+                m_pending.reset();
+            ladder.networks.erase(ladder.networks.begin() + it->second);
+            ++removed;
+        }
+    m_drawing.marked.clear();
+    const int first = chosen.front().second;
+    commitStep(tr("Delete %n Network(s)", nullptr, removed), step, std::move(ladder));
+    rebuild();
+    if (networkCount(step) > 0)
+        setCursor({step, std::min(first, networkCount(step) - 1), std::nullopt, std::nullopt, -1});
+    else
+        setCursor({});
+}
+
+} // namespace rs::ui
