@@ -39,7 +39,8 @@ TEST_F(BlockInstancesTest, OpeningExpandsThemAsOneUndoableEditThatSavingWrites) 
     ASSERT_NE(document(), nullptr);
     EXPECT_TRUE(document()->isModified());
     const QByteArray expanded = projectText();
-    EXPECT_TRUE(expanded.contains("lib=\"Rungsmith_Basics\" version=\"1.0\"")) << expanded.toStdString();
+    EXPECT_TRUE(expanded.contains("lib=\"Rungsmith_Basics\" version=\"1.0\""))
+        << expanded.toStdString();
     EXPECT_TRUE(expanded.contains("Q0.2 = Door1A * Door1B * /M0.")) << expanded.toStdString();
     EXPECT_EQ(readFile(path), kHandWritten) << "nothing is written before a save";
 
@@ -70,7 +71,8 @@ TEST_F(BlockInstancesTest, ABadCallIsACompileErrorAtItsRecordAndTheRecordIsKept)
         const QTreeWidgetItem* item = output->topLevelItem(i);
         if (item->text(1).contains(QStringLiteral("pin Out takes"))) {
             found = true;
-            EXPECT_EQ(item->text(0), QStringLiteral("Pluto 0, line 3:62")) << item->text(1).toStdString();
+            EXPECT_EQ(item->text(0), QStringLiteral("Pluto 0, line 3:62"))
+                << item->text(1).toStdString();
         }
     }
     EXPECT_TRUE(found);
