@@ -1718,6 +1718,58 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
 <context>
     <name>rs::ui::ProjectPage</name>
     <message>
+        <source>Add &amp;Standard Library</source>
+        <translation>&amp;Standardbibliothek hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add &amp;User Library...</source>
+        <translation>Ben&amp;utzerbibliothek hinzufügen...</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Library</source>
+        <translation>Bibliothek &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>No standard library is installed</source>
+        <translation>Keine Standardbibliothek ist installiert</translation>
+    </message>
+    <message>
+        <source>Function &amp;libraries:</source>
+        <translation>Funktions&amp;bibliotheken:</translation>
+    </message>
+    <message>
+        <source>Every library found: the standard ones and those in the project&apos;s folder</source>
+        <translation>Alle gefundenen Bibliotheken: die Standardbibliotheken und die im Ordner des Projekts</translation>
+    </message>
+    <message>
+        <source>A user library in the project&apos;s folder</source>
+        <translation>Eine Benutzerbibliothek im Ordner des Projekts</translation>
+    </message>
+    <message>
+        <source>A standard library</source>
+        <translation>Eine Standardbibliothek</translation>
+    </message>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1 (nicht gefunden)</translation>
+    </message>
+    <message>
+        <source>Add Library %1</source>
+        <translation>Bibliothek %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add User Library</source>
+        <translation>Benutzerbibliothek hinzufügen</translation>
+    </message>
+    <message>
+        <source>Function block libraries (*.rslib)</source>
+        <translation>Funktionsbausteinbibliotheken (*.rslib)</translation>
+    </message>
+    <message>
+        <source>Remove Library %1</source>
+        <translation>Bibliothek %1 entfernen</translation>
+    </message>
+    <message>
         <source>&amp;Include source code in compiled file</source>
         <translation>&amp;Quellcode in die kompilierte Datei aufnehmen</translation>
     </message>

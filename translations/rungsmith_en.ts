@@ -1748,6 +1748,58 @@ Its text page (F6) shows and edits it.</source>
 <context>
     <name>rs::ui::ProjectPage</name>
     <message>
+        <source>Add &amp;Standard Library</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add &amp;User Library...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Library</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No standard library is installed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Function &amp;libraries:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every library found: the standard ones and those in the project&apos;s folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A user library in the project&apos;s folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A standard library</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (not found)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add Library %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add User Library</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Function block libraries (*.rslib)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Library %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>&amp;Include source code in compiled file</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1718,6 +1718,58 @@ Dess textsida (F6) visar och redigerar den.</translation>
 <context>
     <name>rs::ui::ProjectPage</name>
     <message>
+        <source>Add &amp;Standard Library</source>
+        <translation>Lägg till &amp;standardbibliotek</translation>
+    </message>
+    <message>
+        <source>Add &amp;User Library...</source>
+        <translation>Lägg till an&amp;vändarbibliotek...</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Library</source>
+        <translation>&amp;Ta bort bibliotek</translation>
+    </message>
+    <message>
+        <source>No standard library is installed</source>
+        <translation>Inget standardbibliotek är installerat</translation>
+    </message>
+    <message>
+        <source>Function &amp;libraries:</source>
+        <translation>Funktions&amp;bibliotek:</translation>
+    </message>
+    <message>
+        <source>Every library found: the standard ones and those in the project&apos;s folder</source>
+        <translation>Alla bibliotek som hittas: standardbiblioteken och de i projektets mapp</translation>
+    </message>
+    <message>
+        <source>A user library in the project&apos;s folder</source>
+        <translation>Ett användarbibliotek i projektets mapp</translation>
+    </message>
+    <message>
+        <source>A standard library</source>
+        <translation>Ett standardbibliotek</translation>
+    </message>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1 (hittades inte)</translation>
+    </message>
+    <message>
+        <source>Add Library %1</source>
+        <translation>Lägg till bibliotek %1</translation>
+    </message>
+    <message>
+        <source>Add User Library</source>
+        <translation>Lägg till användarbibliotek</translation>
+    </message>
+    <message>
+        <source>Function block libraries (*.rslib)</source>
+        <translation>Funktionsblocksbibliotek (*.rslib)</translation>
+    </message>
+    <message>
+        <source>Remove Library %1</source>
+        <translation>Ta bort bibliotek %1</translation>
+    </message>
+    <message>
         <source>&amp;Include source code in compiled file</source>
         <translation>&amp;Inkludera källkoden i den kompilerade filen</translation>
     </message>
