@@ -91,7 +91,9 @@ void LadderPage::commitSteps(const QString& name,
     const int station = m_station;
     m_document->edit(name, [&](project::Project& p) {
         lang::UnitProgram& unit = project::programOf(p, station);
-        for (const auto& [address, ladder] : written) {
+        for (const auto& [stepAddress, ladder] : written) {
+            // Named, as clang 14 cannot capture a structured binding.
+            const lang::StepAddress& address = stepAddress;
             if (std::none_of(unit.steps.begin(), unit.steps.end(),
                              [&](const lang::Step& s) { return s.address == address; }))
                 unit.steps.insert(unit.steps.begin(), lang::Step{address, std::nullopt, {}, {}});

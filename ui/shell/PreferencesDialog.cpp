@@ -49,7 +49,8 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
         {&Preferences::ladderLinesOn, tr("Ladder lines on:")},
     };
     m_colors.reserve(fields.size());
-    for (const auto& [member, label] : fields) {
+    for (const auto& [member, fieldLabel] : fields) {
+        const QString label = fieldLabel; // clang 14 cannot capture a structured binding
         auto* button = new QToolButton(colors);
         button->setIconSize(QSize(32, 16));
         button->setAutoRaise(false);
