@@ -645,8 +645,12 @@ TEST_P(LadderEditingStates, OptionsAndCollapsedNetworksAreDrawn) {
     open(kTwoUnits);
     window.resize(1280, 800);
     clickNode({PageRef::Kind::Ladder, document(), 0, 0});
-    for (const auto& [text, memory, on] : {std::tuple{"Door switch fitted", "M0.5", true},
-                                           {"Second light curtain", "M0.6", false}}) {
+    for (const auto& option : {std::tuple{"Door switch fitted", "M0.5", true},
+                               {"Second light curtain", "M0.6", false}}) {
+        // Not a structured binding: clang 14 cannot capture one.
+        const char* text = std::get<0>(option);
+        const char* memory = std::get<1>(option);
+        const bool on = std::get<2>(option);
         DialogDriver driver({[&](QDialog& dialog) {
             dialog.findChild<QLineEdit*>(QStringLiteral("description"))
                 ->setText(QString::fromUtf8(text));
