@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "BlocksVerbs.h"
 
+#include "ProjectLoading.h"
+
 #include "Verbs.h"
 #include "blocks/LibrarySearch.h"
 #include "blocks/LibraryWords.h"
 #include "lang/Diagnostic.h"
 
 #include <QCoreApplication>
-#include <QFileInfo>
 
 #include <cstdio>
 
@@ -18,13 +19,6 @@ namespace {
 int usage(const QString& message) {
     std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
     return UsageOrIo;
-}
-
-// A --lib value is a file when it names one or has the library extension;
-// otherwise it is a library's name.
-bool isLibraryFile(const QString& value) {
-    return QFileInfo(value).isFile() ||
-           value.endsWith(QStringLiteral(".") + QLatin1String(blocks::kLibraryExtension));
 }
 
 struct Libraries {

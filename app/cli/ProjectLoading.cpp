@@ -13,11 +13,15 @@
 
 namespace rs::cli {
 
+bool isLibraryFile(const QString& value) {
+    return QFileInfo(value).isFile() ||
+           value.endsWith(QStringLiteral(".") + QLatin1String(blocks::kLibraryExtension));
+}
+
 QStringList libraryFiles(const Invocation& invocation) {
     QStringList files;
     for (const QString& value : invocation.options.values(QStringLiteral("lib")))
-        if (QFileInfo(value).isFile() ||
-            value.endsWith(QStringLiteral(".") + QLatin1String(blocks::kLibraryExtension)))
+        if (isLibraryFile(value))
             files.append(value);
     return files;
 }

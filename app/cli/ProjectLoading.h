@@ -13,6 +13,10 @@
 // in the project's folder and those given with --lib).
 namespace rs::cli {
 
+// Whether a --lib value is a library file (one that exists, or any name with
+// the library extension) rather than a library's name.
+bool isLibraryFile(const QString& value);
+
 // The --lib values that are library files.
 QStringList libraryFiles(const Invocation& invocation);
 

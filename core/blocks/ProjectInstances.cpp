@@ -18,21 +18,11 @@ namespace rs::blocks {
 
 namespace {
 
-const BlockDefinition* definitionOf(const BlockInstance& instance, const LibrarySet& libraries) {
-    if (!instance.library.empty()) {
-        const LoadedLibrary* library = libraries.findLibrary(instance.library);
-        return library ? library->library.findBlock(instance.type) : nullptr;
-    }
-    const LoadedLibrary* library = libraries.libraryOfBlock(instance.type);
-    return library ? library->library.findBlock(instance.type) : nullptr;
-}
-
-std::string libraryOf(const BlockDefinition& block, const LibrarySet& libraries) {
-    for (const auto& loaded : libraries.libraries)
-        for (const auto& candidate : loaded.library.blocks)
-            if (&candidate == &block)
-                return loaded.library.name;
-    return {};
+// The library holding the instance's block: the one it names, else the
+// first that has the block.
+const LoadedLibrary* libraryOf(const BlockInstance& instance, const LibrarySet& libraries) {
+    return instance.library.empty() ? libraries.libraryOfBlock(instance.type)
+                                    : libraries.findLibrary(instance.library);
 }
 
 // The statements and comments of an expansion, without blank lines.
@@ -50,6 +40,13 @@ const target::UnitTypeInfo& typeOf(const compiler::UnitSetups& setups, int stati
     if (found != setups.end() && found->second.type)
         return *found->second.type;
     return target::unitTypeInfo(target::baseType(lang::UnitFamily::Pluto));
+}
+
+// A user library entry's file: relative to the project's folder.
+QString userLibraryPath(const LibraryPlaces& places, const std::string& entry) {
+    const QString folder =
+        places.projectPath.isEmpty() ? QString() : QFileInfo(places.projectPath).absolutePath();
+    return QDir(folder).absoluteFilePath(QString::fromStdString(entry));
 }
 
 struct Pending {
@@ -90,7 +87,9 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
         UnitFrame frame(document, station);
         std::vector<Pending> pending;
         for (auto& [step, instance] : instances) {
-            const BlockDefinition* block = definitionOf(instance, libraries);
+            const LoadedLibrary* library = libraryOf(instance, libraries);
+            const BlockDefinition* block =
+                library ? library->library.findBlock(instance.type) : nullptr;
             const lang::SourceLocation at = instance.location;
             if (instance.hasExpansion()) {
                 if (!block)
@@ -128,7 +127,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
                                expansion.diagnostics.end());
             if (!expansion.ok())
                 continue;
-            instance.library = libraryOf(*block, libraries);
+            instance.library = library->library.name;
             instance.version = block->version;
             pending.push_back({step, std::move(instance), std::move(expansion.lines)});
         }
@@ -190,6 +189,24 @@ compiler::CompileResult compileProject(const project::Project& project,
     return result;
 }
 
+bool isUserLibraryEntry(std::string_view entry) {
+    const std::string_view extension = kLibraryExtension;
+    return entry.find('/') != std::string_view::npos ||
+           (entry.size() > extension.size() && entry.ends_with(extension) &&
+            entry[entry.size() - extension.size() - 1] == '.');
+}
+
+const LoadedLibrary* libraryOfEntry(const LibrarySet& set, const LibraryPlaces& places,
+                                    const std::string& entry) {
+    if (!isUserLibraryEntry(entry))
+        return set.findLibrary(entry);
+    const QString path = userLibraryPath(places, entry);
+    for (const auto& loaded : set.libraries)
+        if (loaded.origin == LibraryOrigin::User && loaded.path == path)
+            return &loaded;
+    return nullptr;
+}
+
 LibrarySet librariesFor(const LibraryPlaces& places,
                         const std::vector<std::string>& projectLibraries) {
     const QString projectFolder =
@@ -201,10 +218,8 @@ LibrarySet librariesFor(const LibraryPlaces& places,
     LibrarySet set;
     set.problems = standard.problems;
     for (const auto& named : projectLibraries) {
-        const QString name = QString::fromStdString(named);
-        if (name.endsWith(QStringLiteral(".") + QLatin1String(kLibraryExtension)) ||
-            name.contains(QLatin1Char('/'))) {
-            addLibraryFile(set, QDir(projectFolder).absoluteFilePath(name), LibraryOrigin::User);
+        if (isUserLibraryEntry(named)) {
+            addLibraryFile(set, userLibraryPath(places, named), LibraryOrigin::User);
         } else if (const LoadedLibrary* found = standard.findLibrary(named)) {
             if (!set.findLibrary(named))
                 set.libraries.push_back(*found);

@@ -51,6 +51,15 @@ struct LibraryPlaces {
 LibrarySet librariesFor(const LibraryPlaces& places,
                         const std::vector<std::string>& projectLibraries);
 
+// Whether an entry of Project::libraries names a user library's file (else
+// a standard library's name).
+bool isUserLibraryEntry(std::string_view entry);
+
+// The library an entry of Project::libraries stands for in a set made by
+// librariesFor; nothing when it was not found.
+const LoadedLibrary* libraryOfEntry(const LibrarySet& set, const LibraryPlaces& places,
+                                    const std::string& entry);
+
 // Reads the project, then expands its instances from the libraries it uses.
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibraryPlaces& places);
 

@@ -172,21 +172,17 @@ void ProjectPage::refreshLibraries() {
             m_libraries);
         all->setFlags(Qt::NoItemFlags);
     }
-    const blocks::LibrarySet found = blocks::librariesFor(
-        {QCoreApplication::applicationDirPath(), m_document->path(), {}}, p.libraries);
+    const blocks::LibraryPlaces places{
+        QCoreApplication::applicationDirPath(), m_document->path(), {}};
+    const blocks::LibrarySet found = blocks::librariesFor(places, p.libraries);
     for (const auto& entry : p.libraries) {
         auto* item = new QListWidgetItem(QString::fromStdString(entry), m_libraries);
-        const bool user = entry.find('/') != std::string::npos ||
-                          QString::fromStdString(entry).endsWith(QStringLiteral(".rslib"));
-        bool present = false;
-        for (const auto& loaded : found.libraries)
-            present = present || (user ? loaded.origin == blocks::LibraryOrigin::User
-                                       : loaded.library.name == entry);
-        if (user && present)
-            item->setToolTip(tr("A user library in the project's folder"));
-        else if (present)
-            item->setToolTip(tr("A standard library"));
-        if (!present) {
+        const bool present = blocks::libraryOfEntry(found, places, entry) != nullptr;
+        if (present)
+            item->setToolTip(blocks::isUserLibraryEntry(entry)
+                                 ? tr("A user library in the project's folder")
+                                 : tr("A standard library"));
+        else {
             item->setText(tr("%1 (not found)").arg(item->text()));
             item->setForeground(errorTextColor(m_libraries->palette()));
         }
