@@ -7,6 +7,7 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <optional>
 
 namespace rs::render {
 
@@ -52,6 +53,8 @@ public:
                     drawWire(wire, powered);
         for (const auto& element : m_layout.elements)
             drawElement(element);
+        if (m_layout.block)
+            drawBlock(*m_layout.block);
         for (const auto& text : m_layout.texts)
             drawText(text);
         m_painter.restore();
@@ -95,6 +98,56 @@ private:
         }
         label(e.nameRect, e.name, m_style.nameInk, m_nameFont);
         label(e.addressRect, e.address, m_style.addressInk, m_addressFont);
+    }
+
+    // The live value of a pin's variable; nothing without a snapshot or a variable.
+    std::optional<std::int64_t> valueOf(const ladder::PinLayout& pin) const {
+        if (!m_power || !pin.address)
+            return std::nullopt;
+        const auto found = m_power->values.find(*pin.address);
+        if (found == m_power->values.end())
+            return std::nullopt;
+        return found->second;
+    }
+
+    void drawBlock(const ladder::BlockLayout& block) {
+        m_painter.setPen(m_style.wirePen(false));
+        m_painter.setBrush(m_style.background);
+        m_painter.drawRect(block.box);
+        m_painter.setPen(m_style.ink);
+        drawText(m_symbolFont, block.typeRect, Qt::AlignCenter, block.type, Qt::ElideRight);
+        for (const auto& pin : block.pins)
+            drawPin(pin);
+    }
+
+    // A pin: its name inside the box, its wire, and its operand with the
+    // live value; a bit pin's wire is powered as a contact's is.
+    void drawPin(const ladder::PinLayout& pin) {
+        const bool in = pin.direction == blocks::PinDirection::In;
+        const std::optional<std::int64_t> value = valueOf(pin);
+        const bool bit = pin.kind == blocks::PinKind::Bit;
+        const bool powered = bit && value && *value != 0;
+        m_painter.setPen(m_style.wirePen(powered));
+        m_painter.drawLine(pin.stub);
+        if (pin.power) {
+            m_painter.setPen(m_style.wirePen(powered));
+            m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
+            contact(pin.contactRect, {}, false);
+        }
+        m_painter.setPen(m_style.ink);
+        drawText(m_addressFont, pin.pinRect,
+                 (in ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, pin.pin, Qt::ElideRight);
+        const int side = pin.power ? Qt::AlignHCenter : (in ? Qt::AlignRight : Qt::AlignLeft);
+        if (!pin.name.isEmpty()) {
+            m_painter.setPen(m_style.nameInk);
+            drawText(m_nameFont, pin.nameRect, side | Qt::AlignBottom, pin.name, Qt::ElideMiddle);
+        }
+        QString operand = pin.operand;
+        if (value && !bit)
+            operand += QStringLiteral(" = %1").arg(*value);
+        m_painter.setPen(pin.open ? m_style.ink : m_style.addressInk);
+        drawText(pin.open ? m_nameFont : m_addressFont, pin.operandRect, side | Qt::AlignTop,
+                 operand, Qt::ElideMiddle);
     }
 
     // -| |-, with a slash when normally closed, or the edge's letter.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "ladder/Layout.h"
+#include "lang/Address.h"
 
 #include <cstdint>
 #include <map>
@@ -23,6 +24,9 @@ struct StatementPower {
 // drawing only restyles what the snapshot says; it never evaluates logic.
 struct PowerSnapshot {
     std::map<std::uint32_t, StatementPower> statements; // by statement number in the unit
+    // After the scan, the values of the variables bound to block pins (those
+    // the page asked for): a box's pins show them.
+    std::map<lang::Address, std::int64_t> values;
 
     bool ran(std::uint32_t statement) const;
     // Element 0 is the output: it conducts when it is energised.

@@ -3,10 +3,8 @@
 
 #include "BlockInstance.h"
 #include "InstanceExpansion.h"
+#include "InstanceStanding.h"
 #include "UnitVariables.h"
-#include "compiler/UnitSetup.h"
-#include "lang/NameResolver.h"
-#include "target/UnitType.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -17,30 +15,6 @@
 namespace rs::blocks {
 
 namespace {
-
-// The library holding the instance's block: the one it names, else the
-// first that has the block.
-const LoadedLibrary* libraryOf(const BlockInstance& instance, const LibrarySet& libraries) {
-    return instance.library.empty() ? libraries.libraryOfBlock(instance.type)
-                                    : libraries.findLibrary(instance.library);
-}
-
-// The statements and comments of an expansion, without blank lines.
-std::vector<lang::Line> meaningful(std::vector<lang::Line>::const_iterator first,
-                                   std::vector<lang::Line>::const_iterator last) {
-    std::vector<lang::Line> lines;
-    for (auto line = first; line != last; ++line)
-        if (!std::holds_alternative<lang::BlankLine>(line->body))
-            lines.push_back(*line);
-    return lines;
-}
-
-const target::UnitTypeInfo& typeOf(const compiler::UnitSetups& setups, int station) {
-    const auto found = setups.find(station);
-    if (found != setups.end() && found->second.type)
-        return *found->second.type;
-    return target::unitTypeInfo(target::baseType(lang::UnitFamily::Pluto));
-}
 
 // A user library entry's file: relative to the project's folder.
 QString userLibraryPath(const LibraryPlaces& places, const std::string& entry) {
@@ -60,8 +34,6 @@ struct Pending {
 InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& libraries) {
     InstanceExpansion result;
     lang::Diagnostics& diagnostics = result.diagnostics;
-    lang::Diagnostics ignored; // the compiler reports what is wrong with the units
-    const compiler::UnitSetups setups = compiler::collectUnits(document, ignored);
     for (auto& unit : document.units) {
         const int station = unit.station();
         std::vector<std::pair<lang::Step*, BlockInstance>> instances;
@@ -74,15 +46,10 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
         }
         if (instances.empty())
             continue;
-        PrivateVariables variables(typeOf(setups, station),
-                                   lang::instructionSetOf(document, station), station,
-                                   usedAddresses(document, station));
-        for (const auto& [step, instance] : instances)
-            for (const auto& variable : instance.privates) {
-                const lang::AddressWord word = lang::readAddressWord(variable.operand);
-                if (word.shape == lang::AddressWord::Shape::Variable)
-                    variables.take(word.address);
-            }
+        std::vector<const BlockInstance*> recorded;
+        for (const auto& found : instances)
+            recorded.push_back(&found.second);
+        PrivateVariables variables = freeVariables(document, station, recorded);
 
         UnitFrame frame(document, station);
         std::vector<Pending> pending;
@@ -94,19 +61,13 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
             if (instance.hasExpansion()) {
                 if (!block)
                     continue; // the statements are the program; the library is not needed
-                if (!instance.version.empty() && instance.version != block->version) {
+                const Standing standing = standingOf(block, instance, *step, frame, variables);
+                if (standing == Standing::OtherVersion)
                     diagnostics.push_back({lang::Severity::Warning, at.line, at.column,
                                            instance.type + " is version " + block->version +
                                                " in its library; this instance was made by " +
                                                instance.version});
-                    continue;
-                }
-                BlockInstance again = instance;
-                PrivateVariables spare = variables; // what the check takes is not kept
-                const Expansion expected = expandInstance(*block, again, frame, spare);
-                const auto first = step->lines.begin() + std::ptrdiff_t(instance.record + 1);
-                const auto last = step->lines.begin() + std::ptrdiff_t(instance.end);
-                if (!expected.ok() || meaningful(first, last) != expected.lines)
+                else if (standing == Standing::EditedByHand)
                     diagnostics.push_back(
                         {lang::Severity::Warning, at.line, at.column,
                          "the statements of this " + instance.type +

@@ -60,6 +60,8 @@ EditResult settle(Network& network) {
     std::vector<NetworkItem> items;
     for (auto& item : network.items) {
         if (auto* rung = std::get_if<Rung>(&item)) {
+            if (network.block)
+                return {"a block network holds its block alone: add a network for the rung"};
             normalizeCondition(*rung);
             if (!isExpressible(*rung))
                 return {kShared};

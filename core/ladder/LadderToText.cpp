@@ -41,6 +41,8 @@ struct ElementToExpr {
 };
 
 bool needsOwnRecord(const Network& network) {
+    if (network.block)
+        return false; // its ";@block" record is its own
     return network.record || !network.comment.empty() || statementCount(network) != 1 ||
            (!network.items.empty() && std::holds_alternative<lang::Line>(network.items.front()));
 }
@@ -118,7 +120,9 @@ std::vector<lang::Line> toLines(const StepLadder& step) {
     bool recording = anyNeeds && !anyRecord;
     for (const auto& network : step.networks) {
         recording = recording || needsOwnRecord(network);
-        if (recording)
+        if (network.block)
+            lines.insert(lines.end(), network.block->lines.begin(), network.block->lines.end());
+        else if (recording)
             lines.push_back(recordLine(network));
         for (const auto& item : network.items) {
             if (const auto* rung = std::get_if<Rung>(&item)) {

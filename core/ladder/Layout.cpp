@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Layout.h"
 
+#include "BlockLayout.h"
 #include "ElementVocabulary.h"
 
 #include "lang/ElementNumbering.h"
@@ -72,6 +73,8 @@ public:
 
         qreal y = title();
         const qreal bodyTop = y;
+        if (m_network.block)
+            y = placeBlock(m_layout, *m_network.block, m_context, m_railX, y, m_width);
         std::uint32_t statement = m_context.firstStatement;
         for (std::size_t item = 0; item < m_network.items.size(); ++item) {
             if (const auto* rung = std::get_if<Rung>(&m_network.items[item])) {
@@ -81,7 +84,7 @@ public:
                 y = placeNote(std::get<lang::Line>(m_network.items[item]), y);
             }
         }
-        if (y > bodyTop)
+        if (y > bodyTop && !m_network.block)
             m_layout.wires.push_back({QLineF(m_rightRailX, bodyTop, m_rightRailX, y), {}, true});
         if (m_commentWidth > 0)
             m_width = std::max(m_width, m_commentX + m_commentWidth);
@@ -391,6 +394,13 @@ private:
         return bottom;
     }
 
+    // A block network shows its block's description as its comment.
+    std::string commentShown() const {
+        if (m_network.block && m_context.block)
+            return m_context.block->description.in(m_context.language);
+        return m_network.comment;
+    }
+
     // The title and the comment's lines beside it; returns where the rungs start.
     qreal title() {
         const qreal top = m_metrics.margin;
@@ -400,7 +410,7 @@ private:
                                   m_context.title.isEmpty()
                                       ? QStringLiteral("Network %1").arg(m_context.number)
                                       : m_context.title});
-        const QStringList lines = text(m_network.comment).split(u'\n');
+        const QStringList lines = text(commentShown()).split(u'\n');
         qreal y = top;
         for (const QString& whole : lines) {
             const QString line = shortened(whole);

@@ -6,11 +6,16 @@
 #include "Network.h"
 #include "SymbolTable.h"
 
+#include "blocks/BlockLibrary.h"
+#include "lang/Address.h"
+
 #include <QLineF>
 #include <QRectF>
 #include <QString>
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 // Where everything of a network is drawn, computed from the model alone (no
@@ -83,6 +88,33 @@ struct TextLayout {
     QString text;
 };
 
+// One pin of a block's box: its name inside the box, a short wire out of
+// the box, and beyond it the operand bound to it.
+struct PinLayout {
+    QString pin;
+    blocks::PinDirection direction = blocks::PinDirection::In;
+    blocks::PinKind kind = blocks::PinKind::Bit;
+    bool open = false;  // unbound: drawn "???" (manual 3.10)
+    bool power = false; // the first bit input: the rung's power through a contact of its operand
+    QString name;       // the operand's symbolic name; empty when it has none
+    QString operand;    // the operand's address, or the time or constant bound
+    std::optional<lang::Address> address; // the bound variable, whose live value is shown
+    QRectF pinRect;                       // the pin's name, inside the box
+    QLineF stub;                          // from the box's side outwards
+    QRectF contactRect;                   // the power pin's contact, on the rung
+    QRectF nameRect;    // the operand's name (above the stub), or for the power pin its contact's
+    QRectF operandRect; // the operand (below the stub)
+};
+
+// A block network's box (blocks.md): the block's name at its top, inputs on
+// the left, outputs on the right.
+struct BlockLayout {
+    QRectF box;
+    QString type;
+    QRectF typeRect;
+    std::vector<PinLayout> pins;
+};
+
 struct NetworkLayout {
     LayoutMetrics metrics;
     QSizeF size;
@@ -91,6 +123,7 @@ struct NetworkLayout {
     std::vector<ElementLayout> elements;
     std::vector<WireLayout> wires;
     std::vector<TextLayout> texts;
+    std::optional<BlockLayout> block; // a block network's box; it has no elements
 };
 
 struct LayoutContext {
@@ -99,6 +132,11 @@ struct LayoutContext {
     std::uint32_t firstStatement = 0; // number in the unit of the network's first statement
     const SymbolTable* symbols = nullptr;
     LayoutMetrics metrics;
+    // A block network's block: its pins and description. Without it the box
+    // shows the pins the record binds, as inputs.
+    const blocks::BlockDefinition* block = nullptr;
+    std::string language = "en"; // of the block's description ("en", "sv", "de")
+    QString blockNote;           // under the box: that another version of the block exists
 };
 
 // A comment line is drawn with at most this many characters and an ellipsis:

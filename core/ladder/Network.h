@@ -3,6 +3,8 @@
 
 #include "Rung.h"
 
+#include "blocks/BlockInstance.h"
+
 #include <optional>
 #include <string>
 #include <variant>
@@ -13,7 +15,17 @@ namespace rs::ladder {
 // A rung, or a comment or blank line standing among the rungs.
 using NetworkItem = std::variant<Rung, lang::Line>;
 
-// A network: rungs shown together under one comment. In a file written by
+// A block instance shown as one box (blocks.md): its ";@block" record, the
+// statements it stands for and its ";@end", kept as they were read so that
+// writing the network back gives the same lines.
+struct BlockCall {
+    blocks::BlockInstance instance; // read from lines.front()
+    std::vector<lang::Line> lines;
+
+    friend bool operator==(const BlockCall& a, const BlockCall& b) { return a.lines == b.lines; }
+};
+
+// A network: rungs shown together under one comment, or one block instance. In a file written by
 // hand every statement is its own network; a ";@network" record groups the
 // statements after it (docs/file-format.md).
 struct Network {
@@ -22,11 +34,19 @@ struct Network {
     // back as it was; none for a network without a record.
     std::optional<lang::CommentLine> record;
     std::vector<NetworkItem> items;
+    // A block network: the items are only the comment and blank lines that
+    // follow the instance's ";@end", never rungs.
+    std::optional<BlockCall> block;
 
     friend bool operator==(const Network&, const Network&) = default;
 };
 
-// Statements the network stands for: one per output.
+// A call of a block written without its statements, which reading the
+// project expands (blocks.md): its record and ";@end".
+BlockCall unexpandedCall(blocks::BlockInstance instance);
+
+// Statements the network stands for: one per output, or the statements of
+// its block instance.
 int statementCount(const Network& network);
 
 // The ladder form of one step.

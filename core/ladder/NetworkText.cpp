@@ -85,6 +85,14 @@ NetworksReading readNetworksText(std::string_view text) {
                                 "; networks on the "
                                 "clipboard use addresses"};
     StepLadder ladder = toLadder(parsed.document.units.front().steps.front());
+    // A pasted instance is a new one: it gets its own private variables and
+    // statements when the project expands it, never the copied instance's.
+    for (auto& network : ladder.networks)
+        if (network.block) {
+            blocks::BlockInstance instance = std::move(network.block->instance);
+            instance.privates.clear();
+            network.block = unexpandedCall(std::move(instance));
+        }
     return {std::move(ladder.networks), {}};
 }
 

@@ -21,7 +21,9 @@ struct NetworksReading {
 };
 
 // Reads what networksText wrote, or any statements of the language with
-// addresses (each becomes a network, or those under a record one).
+// addresses (each becomes a network, or those under a record one). A block
+// instance comes without its statements and private variables: pasted, it
+// is a new instance that the project expands.
 NetworksReading readNetworksText(std::string_view text);
 
 } // namespace rs::ladder

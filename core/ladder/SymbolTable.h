@@ -4,7 +4,9 @@
 #include "lang/Ast.h"
 
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace rs::ladder {
 
@@ -17,11 +19,14 @@ public:
 
     // Empty when the address has no name.
     const std::string& nameOf(const lang::Address& address) const;
+    // The address a name stands for, in any case; nothing when undeclared.
+    std::optional<lang::Address> addressOf(std::string_view name) const;
 
 private:
     void declare(const std::vector<lang::Line>& lines);
 
     std::map<lang::Address, std::string> m_names;
+    std::map<std::string, lang::Address> m_addresses; // by folded name
 };
 
 } // namespace rs::ladder

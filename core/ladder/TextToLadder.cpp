@@ -3,6 +3,7 @@
 
 #include "ElementVocabulary.h"
 
+#include "blocks/BlockInstance.h"
 #include "project/Annotation.h"
 
 namespace rs::ladder {
@@ -91,13 +92,30 @@ Rung toRung(const lang::Statement& statement, const std::optional<std::string>& 
     return rung;
 }
 
-StepLadder toLadder(const lang::Step& step) {
+StepLadder toLadder(const lang::Step& step, const BlockShown& shown) {
     StepLadder ladder;
+    std::vector<blocks::BlockInstance> instances;
+    for (auto& instance : blocks::findInstances(step).instances)
+        if (!shown || shown(instance))
+            instances.push_back(std::move(instance));
+    auto nextInstance = instances.begin();
     bool grouping = false;
-    for (const auto& line : step.lines) {
+    for (std::size_t index = 0; index < step.lines.size(); ++index) {
+        const lang::Line& line = step.lines[index];
+        if (nextInstance != instances.end() && nextInstance->record == index) {
+            const auto first = step.lines.begin() + std::ptrdiff_t(index);
+            const auto last = step.lines.begin() + std::ptrdiff_t(nextInstance->end) + 1;
+            Network network;
+            network.block = BlockCall{std::move(*nextInstance), {first, last}};
+            ladder.networks.push_back(std::move(network));
+            index = ladder.networks.back().block->instance.end;
+            ++nextInstance;
+            grouping = false; // what follows is not part of the block
+            continue;
+        }
         if (auto comment = networkComment(line)) {
             const auto& record = std::get<lang::CommentLine>(line.body);
-            ladder.networks.push_back({std::move(*comment), record, {}});
+            ladder.networks.push_back({std::move(*comment), record, {}, {}});
             grouping = true;
             continue;
         }

@@ -6,11 +6,16 @@
 
 namespace rs::ladder {
 
-std::vector<StepPage> unitLadder(const lang::UnitProgram& unit) {
+std::vector<StepPage> unitLadder(const lang::UnitProgram& unit, const UnitBlockShown& shown) {
     std::vector<StepPage> pages;
     std::uint32_t statement = 0;
     for (const auto& step : unit.steps) {
-        StepPage page{step.address, toLadder(step), {}};
+        BlockShown inStep;
+        if (shown)
+            inStep = [&](const blocks::BlockInstance& instance) {
+                return shown(step, instance);
+            };
+        StepPage page{step.address, toLadder(step, inStep), {}};
         for (const auto& network : page.ladder.networks) {
             page.firstStatements.push_back(statement);
             statement += static_cast<std::uint32_t>(statementCount(network));

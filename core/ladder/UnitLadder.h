@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Network.h"
+#include "TextToLadder.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,8 +19,10 @@ struct StepPage {
     std::vector<std::uint32_t> firstStatements; // one per network
 };
 
-// Every step of the unit's code in file order.
-std::vector<StepPage> unitLadder(const lang::UnitProgram& unit);
+// Every step of the unit's code in file order; block instances are boxes
+// where `shown` says so (toLadder), all of them when it is not given.
+using UnitBlockShown = std::function<bool(const lang::Step&, const blocks::BlockInstance&)>;
+std::vector<StepPage> unitLadder(const lang::UnitProgram& unit, const UnitBlockShown& shown = {});
 
 // A ladder page holds one scene item per network, laid out whole; beyond this
 // many lines of code it would take minutes and gigabytes, so the page is not

@@ -54,14 +54,25 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
         // Instances written without their statements get them now, as one
         // undoable edit, so the project shows them and saving writes them.
         project::Project expanded = document->project();
-        const blocks::InstanceExpansion expansion = blocks::expandInstances(
-            expanded.program,
-            blocks::librariesFor({QCoreApplication::applicationDirPath(), document->m_path, {}},
-                                 expanded.libraries));
+        const blocks::InstanceExpansion expansion =
+            blocks::expandInstances(expanded.program, document->libraries());
         if (expansion.expanded > 0)
             document->replace(tr("Expand Block Instances"), expanded);
     }
     return document;
+}
+
+const blocks::LibrarySet& ProjectDocument::libraries() const {
+    if (!m_libraries || m_libraries->entries != m_project.libraries || m_libraries->path != m_path)
+        m_libraries =
+            Libraries{m_project.libraries, m_path,
+                      blocks::librariesFor({QCoreApplication::applicationDirPath(), m_path, {}},
+                                           m_project.libraries)};
+    return m_libraries->set;
+}
+
+void ProjectDocument::reloadLibraries() {
+    m_libraries.reset();
 }
 
 bool ProjectDocument::edit(const QString& text,

@@ -4,6 +4,7 @@
 // Holds core types by value, so their headers come in here; Qt 6.4's moc cannot
 // parse the C++20 standard headers they bring in (<concepts>) and needs only the names.
 #ifndef Q_MOC_RUN
+#include "blocks/LibrarySearch.h"
 #include "project/Project.h"
 #include "project/ProjectChange.h"
 #endif
@@ -13,6 +14,7 @@
 #include <QUndoStack>
 
 #include <functional>
+#include <optional>
 
 namespace rs::ui {
 
@@ -35,6 +37,14 @@ public:
     // the edit changes nothing. Returns whether it changed the project.
     bool edit(const QString& text, const std::function<void(project::Project&)>& change);
     bool replace(const QString& text, const project::Project& after);
+
+    // The libraries the project uses (Project::libraries, found as
+    // blocks::librariesFor finds them), read when first asked for and again
+    // once that list or the project's file changes.
+    const blocks::LibrarySet& libraries() const;
+    // Reads the libraries again at the next call of libraries(): a user
+    // library's file was written.
+    void reloadLibraries();
 
     // Called by the undo commands.
     void applyChange(const project::ProjectChange& change, bool forward);
@@ -84,6 +94,12 @@ private:
     bool m_lastModified = false;
     bool m_damaged = false;
     QByteArray m_damagedText;
+    struct Libraries {
+        std::vector<std::string> entries;
+        QString path;
+        blocks::LibrarySet set;
+    };
+    mutable std::optional<Libraries> m_libraries;
 };
 
 } // namespace rs::ui

@@ -73,6 +73,10 @@ LadderActions::LadderActions(QWidget* page) {
     newNetwork = keyed(made(page, "newNetworkAction", tr("&New Network"),
                             tr("A new network below the selected one")),
                        {QKeySequence(Qt::Key_Insert)});
+    insertBlock = keyed(made(page, "insertBlockAction", tr("&Function..."),
+                             tr("A new network holding a function block of the libraries")),
+                        {QKeySequence(Qt::SHIFT | Qt::Key_F)});
+    insertBlock->setIconText(tr("F"));
     expandAll =
         made(page, "expandAllAction", tr("Expand All"), tr("Show the rungs of every network"));
     collapseAll = made(page, "collapseAllAction", tr("Collapse All"),
@@ -123,6 +127,7 @@ LadderActions::LadderActions(QWidget* page) {
                           {QKeySequence(Qt::Key_Home)});
 
     newConfigOption = made(page, "newConfigOptionAction", tr("New &Config Option..."));
+    updateBlock = made(page, "updateBlockAction", tr("&Update Block"));
     cutNetworks = made(page, "cutNetworksAction", tr("Cu&t Network(s)"));
     copyNetworks = made(page, "copyNetworksAction", tr("&Copy Network(s)"));
     pasteNetworks = made(page, "pasteNetworksAction", tr("&Paste Network(s)"));
@@ -140,9 +145,9 @@ std::vector<QAction*> LadderActions::toolBar() const {
         if (kind == ElementKind::Comparison)
             bar.push_back(nullptr);
     }
-    bar.insert(bar.end(), {nullptr, deleteSelection, newNetwork, expandAll, collapseAll, nullptr,
-                           editNetwork, updateNetwork, undoNetwork, nullptr, zoomIn, zoomOut,
-                           zoomReset, nullptr, print, exportPdf});
+    bar.insert(bar.end(), {insertBlock, nullptr, deleteSelection, newNetwork, expandAll,
+                           collapseAll, nullptr, editNetwork, updateNetwork, undoNetwork, nullptr,
+                           zoomIn, zoomOut, zoomReset, nullptr, print, exportPdf});
     return bar;
 }
 

@@ -32,6 +32,7 @@ public:
     std::vector<std::pair<ladder::ElementKind, QAction*>> insert; // in the vocabulary's order
     QAction* deleteSelection;
     QAction* newNetwork;
+    QAction* insertBlock; // New Network → Function…, the F button
     QAction* expandAll;
     QAction* collapseAll;
     QAction* editNetwork;
@@ -56,6 +57,7 @@ public:
 
     // The context menu's commands without keys.
     QAction* newConfigOption;
+    QAction* updateBlock;
     QAction* cutNetworks;
     QAction* copyNetworks;
     QAction* pasteNetworks;

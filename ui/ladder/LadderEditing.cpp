@@ -11,6 +11,7 @@
 #include "LadderTool.h"
 #include "NetworkEditTool.h"
 #include "NetworkItem.h"
+#include "blocks/ProjectInstances.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
 #include "project/Sequences.h"
@@ -85,10 +86,12 @@ void LadderPage::commitSteps(const QString& name,
              !ladder.networks[m_pending->second].items.empty()))
             m_pending.reset();
         // A network without rungs is the page's until it holds one.
-        std::erase_if(ladder.networks, [](const ladder::Network& n) { return n.items.empty(); });
+        std::erase_if(ladder.networks,
+                      [](const ladder::Network& n) { return n.items.empty() && !n.block; });
         written.emplace_back(m_steps[step].address, std::move(ladder));
     }
     const int station = m_station;
+    const blocks::LibrarySet& libraries = m_document->libraries();
     m_document->edit(name, [&](project::Project& p) {
         lang::UnitProgram& unit = project::programOf(p, station);
         for (const auto& [stepAddress, ladder] : written) {
@@ -99,6 +102,9 @@ void LadderPage::commitSteps(const QString& name,
                 unit.steps.insert(unit.steps.begin(), lang::Step{address, std::nullopt, {}, {}});
             ladder::setStepLadder(unit, address, ladder);
         }
+        // Block instances written without statements (inserted, rebound,
+        // pasted) get them, and their own private variables, in this step.
+        blocks::expandInstances(p.program, libraries);
     });
 }
 
@@ -215,9 +221,15 @@ void LadderPage::editProperties() {
     if (!editable())
         return;
     const LadderCursor cursor = m_drawing.cursor;
-    if (!cursor.valid() || cursor.wholeNetwork())
+    if (!cursor.valid())
         return;
     const ladder::Network& network = m_steps[cursor.step].ladder.networks[cursor.network];
+    if (network.block) {
+        editBlockPins(cursor.step, cursor.network);
+        return;
+    }
+    if (cursor.wholeNetwork())
+        return;
     if (cursor.node) {
         const ladder::Circuit* node = ladder::nodeAt(network, *cursor.node);
         if (!node || !node->isElement())

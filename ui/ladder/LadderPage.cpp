@@ -104,6 +104,8 @@ void LadderPage::connectActions() {
         on(action, [this, kind = kind] { insertElement(kind); });
     on(a.deleteSelection, [this] { deleteSelection(); });
     on(a.newNetwork, [this] { newNetwork(); });
+    on(a.insertBlock, [this] { insertBlock(); });
+    on(a.updateBlock, [this] { updateBlock(); });
     on(a.expandAll, [this] { setAllCollapsed(false); });
     on(a.collapseAll, [this] { setAllCollapsed(true); });
     on(a.editNetwork, [this] { enterEditMode(); });

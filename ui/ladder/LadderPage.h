@@ -5,6 +5,7 @@
 #include "LadderDrawing.h"
 #include "LadderLiveState.h"
 #ifndef Q_MOC_RUN
+#include "blocks/InstanceStanding.h"
 #include "ladder/UnitLadder.h"
 #include "lang/Diagnostic.h"
 #endif
@@ -20,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 class QAction;
@@ -60,7 +62,7 @@ struct EditSession;
 // The page's definition is in files by idea: LadderPage.cpp (actions,
 // titles, live state, selection), LadderPageScene.cpp (following the model),
 // LadderPageInput.cpp (what the tool states do with the mouse and keys),
-// LadderEditing.cpp, NetworkClipboard.cpp, LadderPrinting.cpp and
+// LadderEditing.cpp, BlockNetworks.cpp, NetworkClipboard.cpp, LadderPrinting.cpp and
 // LadderDiagnostics.cpp. The states themselves are IdleTool,
 // NetworkEditTool, DragTool and LiveTool; the keys are LadderActions.
 class LadderPage : public QWidget {
@@ -81,6 +83,9 @@ public:
     // pointer repaints without laying anything out.
     void setLiveState(const LadderLiveState* state);
     bool isLive() const { return m_drawing.live != nullptr; }
+    // The variables bound to the pins of the page's block networks, whose
+    // values the live state is to carry (render::PowerSnapshot::values).
+    std::set<lang::Address> pinVariables() const;
     // The colour the element is drawn with now: powered, or not.
     QColor elementColor(std::uint32_t statement, std::uint16_t element) const;
 
@@ -114,6 +119,15 @@ public:
     // networks or between steps (what dragging does). False when refused.
     bool moveElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side);
     void newNetwork();
+    // Inserts a network holding an instance of a library block (New Network →
+    // Function…): the block chosen from the project's libraries, then its pins.
+    void insertBlock();
+    // The pins dialog of a block network.
+    void editBlockPins(int step, int network);
+    // Expands the selected instance again with its block's current version.
+    void updateBlock();
+    // How the instance a block network holds stands; null for another network.
+    const blocks::InstanceStatus* blockStatus(int step, int network) const;
     // A Config Option network at the start of the PLC code (manual 11.6).
     void newConfigOption();
     void editConfigOption(int step, int network);
@@ -208,6 +222,11 @@ private:
     // Several steps changed by one edit, as one undo step.
     void commitSteps(const QString& name, std::vector<std::pair<int, ladder::StepLadder>> steps);
     void selectAdded(int step, int network, const std::vector<QString>& before);
+    // Writes a block network's instance anew, without statements, so that
+    // committing expands it.
+    void rewriteBlock(const QString& name, int step, int network, blocks::BlockInstance instance);
+    // What a block network says under its box: that its block changed.
+    QString blockNote(const blocks::InstanceStatus& status) const;
 
     PageTitle* m_title;
     QToolBar* m_toolBar;
@@ -224,6 +243,7 @@ private:
     std::vector<QString> m_stepComments; // the trailing comment of each step's header
     std::vector<StepHeaderItem*> m_headers;
     std::vector<std::vector<NetworkItem*>> m_items;
+    std::vector<blocks::InstanceStatus> m_blockStatuses; // of the unit's instances
     ladder::SymbolTable m_symbols;
     std::vector<lang::Line> m_names; // the declarations the symbols were read from
     int m_namesVersion = 0;

@@ -70,6 +70,8 @@ void LadderPage::openAt(const QPointF& scenePosition) {
     setCursor(at);
     if (item->option())
         editConfigOption(at.step, at.network);
+    else if (item->network().block)
+        editBlockPins(at.step, at.network);
     else if (at.wholeNetwork())
         editNetworkComment();
     else
@@ -88,11 +90,13 @@ void LadderPage::showEditMenu(const QPoint& globalPosition) {
     const LadderActions& a = *m_actions;
     QMenu menu(this);
     menu.setObjectName(QStringLiteral("ladderMenu"));
-    menu.addActions({a.newNetwork, a.newConfigOption, a.cutNetworks, a.copyNetworks,
+    menu.addActions({a.newNetwork, a.insertBlock, a.newConfigOption, a.cutNetworks, a.copyNetworks,
                      a.pasteNetworks, a.deleteNetworks});
     menu.addSeparator();
     if (cursorElement())
         menu.addActions({a.properties, a.deleteSelection});
+    if (blockStatus(m_drawing.cursor.step, m_drawing.cursor.network))
+        menu.addActions({a.properties, a.updateBlock});
     menu.addActions({a.networkComment, a.editNetwork});
     if (m_sequence > 0)
         menu.addAction(a.newStep);

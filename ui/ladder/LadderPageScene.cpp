@@ -4,6 +4,7 @@
 // when its network changed, and the items placed one below the other.
 #include "LadderPage.h"
 
+#include "BlockText.h"
 #include "LadderTool.h"
 #include "LadderView.h"
 #include "NetworkItem.h"
@@ -32,6 +33,7 @@ void LadderPage::rebuild() {
     m_steps.clear();
     m_stepComments.clear();
     m_undrawnLines = 0;
+    m_blockStatuses.clear();
     if (m_document) {
         const project::Project& project = m_document->project();
         std::vector<lang::Line> names = project.program.preamble;
@@ -44,7 +46,18 @@ void LadderPage::rebuild() {
                 m_undrawnLines = lines;
                 continue;
             }
-            for (auto& page : ladder::unitLadder(unit))
+            m_blockStatuses =
+                blocks::instanceStatuses(project.program, m_station, m_document->libraries());
+            // An instance is a box while it is what its block makes of it (or
+            // another version's making); edited by hand, it is its statements.
+            const auto shown = [this](const lang::Step& step, const blocks::BlockInstance& found) {
+                for (const auto& status : m_blockStatuses)
+                    if (status.address == step.address && status.instance.record == found.record)
+                        return status.standing == blocks::Standing::AsMade ||
+                               status.standing == blocks::Standing::OtherVersion;
+                return false;
+            };
+            for (auto& page : ladder::unitLadder(unit, shown))
                 if (page.address.sequence == m_sequence)
                     m_steps.push_back(std::move(page));
             for (const auto& step : unit.steps)
@@ -120,6 +133,11 @@ void LadderPage::rebuild() {
             context.title = tr("Network %1").arg(n + 1);
             context.firstStatement = page.firstStatements[n];
             context.symbols = &m_symbols;
+            if (const blocks::InstanceStatus* status = blockStatus(static_cast<int>(s), n)) {
+                context.block = status->block;
+                context.language = BlockText::descriptionLanguage();
+                context.blockNote = blockNote(*status);
+            }
             items[n]->setIndex(static_cast<int>(s), n);
             items[n]->setNetwork(page.ladder.networks[n], context, m_namesVersion);
         }

@@ -31,9 +31,13 @@ std::vector<std::pair<int, int>> LadderPage::chosenNetworks() const {
 
 void LadderPage::copyNetworks() {
     std::vector<ladder::Network> networks;
-    for (auto [step, network] : chosenNetworks())
-        if (network < networkCount(step) && !m_steps[step].ladder.networks[network].items.empty())
-            networks.push_back(m_steps[step].ladder.networks[network]);
+    for (auto [step, network] : chosenNetworks()) {
+        if (network >= networkCount(step))
+            continue;
+        const ladder::Network& chosen = m_steps[step].ladder.networks[network];
+        if (!chosen.items.empty() || chosen.block)
+            networks.push_back(chosen);
+    }
     if (networks.empty())
         return;
     const QByteArray text = QByteArray::fromStdString(ladder::networksText(networks));

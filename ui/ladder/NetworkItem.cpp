@@ -32,7 +32,8 @@ NetworkItem::NetworkItem(const LadderDrawing* drawing, int step, int index)
 bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::LayoutContext& context,
                              int namesVersion) {
     if (m_laidOut && network == m_network && context.number == m_number &&
-        context.firstStatement == m_firstStatement && namesVersion == m_namesVersion)
+        context.firstStatement == m_firstStatement && namesVersion == m_namesVersion &&
+        context.block == m_block && context.blockNote == m_blockNote)
         return false;
     prepareGeometryChange();
     m_network = network;
@@ -40,6 +41,8 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
     m_firstStatement = context.firstStatement;
     m_statementCount = static_cast<std::uint32_t>(ladder::statementCount(network));
     m_namesVersion = namesVersion;
+    m_block = context.block;
+    m_blockNote = context.blockNote;
     m_layout = ladder::layoutNetwork(network, context);
     m_option = ladder::configOptionOf(network);
     m_laidOut = true;

@@ -65,6 +65,8 @@ private:
     std::uint32_t m_firstStatement = 0;
     std::uint32_t m_statementCount = 0;
     int m_namesVersion = -1;
+    const blocks::BlockDefinition* m_block = nullptr; // of a block network, as laid out
+    QString m_blockNote;
     bool m_laidOut = false;
     bool m_collapsed = false;
     std::optional<ladder::ConfigOption> m_option;

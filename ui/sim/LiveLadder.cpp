@@ -94,7 +94,7 @@ QString LiveLadderBuilder::textOf(const sim::UnitEngine& unit, const Box& box) c
 }
 
 void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& simulation,
-                               int station) {
+                               int station, const std::set<lang::Address>& watched) {
     const sim::UnitEngine* unit = simulation.unit(station);
     if (!unit) {
         state = LadderLiveState{};
@@ -102,6 +102,9 @@ void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& si
         return;
     }
     m_power.update(state.power, *unit);
+    state.power.values.clear();
+    for (const lang::Address& address : watched)
+        state.power.values.emplace(address, unit->read(address));
     if (unit != m_unit || m_instructions != unit->image().code.size()) {
         rebuild(state, *unit);
     } else {

@@ -4,6 +4,7 @@
 #include "LivePower.h"
 #include "ladder/LadderLiveState.h"
 
+#include <set>
 #include <vector>
 
 namespace rs::sim {
@@ -21,7 +22,9 @@ namespace rs::ui {
 // costs little when little changes.
 class LiveLadderBuilder {
 public:
-    void update(LadderLiveState& state, const sim::Simulation& simulation, int station);
+    // `watched`: the variables whose values the page shows (block pins).
+    void update(LadderLiveState& state, const sim::Simulation& simulation, int station,
+                const std::set<lang::Address>& watched = {});
     // The next update builds everything afresh (a new simulation began).
     void reset();
 

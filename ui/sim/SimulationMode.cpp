@@ -257,7 +257,7 @@ void SimulationMode::refresh() {
 
     LadderPage* ladder = m_window->ladderPage();
     if (ladder && shown == ladder && simulated) {
-        m_builder.update(m_live, *simulation, ladder->station());
+        m_builder.update(m_live, *simulation, ladder->station(), ladder->pinVariables());
         ladder->setLiveState(&m_live);
         m_liveLadder = ladder;
     } else if (m_liveLadder && (!simulated || ladder->document() != m_session.document())) {
