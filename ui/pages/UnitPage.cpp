@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 namespace rs::ui {
@@ -62,13 +63,23 @@ UnitPage::UnitPage(QWidget* parent)
     resourceForm->addRow(tr("Memories:"), m_memories);
     resourceForm->addRow(tr("Registers:"), m_registers);
 
+    // Scrolled, so that the page does not make the window taller than a small screen.
+    auto* content = new QWidget(this);
+    auto* contentLayout = new QVBoxLayout(content);
+    contentLayout->setContentsMargins(0, 0, 0, 0);
+    contentLayout->addWidget(m_undeclared);
+    contentLayout->addWidget(m_form);
+    contentLayout->addWidget(variables);
+    contentLayout->addWidget(resources);
+    contentLayout->addStretch();
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
-    layout->addWidget(m_undeclared);
-    layout->addWidget(m_form);
-    layout->addWidget(variables);
-    layout->addWidget(resources);
-    layout->addStretch();
+    layout->addWidget(scroll, 1);
 
     connect(m_form, &UnitSettingsForm::edited, this, &UnitPage::apply);
     connect(m_remanentButton, &QPushButton::clicked, this,
