@@ -152,6 +152,17 @@
     </message>
 </context>
 <context>
+    <name>InstanceVariableText</name>
+    <message>
+        <source>Private variable #%1 of block %2 (line %3)</source>
+        <translation>Private Variable #%1 des Bausteins %2 (Zeile %3)</translation>
+    </message>
+    <message>
+        <source>Pin %1 of block %2 (line %3)</source>
+        <translation>Anschluss %1 des Bausteins %2 (Zeile %3)</translation>
+    </message>
+</context>
+<context>
     <name>LadderActions</name>
     <message>
         <source>%1 (key %2)</source>
@@ -891,6 +902,10 @@
     <message>
         <source>Set I/O Options of %1</source>
         <translation>E/A-Optionen von %1 setzen</translation>
+    </message>
+    <message>
+        <source>Used by block</source>
+        <translation>Verwendet von Baustein</translation>
     </message>
 </context>
 <context>
@@ -2303,6 +2318,30 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
             <numerusform>Dadurch wird %n Deklaration, Name, Beschreibung oder Attribut der Einheit entfernt, die der neue Typ oder Befehlssatz nicht haben kann. Ändern?</numerusform>
             <numerusform>Dadurch werden %n Deklarationen, Namen, Beschreibungen oder Attribute der Einheit entfernt, die der neue Typ oder Befehlssatz nicht haben kann. Ändern?</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3 of them by block instances)</source>
+        <translation>%1 von %2 (davon %3 durch Bausteininstanzen)</translation>
+    </message>
+    <message>
+        <source>Resources in use</source>
+        <translation>Belegte Ressourcen</translation>
+    </message>
+    <message>
+        <source>Timers:</source>
+        <translation>Timer:</translation>
+    </message>
+    <message>
+        <source>Memories:</source>
+        <translation>Merker:</translation>
+    </message>
+    <message>
+        <source>Registers:</source>
+        <translation>Register:</translation>
     </message>
 </context>
 <context>

@@ -152,6 +152,17 @@
     </message>
 </context>
 <context>
+    <name>InstanceVariableText</name>
+    <message>
+        <source>Private variable #%1 of block %2 (line %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pin %1 of block %2 (line %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>LadderActions</name>
     <message>
         <source>%1 (key %2)</source>
@@ -921,6 +932,10 @@
     </message>
     <message>
         <source>Set I/O Options of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Used by block</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2302,6 +2317,30 @@ Its text page (F6) shows and edits it.</source>
             <numerusform>This removes %n name, declaration, description or attribute of the unit that the new type or instruction set cannot have. Change it?</numerusform>
             <numerusform>This removes %n declarations, names, descriptions or attributes of the unit that the new type or instruction set cannot have. Change it?</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3 of them by block instances)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resources in use</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memories:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registers:</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

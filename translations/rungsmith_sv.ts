@@ -152,6 +152,17 @@
     </message>
 </context>
 <context>
+    <name>InstanceVariableText</name>
+    <message>
+        <source>Private variable #%1 of block %2 (line %3)</source>
+        <translation>Privat variabel #%1 i block %2 (rad %3)</translation>
+    </message>
+    <message>
+        <source>Pin %1 of block %2 (line %3)</source>
+        <translation>Anslutning %1 i block %2 (rad %3)</translation>
+    </message>
+</context>
+<context>
     <name>LadderActions</name>
     <message>
         <source>%1 (key %2)</source>
@@ -891,6 +902,10 @@
     <message>
         <source>Set I/O Options of %1</source>
         <translation>Ställ in I/O-alternativ för %1</translation>
+    </message>
+    <message>
+        <source>Used by block</source>
+        <translation>Används av block</translation>
     </message>
 </context>
 <context>
@@ -2303,6 +2318,30 @@ Dess textsida (F6) visar och redigerar den.</translation>
             <numerusform>Detta tar bort %n deklaration, namn, beskrivning eller attribut i enheten som den nya typen eller instruktionsuppsättningen inte kan ha. Ändra den?</numerusform>
             <numerusform>Detta tar bort %n deklarationer, namn, beskrivningar eller attribut i enheten som den nya typen eller instruktionsuppsättningen inte kan ha. Ändra den?</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 av %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3 of them by block instances)</source>
+        <translation>%1 av %2 (varav %3 av blockinstanser)</translation>
+    </message>
+    <message>
+        <source>Resources in use</source>
+        <translation>Resurser som används</translation>
+    </message>
+    <message>
+        <source>Timers:</source>
+        <translation>Timrar:</translation>
+    </message>
+    <message>
+        <source>Memories:</source>
+        <translation>Minnen:</translation>
+    </message>
+    <message>
+        <source>Registers:</source>
+        <translation>Register:</translation>
     </message>
 </context>
 <context>

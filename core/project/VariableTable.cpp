@@ -10,6 +10,17 @@
 
 namespace rs::project {
 
+lang::Address canonicalVariable(lang::Address address) {
+    if (address.kind == lang::AddressKind::RegisterBit) {
+        address.kind = lang::AddressKind::Register;
+        address.bit = -1;
+    } else if (address.kind == lang::AddressKind::DoubleRegisterLow ||
+               address.kind == lang::AddressKind::DoubleRegisterHigh) {
+        address.kind = lang::AddressKind::DoubleRegister;
+    }
+    return address;
+}
+
 namespace {
 
 using lang::Address;
@@ -64,17 +75,6 @@ std::map<Address, std::string> namesOf(const Project& project, int station) {
     if (const auto* unit = unitProgram(project, station))
         collect(unit->declarations);
     return names;
-}
-
-Address canonicalVariable(Address address) {
-    if (address.kind == AddressKind::RegisterBit) {
-        address.kind = AddressKind::Register;
-        address.bit = -1;
-    } else if (address.kind == AddressKind::DoubleRegisterLow ||
-               address.kind == AddressKind::DoubleRegisterHigh) {
-        address.kind = AddressKind::DoubleRegister;
-    }
-    return address;
 }
 
 template <typename E, typename Visit> void forEachExpressionOperand(E& expr, Visit& visit) {

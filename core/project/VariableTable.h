@@ -78,6 +78,10 @@ std::optional<std::string> setVariableName(Project& project, const lang::Address
 void setVariableDescription(Project& project, const lang::Address& address,
                             std::string description);
 
+// The variable an address is listed as on the Variables page: a register
+// bit's register, a double register's half its double register.
+lang::Address canonicalVariable(lang::Address address);
+
 // Variables the unit's code reads or writes; register bits and double-register
 // halves count for their register.
 std::set<lang::Address> usedVariables(const Project& project, int station);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/IoOptionsPage.h"
 
+#include "blocks/InstanceVariables.h"
 #include "document/ProjectDocument.h"
+#include "pages/InstanceVariableText.h"
 #include "project/UnitSettings.h"
 #include "shell/PageTitle.h"
 #include "shell/UnitCaption.h"
@@ -26,6 +28,8 @@ using project::TerminalKind;
 using project::TerminalOption;
 
 enum Column { SignalColumn, TypeColumn, ShapeColumn, FirstOptionColumn };
+constexpr int kOptionColumns = 3;
+constexpr int kInstanceUsesColumn = FirstOptionColumn + kOptionColumns;
 
 QString groupTitle(TerminalKind kind) {
     switch (kind) {
@@ -43,6 +47,14 @@ QString groupTitle(TerminalKind kind) {
 
 template <typename T> bool has(const std::vector<T>& list, T value) {
     return std::find(list.begin(), list.end(), value) != list.end();
+}
+
+// The terminal of an input or output address, if it is one of the type's.
+std::optional<project::Terminal> terminalAt(const target::UnitTypeInfo& type,
+                                            const lang::Address& address) {
+    lang::IoDeclaration io;
+    io.io.address = address;
+    return project::terminalOf(type, io);
 }
 
 } // namespace
@@ -135,8 +147,10 @@ void IoOptionsPage::rebuild() {
         for (int i = 0; i < headings.size(); ++i) {
             auto* heading = new QLabel(QStringLiteral("<b>%1</b>").arg(headings[i]), group);
             grid->addWidget(heading, 0, safety && i == 1 ? FirstOptionColumn : i, 1,
-                            i == headings.size() - 1 ? 3 : 1);
+                            i == headings.size() - 1 ? kOptionColumns : 1);
         }
+        grid->addWidget(new QLabel(QStringLiteral("<b>%1</b>").arg(tr("Used by block")), group), 0,
+                        kInstanceUsesColumn);
         int line = 1;
         for (const auto& terminal : terminals) {
             if (terminal.kind != kind)
@@ -182,10 +196,13 @@ void IoOptionsPage::rebuild() {
                 if (kind == TerminalKind::Configurable)
                     row.crossTalk = checkBox(tr("X_Talk"), "crossTalk", FirstOptionColumn + 2);
             }
+            row.instanceUses = new QLabel(group);
+            row.instanceUses->setObjectName(QStringLiteral("instanceUses:%1").arg(label));
+            grid->addWidget(row.instanceUses, line, kInstanceUsesColumn);
             m_rows.push_back(row);
             ++line;
         }
-        grid->setColumnStretch(FirstOptionColumn + 3, 1);
+        grid->setColumnStretch(kInstanceUsesColumn, 1);
         layout->addWidget(group);
     }
     auto* note = new QLabel(tr("The configuration must match the wiring. Q0..Q3 are not listed: "
@@ -214,6 +231,20 @@ void IoOptionsPage::refresh() {
     for (auto& row : m_rows)
         fill(row, project::terminalSetting(p, row.terminal));
     m_filling = false;
+    showInstanceUses();
+}
+
+void IoOptionsPage::showInstanceUses() {
+    const project::Project& p = m_document->project();
+    const target::UnitTypeInfo& type = project::unitTypeOf(p, m_station);
+    const std::vector<blocks::InstanceVariable> uses = blocks::instanceVariables(p, m_station);
+    for (auto& row : m_rows) {
+        QStringList lines;
+        for (const auto& use : uses)
+            if (terminalAt(type, use.address) == row.terminal)
+                lines << instanceVariableText(use);
+        row.instanceUses->setText(lines.join(QLatin1Char('\n')));
+    }
 }
 
 void IoOptionsPage::fill(Row& row, const project::TerminalSetting& setting) {

@@ -27,7 +27,8 @@ class ProjectDocument;
 // unit's type with its type of signal, signal shape and option boxes. The
 // lists hold only what the terminal can take given the choices to their left,
 // and an option box is enabled only where the option applies, so no illegal
-// combination can be entered. Each change is one undo step.
+// combination can be entered. Each change is one undo step. A terminal bound
+// to a pin of a block instance says so.
 class IoOptionsPage : public QWidget {
     Q_OBJECT
 public:
@@ -47,11 +48,13 @@ private:
         QCheckBox* noFilter = nullptr;
         QCheckBox* crossTalk = nullptr;
         QCheckBox* noTestPulse = nullptr;
+        QLabel* instanceUses = nullptr; // the block pins bound to the terminal
     };
 
     void rebuild();
     void refresh();
     void fill(Row& row, const project::TerminalSetting& setting);
+    void showInstanceUses();
     void apply(const Row& row);
     project::TerminalSetting settingOf(const Row& row) const;
 

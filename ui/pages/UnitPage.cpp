@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pages/UnitPage.h"
 
+#include "blocks/UnitResources.h"
 #include "document/ProjectDocument.h"
 #include "pages/UnitSettingsForm.h"
 #include "project/ExportedVariables.h"
@@ -14,13 +15,28 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 namespace rs::ui {
 
+namespace {
+
+QString resourceText(const blocks::ResourceUse& use) {
+    if (use.byBlocks == 0)
+        return UnitPage::tr("%1 of %2").arg(use.used).arg(use.limit);
+    return UnitPage::tr("%1 of %2 (%3 of them by block instances)")
+        .arg(use.used)
+        .arg(use.limit)
+        .arg(use.byBlocks);
+}
+
+} // namespace
+
 UnitPage::UnitPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_form(new UnitSettingsForm(this)),
       m_undeclared(new QLabel(this)), m_exports(new QLabel(this)), m_remanent(new QLabel(this)),
+      m_timers(new QLabel(this)), m_memories(new QLabel(this)), m_registers(new QLabel(this)),
       m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)) {
     m_undeclared->setWordWrap(true);
     m_undeclared->setText(tr("This unit has code but no '! id_pluto' declaration. Any change "
@@ -29,6 +45,9 @@ UnitPage::UnitPage(QWidget* parent)
     m_remanent->setObjectName(QStringLiteral("remanentLabel"));
     m_remanent->setWordWrap(true);
     m_remanentButton->setObjectName(QStringLiteral("remanentButton"));
+    m_timers->setObjectName(QStringLiteral("timersUsedLabel"));
+    m_memories->setObjectName(QStringLiteral("memoriesUsedLabel"));
+    m_registers->setObjectName(QStringLiteral("registersUsedLabel"));
 
     auto* variables = new QGroupBox(tr("Variables on the bus and at power off"), this);
     auto* form = new QFormLayout(variables);
@@ -38,12 +57,29 @@ UnitPage::UnitPage(QWidget* parent)
     remanentRow->addWidget(m_remanentButton);
     form->addRow(tr("Remanent variables:"), remanentRow);
 
+    auto* resources = new QGroupBox(tr("Resources in use"), this);
+    auto* resourceForm = new QFormLayout(resources);
+    resourceForm->addRow(tr("Timers:"), m_timers);
+    resourceForm->addRow(tr("Memories:"), m_memories);
+    resourceForm->addRow(tr("Registers:"), m_registers);
+
+    // Scrolled, so that the page does not make the window taller than a small screen.
+    auto* content = new QWidget(this);
+    auto* contentLayout = new QVBoxLayout(content);
+    contentLayout->setContentsMargins(0, 0, 0, 0);
+    contentLayout->addWidget(m_undeclared);
+    contentLayout->addWidget(m_form);
+    contentLayout->addWidget(variables);
+    contentLayout->addWidget(resources);
+    contentLayout->addStretch();
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
-    layout->addWidget(m_undeclared);
-    layout->addWidget(m_form);
-    layout->addWidget(variables);
-    layout->addStretch();
+    layout->addWidget(scroll, 1);
 
     connect(m_form, &UnitSettingsForm::edited, this, &UnitPage::apply);
     connect(m_remanentButton, &QPushButton::clicked, this,
@@ -88,6 +124,10 @@ void UnitPage::refresh() {
                         : remanent.empty() ? tr("none")
                                            : QString::fromStdString(remanent));
     m_remanentButton->setEnabled(type.remanent);
+    const blocks::UnitResources resources = blocks::unitResources(p, m_station);
+    m_timers->setText(resourceText(resources.timers));
+    m_memories->setText(resourceText(resources.memories));
+    m_registers->setText(resourceText(resources.registers));
 }
 
 void UnitPage::apply() {

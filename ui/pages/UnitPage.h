@@ -14,7 +14,9 @@ class ProjectDocument;
 class UnitSettingsForm;
 
 // The page of a unit (manual Part 1, 5): its type, instruction set, IDFIX and
-// description, edited in place; what its export and remanent variables take.
+// description, edited in place; what its export and remanent variables take;
+// how many of its timers, memories and registers are used, and how many of
+// them by block instances.
 class UnitPage : public QWidget {
     Q_OBJECT
 public:
@@ -34,6 +36,9 @@ private:
     QLabel* m_undeclared;
     QLabel* m_exports;
     QLabel* m_remanent;
+    QLabel* m_timers;
+    QLabel* m_memories;
+    QLabel* m_registers;
     QPushButton* m_remanentButton;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;

@@ -2,6 +2,7 @@
 #include "pages/VariableTableModel.h"
 
 #include "document/ProjectDocument.h"
+#include "pages/InstanceVariableText.h"
 #include "shell/StatusColors.h"
 #include "sim/Simulation.h"
 
@@ -63,8 +64,12 @@ void VariableTableModel::show(ProjectDocument* document, int station,
 
 void VariableTableModel::reload() {
     std::vector<project::Variable> rows;
-    if (m_document)
+    m_instanceUses.clear();
+    if (m_document) {
         rows = project::variableTable(m_document->project(), m_station, m_group);
+        m_instanceUses =
+            instanceUseTexts(blocks::instanceVariables(m_document->project(), m_station));
+    }
     // Same rows (the usual case after an edit): only the cells change, so the
     // view keeps its selection, scroll position and open editor.
     if (rows.size() == m_rows.size() &&
@@ -105,10 +110,18 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
     case StatusColumn:
         if (m_simulation)
             return liveStatus(*variable, role);
-        if (role == Qt::DecorationRole && variable->used)
-            return QIcon(QStringLiteral(":/icons/in-use.svg"));
-        if (role == Qt::ToolTipRole && variable->used)
-            return tr("Used in the code of the unit");
+        if (role == Qt::DecorationRole || role == Qt::ToolTipRole) {
+            QStringList uses;
+            if (variable->used)
+                uses << tr("Used in the code of the unit");
+            if (auto found = m_instanceUses.find(variable->address); found != m_instanceUses.end())
+                uses << found->second;
+            if (uses.isEmpty())
+                return {};
+            if (role == Qt::DecorationRole)
+                return QIcon(QStringLiteral(":/icons/in-use.svg"));
+            return uses.join(QLatin1Char('\n'));
+        }
         return {};
     case VariableColumn:
         if (role == Qt::DisplayRole)
@@ -154,9 +167,18 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
     case DescriptionColumn:
         if (role == Qt::EditRole)
             return QString::fromStdString(variable->description);
-        if (role == Qt::DisplayRole || role == Qt::ToolTipRole)
-            return variable->description.empty() ? fromView(variable->systemFunction)
-                                                 : QString::fromStdString(variable->description);
+        if (role == Qt::DisplayRole || role == Qt::ToolTipRole) {
+            if (!variable->description.empty())
+                return QString::fromStdString(variable->description);
+            if (!variable->systemFunction.empty())
+                return fromView(variable->systemFunction);
+            const auto found = m_instanceUses.find(variable->address);
+            if (found == m_instanceUses.end())
+                return QString();
+            QString uses = found->second;
+            return role == Qt::DisplayRole ? uses.replace(QLatin1Char('\n'), QStringLiteral("; "))
+                                           : uses;
+        }
         if (role == Qt::ForegroundRole && variable->description.empty())
             return palette.color(QPalette::PlaceholderText);
         return {};

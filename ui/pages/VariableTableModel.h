@@ -10,6 +10,7 @@
 #include <QAbstractTableModel>
 #include <QPointer>
 
+#include <map>
 #include <vector>
 
 namespace rs::sim {
@@ -24,7 +25,9 @@ class ProjectDocument;
 // Status, Variable, attributes ([G] global, [E] exported, [R] remanent),
 // Symbolic Name and Description. Names and descriptions are edited in place;
 // each edit is one undo step of the project, and a name the manual's rules
-// or another variable forbid is refused with the reason.
+// or another variable forbid is refused with the reason. A variable that a
+// block instance binds or was given counts as used, and says by which block
+// where it has no description of its own.
 class VariableTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
@@ -65,6 +68,7 @@ private:
     int m_station = 0;
     project::VariableGroup m_group = project::VariableGroup::SafetyInputs;
     std::vector<project::Variable> m_rows;
+    std::map<lang::Address, QString> m_instanceUses; // what the unit's block instances use
     const sim::Simulation* m_simulation = nullptr;
 };
 
