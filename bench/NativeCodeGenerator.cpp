@@ -256,6 +256,10 @@ private:
             return "if (p) { u.reset[" + n(in.slot) + "] = true; }";
         case Op::Arith:
             return arithmetic(in);
+        case Op::System:
+        case Op::Argument:
+            // The benchmark's projects make no system calls.
+            throw std::logic_error("system instructions are not translated");
         }
         return "";
     }

@@ -3,9 +3,11 @@
 
 #include "BodyTemplate.h"
 #include "LibraryWords.h"
+#include "compiler/SystemCall.h"
 #include "lang/NameResolver.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
+#include "project/Annotation.h"
 
 #include <algorithm>
 #include <map>
@@ -109,6 +111,36 @@ std::optional<PrivateKind> standInKind(const Pin& pin) {
         return std::nullopt;
     }
     return std::nullopt;
+}
+
+bool fits(const Pin& pin, const compiler::SystemParameter& parameter) {
+    const bool in = pin.direction == PinDirection::In;
+    if (in != (parameter.direction == compiler::ParameterDirection::In))
+        return false;
+    switch (parameter.kind) {
+    case compiler::ParameterKind::Bit:
+        return pin.kind == PinKind::Bit;
+    case compiler::ParameterKind::Register:
+        return pin.kind == PinKind::Register;
+    case compiler::ParameterKind::DoubleRegister:
+        return pin.kind == PinKind::DoubleRegister;
+    }
+    return false;
+}
+
+std::string parameterText(const compiler::SystemParameter& parameter) {
+    static constexpr const char* kinds[] = {"bit", "register", "double-register"};
+    return std::string(parameter.name) + " " +
+           (parameter.direction == compiler::ParameterDirection::In ? "in " : "out ") +
+           kinds[static_cast<int>(parameter.kind)];
+}
+
+// An address in its canonical spelling, as the statements around the call
+// are written; a name or a number as it is.
+std::string canonicalOperand(const std::string& operand) {
+    const lang::AddressWord word = lang::readAddressWord(operand);
+    return word.shape == lang::AddressWord::Shape::Variable ? lang::toString(word.address)
+                                                            : operand;
 }
 
 void placeAt(lang::Operand& operand, lang::SourceLocation at) {
@@ -271,6 +303,30 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
     std::string body;
     for (const auto& line : firstScan)
         body += line + "\n";
+    if (block.kind == BlockKind::System) {
+        // The call: each parameter of the instruction takes the pin of its name.
+        const compiler::SystemInstruction* instruction =
+            compiler::findSystemInstruction(block.systemInstruction);
+        if (!instruction) {
+            error("system instruction '" + block.systemInstruction +
+                  "' is not one of this Rungsmith's (" + compiler::systemInstructionNames() + ")");
+            return expansion;
+        }
+        project::Annotation call;
+        call.kind = compiler::kSystemRecord;
+        call.arguments.emplace_back(instruction->name);
+        for (const auto& parameter : instruction->parameters) {
+            const Pin* pin = block.findPin(parameter.name);
+            if (!pin || !fits(*pin, parameter)) {
+                error("the block does not fit its system instruction " +
+                      std::string(instruction->name) + ", which needs the pin " +
+                      parameterText(parameter));
+                return expansion;
+            }
+            call.attributes.emplace_back(parameter.name, canonicalOperand(pinValues.at(pin->name)));
+        }
+        body += ";" + project::formatAnnotation(call) + "\n";
+    }
     for (const auto& line : block.body) {
         const SubstitutedLine substituted =
             substitute(line, [&](const Placeholder& placeholder) -> std::string {

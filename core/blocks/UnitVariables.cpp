@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "UnitVariables.h"
 
+#include "compiler/SystemCall.h"
 #include "lang/SymbolicName.h"
+#include "project/Annotation.h"
 #include "project/RemanentVariables.h"
 #include "target/UnitType.h"
 
@@ -73,10 +75,29 @@ public:
                 add(name->variable);
             else if (const auto* io = std::get_if<lang::IoDeclaration>(&declaration->body))
                 add(io->io);
+        } else if (const auto* comment = std::get_if<lang::CommentLine>(&line.body)) {
+            addCall(comment->text);
         }
     }
 
 private:
+    // The addresses a ;@system record names (a name's is in its declaration).
+    void addCall(const std::string& text) {
+        std::optional<project::Annotation> record;
+        try {
+            record = project::parseAnnotation(text);
+        } catch (const project::AnnotationError&) {
+            return;
+        }
+        if (!record || record->kind != compiler::kSystemRecord)
+            return;
+        for (const auto& attribute : record->attributes) {
+            const lang::AddressWord word = lang::readAddressWord(attribute.second);
+            if (word.shape == lang::AddressWord::Shape::Variable)
+                add(word.address);
+        }
+    }
+
     int m_station;
     std::set<lang::Address>& m_used;
 };

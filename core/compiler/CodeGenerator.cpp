@@ -39,6 +39,9 @@ public:
             for (const auto& line : step->lines)
                 if (const auto* s = std::get_if<Statement>(&line.body))
                     statement(*s, numbers[s], key.second);
+                else if (auto call = m_unit.systemCalls.find(&line);
+                         call != m_unit.systemCalls.end())
+                    systemCall(call->second);
             code.count = static_cast<std::uint32_t>(m_image.code.size()) - code.first;
             m_image.steps.push_back(code);
         }
@@ -55,6 +58,34 @@ private:
         in.element = element;
         m_image.code.push_back(in);
         return m_image.code.back();
+    }
+
+    // The System instruction, then an Argument for each parameter.
+    void systemCall(const SystemCall& call) {
+        auto emitAt = [&](Op op) -> Instruction& {
+            Instruction in;
+            in.op = op;
+            in.line = static_cast<std::uint32_t>(call.location.line);
+            in.column = static_cast<std::uint16_t>(call.location.column);
+            in.statement = kNoStatement;
+            in.element = lang::kOutputElement;
+            m_image.code.push_back(in);
+            return m_image.code.back();
+        };
+        Instruction& system = emitAt(Op::System);
+        system.aux = static_cast<std::uint8_t>(call.instruction->id);
+        system.slot = static_cast<std::uint16_t>(call.arguments.size());
+        for (std::size_t i = 0; i < call.arguments.size(); ++i) {
+            const lang::Value& value = call.arguments[i];
+            Instruction& argument = emitAt(Op::Argument);
+            argument.aux = argumentRole(call.instruction->parameters[i]);
+            if (value.operand) {
+                argument.operand = value.operand->address;
+            } else {
+                argument.flags = ConstantOperand;
+                argument.constant = static_cast<std::int32_t>(value.constant);
+            }
+        }
     }
 
     void statement(const Statement& s, std::uint32_t number, int step) {

@@ -16,6 +16,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     CompileResult result;
     UnitSetups units = collectUnits(project.program, result.diagnostics);
     collectExports(project, units, result.diagnostics);
+    collectSystemCalls(project.program, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
     result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
     lang::sortByPlace(result.diagnostics);

@@ -33,7 +33,19 @@ enum class Op : std::uint8_t {
     Jump,          // if power: the sequence goes to step `slot` at the end of its part of the scan
     SequenceReset, // if power: sequence `slot` is held in step 0
     Arith,         // if power: word(operand) = f(word(operand), a, b); f = aux
+    System,        // power = 1; system instruction `aux` runs on the `slot` Arguments after it
+    Argument,      // an operand of the System before it (aux: ArgumentRole); does nothing itself
 };
+
+// What a system instruction does with an Argument (its aux).
+enum ArgumentRole : std::uint8_t {
+    ArgumentWritten = 1, // an output; else an input
+    ArgumentWord = 2,    // a number (a register, a double register, a constant); else a bit
+};
+
+// The statement number of a System and its Arguments: a system call is no
+// statement of the language, so it takes none of their numbers.
+inline constexpr std::uint32_t kNoStatement = 0xFFFFFFFF;
 
 enum class ArithOp : std::uint8_t {
     Increment,
@@ -53,14 +65,18 @@ enum InstructionFlag : std::uint8_t {
     Negated = 1,         // Contact, Edge, Timer, Compare
     OperandNegated = 2,  // Edge of a negated operand: P(/x)
     Rising = 4,          // Edge: P (set) or N
-    ConstantOperand = 8, // LoadA, LoadB, Timer: use `constant`, not `operand`
+    ConstantOperand = 8, // LoadA, LoadB, Timer, Argument: use `constant`, not `operand`
 };
 
 struct Instruction {
     Op op = Op::Rung;
     std::uint8_t flags = 0;
-    std::uint8_t aux = 0;   // Timer: lang::TimerKind; Compare: lang::CompareOp; Arith: ArithOp
-    std::uint16_t slot = 0; // Edge/Timer: occurrence number; Jump: step; SequenceReset: sequence
+    // Timer: lang::TimerKind; Compare: lang::CompareOp; Arith: ArithOp; System:
+    // SystemInstructionId; Argument: ArgumentRole
+    std::uint8_t aux = 0;
+    // Edge/Timer: occurrence number; Jump: step; SequenceReset: sequence;
+    // System: how many Arguments follow
+    std::uint16_t slot = 0;
     lang::Address operand;
     std::int32_t constant = 0;
     // Where it came from: the statement's line and column, the statement's

@@ -2,9 +2,12 @@
 #include "ImageCodec.h"
 
 #include "IntelHex.h"
+#include "SystemInstruction.h"
 #include "project/ProjectFile.h"
 
 #include <zlib.h>
+
+#include <optional>
 
 namespace rs::compiler {
 
@@ -88,6 +91,37 @@ bool uncompress(const std::string& packed, std::uint32_t length, std::string& ou
                         reinterpret_cast<const Bytef*>(packed.data()),
                         static_cast<uLong>(packed.size())) == Z_OK &&
            size == length;
+}
+
+// The engine runs a system instruction on the Arguments after it, as its
+// table says: a damaged image must not make it read past the code or take a
+// bit for a word.
+std::optional<std::string> systemCallProblem(const std::vector<Instruction>& code) {
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const Instruction& in = code[i];
+        if (in.op == Op::Argument)
+            return "an operand of a system instruction without the instruction";
+        if (in.op != Op::System)
+            continue;
+        const SystemInstruction* system = findSystemInstruction(in.aux);
+        if (!system)
+            return "unknown system instruction " + std::to_string(int(in.aux));
+        const std::string name(system->name);
+        if (in.slot != system->parameters.size())
+            return "system instruction " + name + " takes " +
+                   std::to_string(system->parameters.size()) + " operands, not " +
+                   std::to_string(in.slot);
+        if (in.slot > code.size() - i - 1)
+            return "the code ends within the operands of system instruction " + name;
+        for (std::size_t p = 0; p < system->parameters.size(); ++p) {
+            const Instruction& argument = code[i + 1 + p];
+            if (argument.op != Op::Argument || argument.aux != argumentRole(system->parameters[p]))
+                return "operand " + std::to_string(p + 1) + " of system instruction " + name +
+                       " is not what it takes";
+        }
+        i += in.slot;
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -212,7 +246,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
             in.column = r.u16();
             in.element = r.u16();
             in.statement = r.u32();
-            if (in.op < Op::Rung || in.op > Op::Arith)
+            if (in.op < Op::Rung || in.op > Op::Argument)
                 return ImageError{0, 0, "unknown instruction " + std::to_string(int(in.op))};
             // The engine indexes its tables with these: a damaged image must
             // stop here, not there.
@@ -223,6 +257,8 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
                                   "unknown variant " + std::to_string(int(in.aux)) +
                                       " of instruction " + std::to_string(int(in.op))};
         }
+        if (auto problem = systemCallProblem(image.code))
+            return ImageError{0, 0, *problem};
         for (const auto& step : image.steps)
             if (step.first > image.code.size() || step.count > image.code.size() - step.first)
                 return ImageError{0, 0, "a step's code lies outside the image"};

@@ -144,6 +144,9 @@ private:
                 for (const auto& line : step->lines)
                     if (const auto* statement = std::get_if<Statement>(&line.body))
                         checkStatement(*statement, sequence, number, jumpTargets[sequence]);
+                    else if (auto call = unit.systemCalls.find(&line);
+                             call != unit.systemCalls.end())
+                        checkSystemCall(call->second, sequence, number);
 
         for (const auto& [sequence, steps] : m_steps) {
             if (sequence == 0)
@@ -166,6 +169,10 @@ private:
                 m_doubleRegisters[a.index] = at;
         };
         forEachOperand(program, note);
+        for (const auto& entry : m_unit->systemCalls)
+            for (const auto& argument : entry.second.arguments)
+                if (argument.operand)
+                    note(*argument.operand, argument.location);
     }
 
     template <typename F> static void forEachOperand(const lang::UnitProgram& program, F&& visit) {
@@ -228,6 +235,25 @@ private:
         }
         if (s.condition)
             checkExpr(*s.condition);
+    }
+
+    // A system instruction writes its bit outputs in every scan its step
+    // runs, as a coil does.
+    void checkSystemCall(const SystemCall& call, int sequence, int step) {
+        for (std::size_t i = 0; i < call.arguments.size(); ++i) {
+            const SystemParameter& parameter = call.instruction->parameters[i];
+            const lang::Value& argument = call.arguments[i];
+            if (!argument.operand) {
+                checkConstant(argument, parameter.kind == ParameterKind::DoubleRegister);
+                continue;
+            }
+            const bool output = parameter.direction == ParameterDirection::Out;
+            const bool bit = parameter.kind == ParameterKind::Bit;
+            const Use use = bit ? (output ? Use::WriteBit : Use::ReadBit)
+                                : (output ? Use::WriteWord : Use::ReadWord);
+            if (checkOperand(*argument.operand, use) && output && bit)
+                noteCoil(*argument.operand, sequence, step);
+        }
     }
 
     void checkJump(const Statement& s, int sequence, int step, std::set<int>& jumpTargets) {

@@ -300,4 +300,16 @@ UnitSetups collectUnits(const lang::Document& document, lang::Diagnostics& diagn
     return UnitCollector(document, diagnostics).run();
 }
 
+void collectSystemCalls(const lang::Document& document, UnitSetups& units,
+                        lang::Diagnostics& diagnostics) {
+    for (auto& [station, unit] : units) {
+        if (!unit.program)
+            continue;
+        for (const auto& step : unit.program->steps)
+            for (const auto& line : step.lines)
+                if (auto call = readSystemCall(document, station, line, diagnostics))
+                    unit.systemCalls.emplace(&line, std::move(*call));
+    }
+}
+
 } // namespace rs::compiler

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "SystemCall.h"
 #include "lang/Ast.h"
 #include "lang/Diagnostic.h"
 #include "target/UnitType.h"
@@ -34,6 +35,8 @@ struct UnitSetup {
     // Local variables the project exports to the other units on the bus
     // (manual Part 1, 10.2.1); they read them as if they were global.
     std::set<lang::Address> exported;
+    // The ;@system records of its code (collectSystemCalls).
+    SystemCalls systemCalls;
 };
 
 using UnitSetups = std::map<int, UnitSetup>; // by station
@@ -43,5 +46,10 @@ using UnitSetups = std::map<int, UnitSetup>; // by station
 // outside 0..31, a unit declared twice, a type of another family, code for a
 // unit without an id_pluto line, I/O options the terminal cannot take.
 UnitSetups collectUnits(const lang::Document& document, lang::Diagnostics& diagnostics);
+
+// Reads the ;@system records of every unit's code into its systemCalls; a
+// wrong call is an error at its record and is left out.
+void collectSystemCalls(const lang::Document& document, UnitSetups& units,
+                        lang::Diagnostics& diagnostics);
 
 } // namespace rs::compiler

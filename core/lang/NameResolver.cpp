@@ -34,13 +34,16 @@ using Scope = std::map<std::string, Symbol>; // by folded name
 
 class Resolver {
 public:
-    explicit Resolver(Document& document) : m_document(document) {}
-
-    Diagnostics run() {
+    // Declares the global names (problems with them are the first diagnostics).
+    explicit Resolver(const Document& document) {
         m_instructionSets.fill(2);
-        collectInstructionSets(m_document, m_instructionSets);
-        declare(m_document.preamble, m_global, -1);
-        for (auto& unit : m_document.units) {
+        collectInstructionSets(document, m_instructionSets);
+        declare(document.preamble, m_global, -1);
+    }
+
+    // `document` is the one the resolver was made with.
+    Diagnostics resolveStatements(Document& document) {
+        for (auto& unit : document.units) {
             Scope local;
             declare(unit.declarations, local, unit.station());
             for (auto& step : unit.steps)
@@ -51,20 +54,32 @@ public:
         return std::move(m_diagnostics);
     }
 
+    Diagnostics resolveOperands(const Document& document, int station,
+                                const std::vector<Operand*>& operands) {
+        Scope local;
+        for (const auto& unit : document.units)
+            if (unit.station() == station)
+                declare(unit.declarations, local, station);
+        m_diagnostics.clear(); // the declarations' problems are resolveNames' to report
+        for (Operand* operand : operands)
+            resolve(*operand, local, station);
+        return std::move(m_diagnostics);
+    }
+
 private:
     void error(SourceLocation at, std::string message) {
         m_diagnostics.push_back({Severity::Error, at.line, at.column, std::move(message)});
     }
 
-    void declare(std::vector<Line>& lines, Scope& scope, int station) {
+    void declare(const std::vector<Line>& lines, Scope& scope, int station) {
         std::map<Address, const Symbol*> named;
         for (const auto& [key, symbol] : scope)
             named[symbol.address] = &symbol;
-        for (auto& line : lines) {
-            auto* declaration = std::get_if<Declaration>(&line.body);
+        for (const auto& line : lines) {
+            const auto* declaration = std::get_if<Declaration>(&line.body);
             if (!declaration)
                 continue;
-            auto* nameDeclaration = std::get_if<NameDeclaration>(&declaration->body);
+            const auto* nameDeclaration = std::get_if<NameDeclaration>(&declaration->body);
             if (!nameDeclaration)
                 continue;
             const Address& address = nameDeclaration->variable.address;
@@ -215,7 +230,6 @@ private:
             resolveExpr(*statement.condition, local, station);
     }
 
-    Document& m_document;
     std::array<int, 32> m_instructionSets{};
     Scope m_global;
     Diagnostics m_diagnostics;
@@ -231,7 +245,12 @@ int instructionSetOf(const Document& document, int station) {
 }
 
 Diagnostics resolveNames(Document& document) {
-    return Resolver(document).run();
+    return Resolver(document).resolveStatements(document);
+}
+
+Diagnostics resolveOperands(const Document& document, int station,
+                            const std::vector<Operand*>& operands) {
+    return Resolver(document).resolveOperands(document, station, operands);
 }
 
 } // namespace rs::lang

@@ -4,6 +4,8 @@
 #include "Ast.h"
 #include "Diagnostic.h"
 
+#include <vector>
+
 namespace rs::lang {
 
 // Checks every symbolic-name declaration (rules, duplicates, an address named
@@ -12,6 +14,13 @@ namespace rs::lang {
 // before the first "! pgm_pluto") are visible in every unit; names declared
 // in a unit's code are visible there only.
 Diagnostics resolveNames(Document& document);
+
+// Resolves operands that stand outside the statements of unit `station` (a
+// ;@system record's, docs/file-format.md) as its statements' are: a declared
+// name, a system name, a bit or half of a named register. An unknown name is
+// an error at its operand; the declarations are resolveNames' to check.
+Diagnostics resolveOperands(const Document& document, int station,
+                            const std::vector<Operand*>& operands);
 
 // Instruction set of each station as the document declares it (type_pluto),
 // 2 where it says nothing.

@@ -58,14 +58,15 @@ public:
         lines = std::move(kept);
     }
 
-    // Network and block instance records stay where they are; they are only
-    // checked (block instances by blocks::findInstances).
+    // Network, block instance and system call records stay where they are;
+    // they are only checked (block instances by blocks::findInstances, system
+    // calls by the compiler).
     void check(const std::vector<Line>& lines) {
         for (const auto& line : lines)
             if (auto* comment = std::get_if<CommentLine>(&line.body))
                 if (auto annotation = read(*comment, line.location);
                     annotation && annotation->kind != "network" && annotation->kind != "block" &&
-                    annotation->kind != "end")
+                    annotation->kind != "end" && annotation->kind != "system")
                     warn(line.location, "@" + annotation->kind +
                                             " records belong before the code; kept as a comment");
     }

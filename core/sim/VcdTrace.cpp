@@ -114,6 +114,10 @@ std::vector<lang::Address> traceSignals(const std::vector<compiler::UnitImage>& 
             case compiler::Op::Arith:
                 variables.insert(in.operand);
                 break;
+            case compiler::Op::Argument:
+                if (in.aux & compiler::ArgumentWritten)
+                    variables.insert(in.operand);
+                break;
             default:
                 break;
             }

@@ -291,17 +291,19 @@ TEST(LibraryReader, EnforcesItsLimits) {
               "t.rslib:10:12: error: the number of timers is from 0 to 50\n");
 }
 
-TEST(LibraryReader, TheShippedLibraryIsCanonicalAndClean) {
-    std::ifstream file(RUNGSMITH_LIBRARIES "/Rungsmith_Basics.rslib", std::ios::binary);
-    std::stringstream text;
-    text << file.rdbuf();
-    const LibraryReadResult read = readLibrary(text.str());
-    EXPECT_TRUE(read.diagnostics.empty()) << problems(text.str());
-    EXPECT_EQ(read.library.name, "Rungsmith_Basics");
-    EXPECT_EQ(writeLibrary(read.library), text.str());
-    for (const auto& block : read.library.blocks) {
-        EXPECT_FALSE(block.description.swedish.empty()) << block.name;
-        EXPECT_FALSE(block.description.german.empty()) << block.name;
+TEST(LibraryReader, TheShippedLibrariesAreCanonicalAndClean) {
+    for (const std::string name : {"Rungsmith_Basics", "Rungsmith_System"}) {
+        std::ifstream file(RUNGSMITH_LIBRARIES "/" + name + ".rslib", std::ios::binary);
+        std::stringstream text;
+        text << file.rdbuf();
+        const LibraryReadResult read = readLibrary(text.str());
+        EXPECT_TRUE(read.diagnostics.empty()) << problems(text.str());
+        EXPECT_EQ(read.library.name, name);
+        EXPECT_EQ(writeLibrary(read.library), text.str());
+        for (const auto& block : read.library.blocks) {
+            EXPECT_FALSE(block.description.swedish.empty()) << block.name;
+            EXPECT_FALSE(block.description.german.empty()) << block.name;
+        }
     }
 }
 

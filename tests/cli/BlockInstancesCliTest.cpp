@@ -124,4 +124,61 @@ TEST(BlockInstancesCli, AScenarioRunsOnTheExpandedInstances) {
     EXPECT_EQ(run.exitCode, 0) << run.out.toStdString() << run.err.toStdString();
 }
 
+// A RegisterValid of the shipped Rungsmith_System, written by hand without
+// its call.
+const QByteArray kRegisterValid = "! id_pluto:00=000000000000\n"
+                                  ";@var R0.5 export=\"yes\"\n"
+                                  "! type_pluto:00=A20,is3\n"
+                                  "! id_pluto:01=000000000001\n"
+                                  "! type_pluto:01=A20,is3\n"
+                                  "! pgm_pluto:00\n"
+                                  "S0.0_0\n"
+                                  "(R0.5 = 42)\n"
+                                  "! pgm_pluto:01\n"
+                                  "S1.0_0\n"
+                                  ";@block RegisterValid Input=\"R0.5\" Valid=\"M1.1\"\n"
+                                  ";@end\n";
+
+TEST(BlockInstancesCli, ASystemBlocksCallIsWrittenAndCompilesToTheSameImage) {
+    QTemporaryDir dir;
+    const QString original = writeFile(dir, "valid.sps", kRegisterValid);
+    const auto formatted = runCli({"format", original});
+    ASSERT_EQ(formatted.exitCode, 0) << formatted.err.toStdString();
+    EXPECT_TRUE(formatted.out.contains(
+        ";@block RegisterValid Input=\"R0.5\" Valid=\"M1.1\" lib=\"Rungsmith_System\" "
+        "version=\"1.0\" #pin.Value=\"R1.149\"\n"
+        ";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.149\"\n;@end\n"))
+        << formatted.out.toStdString();
+    const QString expanded = writeFile(dir, "expanded.sps", formatted.out);
+    EXPECT_EQ(runCli({"format", expanded}).out, formatted.out);
+
+    const auto first = runCli({"compile", original, "-o", dir.filePath("a.hps")});
+    const auto second = runCli({"compile", expanded, "-o", dir.filePath("b.hps")});
+    ASSERT_EQ(first.exitCode, 0) << first.err.toStdString();
+    ASSERT_EQ(second.exitCode, 0) << second.err.toStdString();
+    EXPECT_EQ(rs::test::readFile(dir.filePath("a.hps")), rs::test::readFile(dir.filePath("b.hps")));
+
+    const auto roundtrip = runCli({"roundtrip", expanded});
+    EXPECT_EQ(roundtrip.exitCode, 0) << roundtrip.err.toStdString();
+    EXPECT_EQ(roundtrip.out, formatted.out) << "the call stays in its instance through the ladder";
+
+    const QString scenario =
+        writeFile(dir, "valid.scn", "scans 2\nexpect M1.1 1\nexpect R1.149 42\n");
+    const auto run = runCli({"test", expanded, scenario});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString() << run.err.toStdString();
+}
+
+TEST(BlockInstancesCli, AWrongSystemCallIsAnErrorAtItsOperand) {
+    QTemporaryDir dir;
+    QByteArray text = kRegisterValid;
+    text.replace(";@block RegisterValid Input=\"R0.5\" Valid=\"M1.1\"\n;@end\n",
+                 ";@system RegisterValid Input=\"R0.5\" Valid=\"R1.1\" Value=\"R1.2\"\n");
+    const QString path = writeFile(dir, "wrong.sps", text);
+    const auto check = runCli({"check", path});
+    EXPECT_EQ(check.exitCode, 1);
+    EXPECT_EQ(check.errText(),
+              path + ":11:37: error: RegisterValid: operand Valid takes a bit, not R1.1\n")
+        << check.err.toStdString();
+}
+
 } // namespace

@@ -11,8 +11,10 @@ namespace {
 
 // Two units with every kind of instruction: contacts on bytes and register
 // bits, edges, timers, latches, toggles, comparisons, arithmetic, parallel
-// branches, jumps, a sequence reset, SM_Ditto and the other unit's variables.
+// branches, jumps, a sequence reset, SM_Ditto, system instructions and the
+// other unit's variables.
 const char* const kProgram = R"(! id_pluto:00=000000000000
+;@var R0.2 export="yes"
 ! type_pluto:00=A20,is3
 ! id_pluto:01=000000000000
 ! type_pluto:01=A20,is3
@@ -38,12 +40,14 @@ M0.7 = I0.1 * TPS(0s03) + I0.2 * TOF(0s04)
 M0.8 = (R0.1 > 4) * I0.5 + (R0.2 <= R0.1)
 (R0.4 = SR0.2) = M0.8
 GM0.1 = M0.8 * I0.6
+;@system DRegisterValid Input="DR0.10" Valid="M0.24" Value="DR0.30"
 R(S0.1) = I0.1 * I0.2
 S0.1_0
 M0.20 = SM0.0
 J(1) = P(I0.0)
 S0.1_1
 M0.21 = I0.4
+;@system RegisterValid Input="R0.1" Valid="M0.23" Value="R0.13"
 (R0.5--) = P(I0.5)
 J(2) = I0.3 * I0.6
 J(0) = P(I0.7)
@@ -53,6 +57,7 @@ J(0) = M0.22
 ! pgm_pluto:01
 S1.0_0
 Q1.1 = I0.0 * GM0.1 + /I1.2
+;@system RegisterValid Input="R0.2" Valid="M1.2" Value="R1.5"
 M1.1 = P(I0.3) * I1.1
 S(Q1.2) = GM0.1
 R(Q1.2) = I1.3

@@ -17,8 +17,9 @@ namespace {
 // edges and outputs on bytes and register bits, nested parallel branches,
 // loads, comparisons, register arithmetic with saturation) and the ones it
 // calls (timers, toggles, divisions, double registers, jumps, sequence
-// reset).
+// reset, system instructions).
 const char* const kProgram = R"(! id_pluto:00=000000000000
+;@var R0.2 export="yes"
 ! type_pluto:00=A20,is3
 ! id_pluto:01=000000000000
 ! type_pluto:01=A20,is3
@@ -53,12 +54,14 @@ M0.8 = (R0.1 > 4) * I0.5 + (R0.2 <= R0.1) + /(R0.6 = R0.7) * (R0.8 >= 0)
 M0.9 = (R0.9 < R0.10) + (R0.1 = 7)
 (R0.4 = SR0.2) = M0.8
 GM0.1 = M0.8 * I0.6
+;@system DRegisterValid Input="DR0.20" Valid="M0.24" Value="DR0.30"
 R(S0.1) = I0.1 * I0.2
 S0.1_0
 M0.20 = SM0.0
 J(1) = P(I0.0)
 S0.1_1
 M0.21 = I0.4
+;@system RegisterValid Input="R0.1" Valid="M0.23" Value="R0.13"
 (R0.5--) = P(I0.5)
 J(2) = I0.3 * I0.6
 J(0) = P(I0.7)
@@ -69,6 +72,7 @@ J(0) = M0.22
 ! pgm_pluto:01
 S1.0_0
 Q1.1 = I0.0 * GM0.1 + /I1.2
+;@system RegisterValid Input="R0.2" Valid="M1.2" Value="R1.5"
 M1.1 = P(I0.3) * I1.1
 S(Q1.2) = GM0.1
 R(Q1.2) = I1.3
@@ -125,7 +129,7 @@ TEST(MachineCodeTest, DoesWhatTheInterpreterDoes) {
             withMachineCode<bool>(true, [&] { return change(*compiled), true; });
             withMachineCode<bool>(false, [&] { return change(*interpreted), true; });
         };
-        for (const char* word : {"M0.4", "R0.2", "R0.100.3", "Q0.2"}) {
+        for (const char* word : {"M0.4", "R0.2", "R0.100.3", "Q0.2", "M0.23", "R0.13"}) {
             if (scan % 500 == 250)
                 both([&](Simulated& s) { s.set(word, static_cast<std::int64_t>(scan % 3)); });
             if (scan % 500 == 400)

@@ -38,6 +38,8 @@ enum Handler : std::uint8_t {
     HJump,
     HSequenceReset,
     HArith,
+    HSystem,
+    HArgument,
     HandlerCount
 };
 

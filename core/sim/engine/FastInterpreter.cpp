@@ -2,6 +2,7 @@
 #include "FastInterpreter.h"
 
 #include "InstructionMeaning.h"
+#include "SystemCalls.h"
 
 #include <algorithm>
 #include <array>
@@ -69,7 +70,8 @@ void FastInterpreter::translate(UnitState& unit) {
             FastHandler kind = FEnd;
             if (d.handler == HRung) {
                 std::uint32_t end = i + 1;
-                while (end < step.first + step.count && unit.code[end].handler != HRung)
+                while (end < step.first + step.count && unit.code[end].handler != HRung &&
+                       unit.code[end].handler != HSystem)
                     ++end;
                 BitStatement statement{};
                 if (toBitStatement(unit, i, end, statement)) {
@@ -214,6 +216,11 @@ void FastInterpreter::translate(UnitState& unit) {
                 kind = plain ? FArithRegister : FArith;
                 break;
             }
+            case HSystem:
+                kind = FSystem;
+                break;
+            case HArgument:
+                continue; // FSystem reads it
             case HandlerCount:
                 break;
             }
@@ -566,6 +573,10 @@ RS_FAST_OP(FArithRegister) {
     target = static_cast<std::int16_t>(saturated(result, kRegisterBounds));
     return power;
 }
+RS_FAST_OP(FSystem) {
+    runSystemCall(*c.unit, RS_IN);
+    return 1;
+}
 RS_FAST_OP(FBitStatements) {
     runBitStatements<true>(*static_cast<const Row<BitStatement>*>(arg), RS_DITTO, *c.pendingJump);
     return power;
@@ -665,6 +676,7 @@ void FastInterpreter::runOps(const FastOp* op, UnitState* unit, int& pendingJump
                                            &&sequenceReset,
                                            &&arith,
                                            &&arithRegister,
+                                           &&system,
                                            &&bitStatements,
                                            &&bitStatementsWithoutEdges,
                                            &&wordStatements,
@@ -763,6 +775,8 @@ arith:
     RS_RUN(FArith);
 arithRegister:
     RS_RUN(FArithRegister);
+system:
+    RS_RUN(FSystem);
 bitStatements:
     RS_RUN(FBitStatements);
 bitStatementsWithoutEdges:

@@ -53,6 +53,7 @@ enum FastHandler : std::uint8_t {
     FSequenceReset,
     FArith,
     FArithRegister, // on a register, not a division
+    FSystem,        // a system instruction; its Arguments have no handler of their own
     FBitStatements, // a row of BitStatements
     FBitStatementsWithoutEdges,
     FWordStatements, // a row of WordStatements

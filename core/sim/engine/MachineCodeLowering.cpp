@@ -193,6 +193,11 @@ std::unique_ptr<ScanMachineCode> lowerToMachineCode(UnitState& unit) {
                 if (!lowerArithmetic(d, run, unit.memory.systemMemories[kOverflow]))
                     call(FArith);
                 break;
+            case HSystem:
+                call(FSystem);
+                break;
+            case HArgument:
+                break; // FSystem reads it
             case HandlerCount:
                 break;
             }

@@ -2,6 +2,7 @@
 #include "MarkingInterpreter.h"
 
 #include "InstructionMeaning.h"
+#include "SystemCalls.h"
 
 #include <iterator>
 
@@ -33,11 +34,11 @@ void runMarking(UnitState& unit, int index, int& pendingJump, int cycleMs, Condu
     static_assert(compiler::Negated == 1);
 
     static const void* const handlers[] = {
-        &&rung,         &&contactByte, &&contact,    &&edge,          &&timer,
-        &&loadA,        &&loadB,       &&equal,      &&greater,       &&less,
-        &&greaterEqual, &&lessEqual,   &&branchOpen, &&branchNext,    &&branchClose,
-        &&coilByte,     &&coil,        &&setByte,    &&set,           &&resetByte,
-        &&reset,        &&toggle,      &&jump,       &&sequenceReset, &&arith};
+        &&rung,       &&contactByte, &&contact,     &&edge,     &&timer,        &&loadA,
+        &&loadB,      &&equal,       &&greater,     &&less,     &&greaterEqual, &&lessEqual,
+        &&branchOpen, &&branchNext,  &&branchClose, &&coilByte, &&coil,         &&setByte,
+        &&set,        &&resetByte,   &&reset,       &&toggle,   &&jump,         &&sequenceReset,
+        &&arith,      &&system,      &&argument};
     static_assert(std::size(handlers) == HandlerCount);
 #define RS_NEXT()                                                                                  \
     do {                                                                                           \
@@ -139,6 +140,12 @@ sequenceReset:
 arith:
     if (power)
         unit.arithmetic(*in, a, b);
+    RS_NEXT();
+system:
+    runSystemCall(unit, *in);
+    power = 1;
+    RS_NEXT();
+argument:
     RS_NEXT();
 #undef RS_COMPARE
 #undef RS_BYTE

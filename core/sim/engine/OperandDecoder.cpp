@@ -88,6 +88,10 @@ std::uint8_t handlerFor(const DecodedInstruction& d) {
         return HSequenceReset;
     case Op::Arith:
         return HArith;
+    case Op::System:
+        return HSystem;
+    case Op::Argument:
+        return HArgument;
     }
     return HRung;
 }
@@ -168,6 +172,22 @@ OperandDecoder::decode(const std::vector<compiler::Instruction>& code,
             d.dropWrite = forced;
             d.aux = std::min(d.aux, kUnknownArithmetic);
             break;
+        case Op::Argument: {
+            // The operand's station, for what a system instruction asks of its unit.
+            d.slot = static_cast<std::uint16_t>((in.flags & compiler::ConstantOperand)
+                                                    ? m_station
+                                                    : std::clamp(in.operand.unit, 0, 31));
+            const bool written = in.aux & compiler::ArgumentWritten;
+            if (in.flags & compiler::ConstantOperand)
+                break;
+            if (!(in.aux & compiler::ArgumentWord))
+                d.pointAt(decodeBit(in.operand, written, forced));
+            else if (written && forced)
+                d.pointAt(wordRef(m_sink, in.operand));
+            else
+                d.pointAt(decodeWord(in.operand));
+            break;
+        }
         default:
             break;
         }

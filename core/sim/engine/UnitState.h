@@ -92,11 +92,15 @@ struct UnitState {
             in.writeWord(saturated(result, bounds));
     }
 
-    // The coils of a step that is left go off; latched outputs keep their value.
+    // The coils of a step that is left go off, and so do the bit outputs of
+    // its system instructions, which are written every scan as coils are;
+    // latched outputs and numbers keep their value.
     void leaveStep(int index) {
         const StepRun& step = steps[static_cast<std::size_t>(index)];
         for (std::uint32_t i = step.first; i < step.first + step.count; ++i)
-            if (code[i].op == compiler::Op::Coil)
+            if (code[i].op == compiler::Op::Coil ||
+                (code[i].op == compiler::Op::Argument && code[i].aux == compiler::ArgumentWritten &&
+                 !(code[i].flags & compiler::ConstantOperand)))
                 code[i].writeBit(false);
     }
 };
