@@ -4,6 +4,7 @@
 #include "LivePower.h"
 #include "NetworkPicture.h"
 #include "Verbs.h"
+#include "blocks/InstanceStanding.h"
 #include "compiler/Compiler.h"
 #include "ladder/LadderToText.h"
 #include "ladder/Layout.h"
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
+#include <set>
 
 namespace rs::cli {
 
@@ -62,7 +64,8 @@ struct ScenarioPower {
 // picture of unit `station` as the scenario leaves it. Failed expectations
 // are printed as `test` prints them; the state they end in is still drawn.
 ScenarioPower runToEnd(const QString& projectPath, const LoadedProject& loaded,
-                       const QString& scenarioPath, int station) {
+                       const QString& scenarioPath, int station,
+                       const std::set<lang::Address>& watched) {
     const project::FileText text = project::readTextFile(scenarioPath);
     if (!text.error.isEmpty()) {
         std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(text.error));
@@ -86,7 +89,11 @@ ScenarioPower runToEnd(const QString& projectPath, const LoadedProject& loaded,
         return {{}, Failed, false};
     for (const auto& line : report.failures)
         std::fprintf(stdout, "%s\n", line.c_str());
-    return {render::powerSnapshot(*simulation.unit(station)), report.failed ? Failed : Ok, true};
+    const sim::UnitEngine& engine = *simulation.unit(station);
+    render::PowerSnapshot power = render::powerSnapshot(engine);
+    for (const lang::Address& address : watched)
+        power.values.emplace(address, engine.read(address));
+    return {std::move(power), report.failed ? Failed : Ok, true};
 }
 
 QString stepName(const lang::StepAddress& step) {
@@ -130,7 +137,24 @@ int runLadder(const Invocation& invocation) {
     if (program == document.units.end())
         return failure(path, QStringLiteral("unit %1 has no code").arg(*unit));
     const lang::StepAddress wanted{*unit, *sequence, *stepNumber};
-    const auto pages = ladder::unitLadder(*program);
+    // Instances are boxes as the IDE draws them: while they are what their block makes.
+    const blocks::LibrarySet libraries =
+        blocks::librariesFor(loaded.places, loaded.project.libraries);
+    const std::vector<blocks::InstanceStatus> statuses =
+        blocks::instanceStatuses(document, *unit, libraries);
+    const auto statusOf = [&](const lang::StepAddress& step,
+                              std::size_t record) -> const blocks::InstanceStatus* {
+        for (const auto& status : statuses)
+            if (status.address == step && status.instance.record == record)
+                return &status;
+        return nullptr;
+    };
+    const auto pages = ladder::unitLadder(
+        *program, [&](const lang::Step& step, const blocks::BlockInstance& instance) {
+            const blocks::InstanceStatus* status = statusOf(step.address, instance.record);
+            return status && (status->standing == blocks::Standing::AsMade ||
+                              status->standing == blocks::Standing::OtherVersion);
+        });
     const auto page = std::find_if(pages.begin(), pages.end(),
                                    [&](const ladder::StepPage& p) { return p.address == wanted; });
     if (page == pages.end())
@@ -149,13 +173,22 @@ int runLadder(const Invocation& invocation) {
     context.number = *networkNumber;
     context.firstStatement = page->firstStatements[index];
     context.symbols = &symbols;
-    const ladder::NetworkLayout layout =
-        ladder::layoutNetwork(page->ladder.networks[index], context);
+    const ladder::Network& network = page->ladder.networks[index];
+    if (network.block)
+        if (const blocks::InstanceStatus* status = statusOf(wanted, network.block->instance.record))
+            context.block = status->block;
+    const ladder::NetworkLayout layout = ladder::layoutNetwork(network, context);
+    std::set<lang::Address> pinVariables;
+    if (layout.block)
+        for (const auto& pin : layout.block->pins)
+            if (pin.address)
+                pinVariables.insert(*pin.address);
     const QString title = QStringLiteral("%1 network %2").arg(stepName(wanted)).arg(*networkNumber);
     const bool simulated = invocation.options.isSet(QStringLiteral("scenario"));
     ScenarioPower live;
     if (simulated) {
-        live = runToEnd(path, loaded, invocation.options.value(QStringLiteral("scenario")), *unit);
+        live = runToEnd(path, loaded, invocation.options.value(QStringLiteral("scenario")), *unit,
+                        pinVariables);
         if (!live.drawable)
             return live.status;
     }

@@ -34,8 +34,8 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
         loaded.status = UsageOrIo;
         return loaded;
     }
-    blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
-        file.text, {QCoreApplication::applicationDirPath(), path, libraryFiles});
+    loaded.places = {QCoreApplication::applicationDirPath(), path, libraryFiles};
+    blocks::ProjectWithInstances read = blocks::readProjectWithInstances(file.text, loaded.places);
     for (const auto& problem : read.libraryProblems) {
         if (!problem.readError.isEmpty()) {
             std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(problem.readError));

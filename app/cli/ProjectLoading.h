@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "blocks/ProjectInstances.h"
+
 #include "Invocation.h"
 #include "lang/Diagnostic.h"
 #include "project/Project.h"
@@ -26,6 +28,7 @@ struct LoadedProject {
     lang::Diagnostics diagnostics; // of the text and its block instances, by place
     int status = 0;                // UsageOrIo when the project or a library cannot be read
     bool expanded = false;         // block instances were written in: the project is not the text
+    blocks::LibraryPlaces places;  // where its libraries were found
 
     bool ok() const { return status == 0 && lang::errorCount(diagnostics) == 0; }
 };

@@ -182,3 +182,43 @@ TEST(BlockInstancesCli, AWrongSystemCallIsAnErrorAtItsOperand) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(BlockInstancesCli, TwoInstancesOfOneBlockInOneUnitKeepStatesOfTheirOwn) {
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, "hand.sps", kHandWritten);
+    // The first pair disagrees past its 0.5 s and latches its fault; the
+    // second, with 1 s, agrees throughout and stays on.
+    const QString scenario = writeFile(dir, "two.scn",
+                                       "set Door1A 1\nset Door1B 1\nset I0.2 1\nset I0.3 1\n"
+                                       "scans 2\nexpect Q0.2 1\nexpect Q0.3 1\n"
+                                       "set Door1B 0\nset I0.3 0\nrun 600ms\n"
+                                       "set Door1B 1\nset I0.3 1\nscans 2\n"
+                                       "expect Q0.2 0\nexpect Q0.3 1\n");
+    const auto run = runCli({"test", path, scenario, "--no-io-warnings"});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString() << run.err.toStdString();
+}
+
+TEST(BlockInstancesCli, TheLadderVerbDrawsAnInstanceAsItsBoxWithLiveValues) {
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, "hand.sps", kHandWritten);
+    const QString scenario =
+        writeFile(dir, "on.scn", "set Door1A 1\nset Door1B 1\nscans 2\nexpect Q0.2 1\n");
+    const QString svg = dir.filePath("box.svg");
+    const auto drawn = runCli({"ladder", path, "--unit", "0", "--network", "1", "--scenario",
+                               scenario, "-o", svg, "--no-io-warnings"});
+    ASSERT_EQ(drawn.exitCode, 0) << drawn.err.toStdString();
+    const QByteArray picture = rs::test::readFile(svg);
+    for (const char* text : {"EquivalentInputs", "Channel1", "Channel2", "DiscrepancyTime", "Out",
+                             "Fault", "Door1A", "???", "Two-channel equivalence check"})
+        EXPECT_TRUE(picture.contains(text)) << text;
+    // The pins driven on are drawn in the powered colour, which nothing is
+    // drawn in when nothing runs.
+    EXPECT_TRUE(picture.contains("#00963c"));
+    const QString still = dir.filePath("still.svg");
+    ASSERT_EQ(runCli({"ladder", path, "--unit", "0", "--network", "1", "-o", still}).exitCode, 0);
+    EXPECT_FALSE(rs::test::readFile(still).contains("#00963c"));
+}
+
+} // namespace

@@ -14,7 +14,7 @@ namespace {
 
 // The element alone on a short piece of wire, in layout units, the
 // proportions of kElementIconSize.
-ladder::NetworkLayout layoutOf(ElementKind kind) {
+ladder::NetworkLayout layoutOf(ElementKind kind, const QString& boxText) {
     constexpr qreal kWidth = 54;
     constexpr qreal kHeight = kWidth * kElementIconSize.height() / kElementIconSize.width();
     const qreal middle = kHeight / 2;
@@ -23,8 +23,7 @@ ladder::NetworkLayout layoutOf(ElementKind kind) {
     const qreal symbolHeight = box ? 28 : 26;
     ladder::ElementLayout element;
     element.kind = kind;
-    const std::string_view word = ladder::infoOf(kind).boxWord;
-    element.text = QString::fromLatin1(word.data(), static_cast<qsizetype>(word.size()));
+    element.text = boxText;
     element.symbolRect =
         QRectF((kWidth - symbolWidth) / 2, middle - symbolHeight / 2, symbolWidth, symbolHeight);
     element.cell = element.symbolRect;
@@ -37,10 +36,7 @@ ladder::NetworkLayout layoutOf(ElementKind kind) {
     return layout;
 }
 
-} // namespace
-
-QIcon elementIcon(ElementKind kind, const render::LadderStyle& style) {
-    const ladder::NetworkLayout layout = layoutOf(kind);
+QIcon iconOf(const ladder::NetworkLayout& layout, const render::LadderStyle& style) {
     render::LadderStyle transparent = style;
     transparent.background = Qt::transparent;
     // Letters in the symbols large enough to read at the toolbar's scale.
@@ -56,6 +52,20 @@ QIcon elementIcon(ElementKind kind, const render::LadderStyle& style) {
     render::paintNetwork(painter, layout, transparent);
     painter.end();
     return QIcon(pixmap);
+}
+
+} // namespace
+
+QIcon elementIcon(ElementKind kind, const render::LadderStyle& style) {
+    const std::string_view word = ladder::infoOf(kind).boxWord;
+    return iconOf(
+        layoutOf(kind, QString::fromLatin1(word.data(), static_cast<qsizetype>(word.size()))),
+        style);
+}
+
+QIcon blockIcon(const render::LadderStyle& style) {
+    // Any box kind draws a plain box with the text given.
+    return iconOf(layoutOf(ElementKind::OnDelayTimer, QStringLiteral("F")), style);
 }
 
 } // namespace rs::ui

@@ -19,5 +19,7 @@ inline constexpr QSize kElementIconSize{36, 22};
 // so a button shows the symbol exactly as the page draws it, in the theme's
 // colours; and greyed when the action is disabled.
 QIcon elementIcon(ElementKind kind, const render::LadderStyle& style);
+// The picture of a function block: a box with "F", as the manual's button has.
+QIcon blockIcon(const render::LadderStyle& style);
 
 } // namespace rs::ui

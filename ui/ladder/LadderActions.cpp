@@ -143,11 +143,11 @@ std::vector<QAction*> LadderActions::toolBar() const {
     for (const auto& [kind, action] : insert) {
         bar.push_back(action);
         if (kind == ElementKind::Comparison)
-            bar.push_back(nullptr);
+            bar.insert(bar.end(), {insertBlock, nullptr}); // a block is a box too
     }
-    bar.insert(bar.end(), {insertBlock, nullptr, deleteSelection, newNetwork, expandAll,
-                           collapseAll, nullptr, editNetwork, updateNetwork, undoNetwork, nullptr,
-                           zoomIn, zoomOut, zoomReset, nullptr, print, exportPdf});
+    bar.insert(bar.end(), {nullptr, deleteSelection, newNetwork, expandAll, collapseAll, nullptr,
+                           editNetwork, updateNetwork, undoNetwork, nullptr, zoomIn, zoomOut,
+                           zoomReset, nullptr, print, exportPdf});
     return bar;
 }
 

@@ -160,6 +160,7 @@ void LadderPage::changeEvent(QEvent* event) {
 void LadderPage::drawElementIcons() {
     for (const auto& [kind, action] : m_actions->insert)
         action->setIcon(elementIcon(kind, m_drawing.style));
+    m_actions->insertBlock->setIcon(blockIcon(m_drawing.style));
 }
 
 // ----- showing the model

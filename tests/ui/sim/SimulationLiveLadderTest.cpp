@@ -50,4 +50,21 @@ TEST(SimulationLiveLadder, BoxesShowTheirRegistersAndAForcedOneMarksTheBox) {
     EXPECT_TRUE(state.forced.empty());
 }
 
+TEST(SimulationLiveLadder, TheValuesOfTheVariablesOnBlockPinsAreTheEnginesAfterTheScan) {
+    sim::Simulation simulation = registers();
+    simulation.force(addressOf("R0.3"), 40);
+    simulation.force(addressOf("R0.4"), 2);
+    simulation.scan();
+    ui::LadderLiveState state;
+    ui::LiveLadderBuilder builder;
+    builder.update(state, simulation, 0, {addressOf("R0.4"), addressOf("M0.0")});
+    EXPECT_EQ(state.power.values, (std::map<lang::Address, std::int64_t>{{addressOf("R0.4"), 2},
+                                                                         {addressOf("M0.0"), 0}}));
+    simulation.force(addressOf("R0.4"), 5);
+    simulation.scan();
+    builder.update(state, simulation, 0, {addressOf("R0.4")});
+    EXPECT_EQ(state.power.values, (std::map<lang::Address, std::int64_t>{{addressOf("R0.4"), 5}}))
+        << "only what the page watches now";
+}
+
 } // namespace
