@@ -39,15 +39,6 @@ std::vector<Word> splitWords(std::string_view line, std::size_t from) {
     return words;
 }
 
-bool isName(std::string_view name) {
-    if (name.empty() || !((name[0] >= 'A' && name[0] <= 'Z') || (name[0] >= 'a' && name[0] <= 'z')))
-        return false;
-    return std::all_of(name.begin(), name.end(), [](char c) {
-        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-               c == '_';
-    });
-}
-
 bool isVersion(std::string_view version) {
     if (version.empty() || version.front() == '.' || version.back() == '.')
         return false;
@@ -264,7 +255,7 @@ private:
     }
 
     bool checkName(const Word& word, std::size_t maxLength, std::string_view what) {
-        if (!isName(word.text)) {
+        if (!isLibraryName(word.text)) {
             error(m_number, column(word.offset),
                   "bad " + std::string(what) + " " + quoted(word.text) +
                       ": a letter, then letters, digits and '_' (ASCII)");

@@ -147,4 +147,14 @@ bool isTimeConstant(std::string_view text) {
     return *seconds * 100 + (hundredths[0] - '0') * 10 + (hundredths[1] - '0') <= 65535;
 }
 
+bool isLibraryName(std::string_view name) {
+    const auto letter = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+    };
+    if (name.empty() || !letter(name.front()))
+        return false;
+    return std::all_of(name.begin(), name.end(),
+                       [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '_'; });
+}
+
 } // namespace rs::blocks

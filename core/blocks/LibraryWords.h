@@ -30,6 +30,10 @@ std::optional<PrivateKind> privateKindOf(std::string_view word);
 // pin's own list is a subset of it. In the order of the enum.
 std::vector<OperandKind> possibleOperands(PinKind kind, PinDirection direction);
 
+// A name of the library format (library, block, pin, private variable): a
+// letter, then letters, digits and '_'.
+bool isLibraryName(std::string_view name);
+
 // A decimal integer written canonically (no '+', no leading zeros, no "-0").
 std::optional<std::int64_t> canonicalInteger(std::string_view text);
 

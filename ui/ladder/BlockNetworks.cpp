@@ -9,8 +9,22 @@
 #include "BlockChooserDialog.h"
 #include "BlockPinsDialog.h"
 #include "BlockText.h"
+#include "MakeBlockDialog.h"
 #include "NetworkItem.h"
+#include "blocks/LibrarySearch.h"
+#include "blocks/ProjectInstances.h"
+#include "blocks/UserLibraryFile.h"
 #include "document/ProjectDocument.h"
+#include "ladder/LadderToText.h"
+#include "project/UnitSettings.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QRegularExpression>
+
+#include <algorithm>
 
 namespace rs::ui {
 
@@ -123,6 +137,99 @@ void LadderPage::updateBlock() {
     instance.version.clear();
     rewriteBlock(tr("Update Block %1").arg(fromUtf8(instance.type)), cursor.step, cursor.network,
                  std::move(instance));
+}
+
+void LadderPage::makeBlock() {
+    if (!editable())
+        return;
+    updateNetwork();
+    std::vector<std::pair<int, int>> chosen = chosenNetworks();
+    std::sort(chosen.begin(), chosen.end());
+    if (chosen.empty())
+        return;
+    const int step = chosen.front().first;
+    ladder::StepLadder made;
+    ladder::StepLadder rest = m_steps[step].ladder;
+    for (auto it = chosen.rbegin(); it != chosen.rend(); ++it) {
+        if (it->first != step || it->second >= networkCount(step)) {
+            setMessage(tr("Make Block takes networks of one step."));
+            return;
+        }
+        const ladder::Network& network = rest.networks[it->second];
+        if (network.block) {
+            setMessage(tr("A block cannot hold a block: leave block networks out of the "
+                          "selection."));
+            return;
+        }
+        made.networks.insert(made.networks.begin(), network);
+        rest.networks.erase(rest.networks.begin() + it->second);
+    }
+    if (m_document->path().isEmpty()) {
+        setMessage(tr("Save the project first: its blocks go to a library beside it."));
+        return;
+    }
+    // What the rest of the unit's code uses stays outside the block.
+    std::vector<lang::Line> elsewhere = ladder::toLines(rest);
+    for (const auto& unit : m_document->project().program.units)
+        if (unit.station() == m_station)
+            for (const auto& unitStep : unit.steps)
+                if (!(unitStep.address == m_steps[step].address))
+                    elsewhere.insert(elsewhere.end(), unitStep.lines.begin(), unitStep.lines.end());
+
+    const QDir folder = QFileInfo(m_document->path()).absoluteDir();
+    QStringList files = QDir(folder).entryList(
+        {QStringLiteral("*.") + QLatin1String(blocks::kLibraryExtension)}, QDir::Files, QDir::Name);
+    QString stem = QFileInfo(m_document->path()).completeBaseName();
+    stem.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_]")), QStringLiteral("_"));
+    const QString offered = QStringLiteral("%1_Blocks.%2").arg(stem, blocks::kLibraryExtension);
+    if (!files.contains(offered))
+        files.prepend(offered);
+    MakeBlockDialog dialog(ladder::toLines(made), blocks::addressesIn(elsewhere), files, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const blocks::BlockDraft& draft = dialog.draft();
+    const QString file = folder.absoluteFilePath(dialog.libraryFile());
+    if (const QString error =
+            blocks::addBlockToLibraryFile(file, draft.block, dialog.newLibraryName());
+        !error.isEmpty()) {
+        QMessageBox::warning(this, tr("Make Block"),
+                             tr("The block could not be written: %1").arg(error));
+        return;
+    }
+    m_document->reloadLibraries();
+
+    // The project names its libraries only when it chose them; then it names this one too.
+    std::vector<std::string> entries = m_document->project().libraries;
+    const std::string entry = dialog.libraryFile().toStdString();
+    if (!entries.empty() && std::find(entries.begin(), entries.end(), entry) == entries.end())
+        entries.push_back(entry);
+    const blocks::LibrarySet libraries = blocks::librariesFor(
+        {QCoreApplication::applicationDirPath(), m_document->path(), {}}, entries);
+    const blocks::LoadedLibrary* library = nullptr;
+    for (const auto& loaded : libraries.libraries)
+        if (loaded.path == file)
+            library = &loaded;
+    if (!library) {
+        setMessage(tr("The library %1 is not among the project's libraries.").arg(file));
+        return;
+    }
+    blocks::BlockInstance instance = draft.instance;
+    instance.library = library->library.name;
+    ladder::Network network;
+    network.block = ladder::unexpandedCall(std::move(instance));
+    const int at = chosen.front().second;
+    rest.networks.insert(rest.networks.begin() + at, std::move(network));
+    const lang::StepAddress address = m_steps[step].address;
+    const int station = m_station;
+    m_drawing.marked.clear();
+    m_document->edit(tr("Make Block %1").arg(fromUtf8(draft.block.name)), [&](project::Project& p) {
+        p.libraries = entries;
+        ladder::setStepLadder(project::programOf(p, station), address, rest);
+        blocks::expandInstances(p.program, libraries);
+    });
+    setCursor({step, at, std::nullopt, std::nullopt, -1});
+    setMessage(tr("Block %1 is in %2; the F list offers it.")
+                   .arg(fromUtf8(draft.block.name), QDir::toNativeSeparators(file)));
 }
 
 void LadderPage::rewriteBlock(const QString& name, int step, int network,

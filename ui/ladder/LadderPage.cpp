@@ -106,6 +106,7 @@ void LadderPage::connectActions() {
     on(a.newNetwork, [this] { newNetwork(); });
     on(a.insertBlock, [this] { insertBlock(); });
     on(a.updateBlock, [this] { updateBlock(); });
+    on(a.makeBlock, [this] { makeBlock(); });
     on(a.expandAll, [this] { setAllCollapsed(false); });
     on(a.collapseAll, [this] { setAllCollapsed(true); });
     on(a.editNetwork, [this] { enterEditMode(); });

@@ -126,6 +126,9 @@ public:
     void editBlockPins(int step, int network);
     // Expands the selected instance again with its block's current version.
     void updateBlock();
+    // Make Block…: the chosen networks become a block of a user library in
+    // the project's folder, and an instance of it takes their place.
+    void makeBlock();
     // How the instance a block network holds stands; null for another network.
     const blocks::InstanceStatus* blockStatus(int step, int network) const;
     // A Config Option network at the start of the PLC code (manual 11.6).

@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
 
@@ -227,6 +228,62 @@ TEST_F(BlockNetworksTest, ABlockNetworkRefusesARungAndSaysWhy) {
     EXPECT_EQ(unitText(), before);
     EXPECT_TRUE(page().message().contains(QStringLiteral("block")))
         << page().message().toStdString();
+}
+
+TEST_F(BlockNetworksTest, MakeBlockTurnsNetworksIntoALibraryBlockAndAnInstance) {
+    const QByteArray text = "! id_pluto:00=000000000000\n"
+                            "! type_pluto:00=A20,is3\n"
+                            "! I0.0=Start\n"
+                            "! pgm_pluto:00\n"
+                            "S0.0_0\n"
+                            "M0.5 = Start * (I0.1 + M0.5)\n"
+                            "Q0.2 = M0.5 * TON(0s30)\n"
+                            "Q0.3 = I0.4\n";
+    openLadder(text);
+    ASSERT_EQ(page().networkCount(0), 3);
+    QWidget* viewport = page().view()->viewport();
+    const auto at = [&](int network) {
+        return page().view()->mapFromScene(
+            page().networkItem(0, network)->sceneBoundingRect().topLeft() + QPointF(60, 12));
+    };
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, at(0));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ShiftModifier, at(1));
+    DialogDriver driver({[](QDialog& dialog) {
+        typeInto(dialog, QStringLiteral("blockName"), QStringLiteral("DelayedLatch"));
+        typeInto(dialog, QStringLiteral("description"), QStringLiteral("A latch and a lamp."));
+        auto* pins = dialog.findChild<QTableWidget*>(QStringLiteral("pins"));
+        ASSERT_NE(pins, nullptr);
+        ASSERT_EQ(pins->rowCount(), 4) << "Start, I0.1, Q0.2 and the private M0.5";
+        EXPECT_EQ(pins->item(3, 0)->text(), QStringLiteral("M0_5"));
+        pins->item(2, 0)->setText(QStringLiteral("Lamp"));
+        dialog.accept();
+    }});
+    page().action(QStringLiteral("makeBlockAction"))->trigger();
+    ASSERT_TRUE(driver.done());
+    const QByteArray made = unitText();
+    EXPECT_TRUE(made.contains(";@block DelayedLatch Start=\"Start\" I0_1=\"I0.1\" Lamp=\"Q0.2\" "
+                              "lib=\"doors_Blocks\" version=\"1.0\" #M0_5=\"M0.5\"\n"
+                              "M0.5 = Start * (I0.1 + M0.5)\nQ0.2 = M0.5 * TON(0s30)\n;@end\n"))
+        << made.toStdString();
+    ASSERT_EQ(page().networkCount(0), 2);
+    EXPECT_TRUE(page().networkItem(0, 0)->layout().block.has_value());
+    EXPECT_EQ(page().blockStatus(0, 0)->standing, rs::blocks::Standing::AsMade);
+    const QByteArray library = readFile(directory.filePath(QStringLiteral("doors_Blocks.rslib")));
+    EXPECT_TRUE(library.contains("block DelayedLatch")) << library.toStdString();
+    EXPECT_TRUE(library.contains("body {Lamp} = {#M0_5} * TON(0s30)")) << library.toStdString();
+
+    // The F list offers it now.
+    DialogDriver chooser({[](QDialog& dialog) {
+        typeInto(dialog, QStringLiteral("filter"), QStringLiteral("DelayedLatch"));
+        EXPECT_EQ(dialog.findChild<QListWidget*>(QStringLiteral("blocks"))->count(), 1);
+        dialog.reject();
+    }});
+    page().insertBlock();
+    EXPECT_TRUE(chooser.done());
+
+    document()->undoStack()->undo();
+    EXPECT_EQ(page().networkCount(0), 3);
+    EXPECT_FALSE(unitText().contains(";@block"));
 }
 
 } // namespace
