@@ -165,6 +165,26 @@
 <context>
     <name>LadderActions</name>
     <message>
+        <source>&amp;Make Block...</source>
+        <translation>Baustein &amp;erstellen...</translation>
+    </message>
+    <message>
+        <source>&amp;Update Block</source>
+        <translation>Baustein &amp;aktualisieren</translation>
+    </message>
+    <message>
+        <source>F</source>
+        <translation>F</translation>
+    </message>
+    <message>
+        <source>A new network holding a function block of the libraries</source>
+        <translation>Ein neues Netzwerk mit einem Funktionsbaustein der Bibliotheken</translation>
+    </message>
+    <message>
+        <source>&amp;Function...</source>
+        <translation>&amp;Funktion...</translation>
+    </message>
+    <message>
         <source>%1 (key %2)</source>
         <translation>%1 (Taste %2)</translation>
     </message>
@@ -910,6 +930,62 @@
 </context>
 <context>
     <name>rs::ui::LadderPage</name>
+    <message>
+        <source>Block %1 is in %2; the F list offers it.</source>
+        <translation>Baustein %1 ist in %2; die F-Liste bietet ihn an.</translation>
+    </message>
+    <message>
+        <source>Make Block %1</source>
+        <translation>Baustein %1 erstellen</translation>
+    </message>
+    <message>
+        <source>The library %1 is not among the project&apos;s libraries.</source>
+        <translation>Die Bibliothek %1 gehört nicht zu den Bibliotheken des Projekts.</translation>
+    </message>
+    <message>
+        <source>The block could not be written: %1</source>
+        <translation>Der Baustein konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Baustein erstellen</translation>
+    </message>
+    <message>
+        <source>Save the project first: its blocks go to a library beside it.</source>
+        <translation>Speichern Sie zuerst das Projekt: seine Bausteine kommen in eine Bibliothek daneben.</translation>
+    </message>
+    <message>
+        <source>A block cannot hold a block: leave block networks out of the selection.</source>
+        <translation>Ein Baustein kann keinen Baustein enthalten: lassen Sie Bausteinnetzwerke aus der Auswahl.</translation>
+    </message>
+    <message>
+        <source>Make Block takes networks of one step.</source>
+        <translation>Baustein erstellen nimmt Netzwerke eines Schritts.</translation>
+    </message>
+    <message>
+        <source>Update Block %1</source>
+        <translation>Baustein %1 aktualisieren</translation>
+    </message>
+    <message>
+        <source>Select a block made by another version of its block to update it.</source>
+        <translation>Wählen Sie einen Baustein aus, der mit einer anderen Version erstellt wurde, um ihn zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Change Block Pins</source>
+        <translation>Anschlüsse des Bausteins ändern</translation>
+    </message>
+    <message>
+        <source>No library of the project has this block: add its library on the project page to bind its pins.</source>
+        <translation>Keine Bibliothek des Projekts hat diesen Baustein: fügen Sie seine Bibliothek auf der Projektseite hinzu, um seine Anschlüsse zu beschalten.</translation>
+    </message>
+    <message>
+        <source>Insert Block %1</source>
+        <translation>Baustein %1 einfügen</translation>
+    </message>
+    <message>
+        <source>Made by %1 version %2; the library has version %3 (Update Block).</source>
+        <translation>Erstellt mit %1 Version %2; die Bibliothek hat Version %3 (Baustein aktualisieren).</translation>
+    </message>
     <message>
         <source>%1 — PLC Code</source>
         <translation>%1 — SPS-Code</translation>
@@ -2692,6 +2768,130 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation>Ein Systembaustein: der Simulator führt seinen Befehl %1 aus.</translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation>Bibliothek %1, Version %2</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>darf offen bleiben</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>muss beschaltet werden</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>Vorgabe %1</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation>Konstante</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation>Doppelregister</translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation>Bit</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>Eingang</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation>Die Bibliotheken des Projekts enthalten keine Bausteine. Fügen Sie auf der Projektseite eine Bibliothek hinzu (Funktionsbibliotheken).</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Suchen:</translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation>Tippen, um nach Name oder Beschreibung zu filtern</translation>
+    </message>
+    <message>
+        <source>Insert Function Block</source>
+        <translation>Funktionsbaustein einfügen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation>Anschlüsse von %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation>Die Bibliotheksdatei ist ein Name aus Buchstaben, Ziffern und &apos;_&apos; im Ordner des Projekts, etwa Meine_Bausteine.rslib.</translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation>privater Merker</translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation>Steht für</translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation>Anschluss oder private Variable</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation>Was die Netzwerke lesen, wird ein Eingang, was sie schreiben, ein Ausgang; ein Merker, den nur sie verwenden, wird der eigene des Bausteins. Benennen Sie die Anschlüsse so, wie die Anwender des Bausteins sie sehen sollen. Kommentare an den Anweisungen kommen nicht in den Baustein.</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>Beschrei&amp;bung:</translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation>&amp;Bibliotheksdatei:</translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation>Baustein&amp;name:</translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation>Was der Baustein tut, für seine Anwender</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Baustein erstellen</translation>
     </message>
 </context>
 </TS>

@@ -165,6 +165,26 @@
 <context>
     <name>LadderActions</name>
     <message>
+        <source>&amp;Make Block...</source>
+        <translation>&amp;Gör block...</translation>
+    </message>
+    <message>
+        <source>&amp;Update Block</source>
+        <translation>&amp;Uppdatera block</translation>
+    </message>
+    <message>
+        <source>F</source>
+        <translation>F</translation>
+    </message>
+    <message>
+        <source>A new network holding a function block of the libraries</source>
+        <translation>Ett nytt nätverk med ett funktionsblock ur biblioteken</translation>
+    </message>
+    <message>
+        <source>&amp;Function...</source>
+        <translation>&amp;Funktion...</translation>
+    </message>
+    <message>
         <source>%1 (key %2)</source>
         <translation>%1 (tangent %2)</translation>
     </message>
@@ -910,6 +930,62 @@
 </context>
 <context>
     <name>rs::ui::LadderPage</name>
+    <message>
+        <source>Block %1 is in %2; the F list offers it.</source>
+        <translation>Block %1 finns i %2; F-listan erbjuder det.</translation>
+    </message>
+    <message>
+        <source>Make Block %1</source>
+        <translation>Gör block %1</translation>
+    </message>
+    <message>
+        <source>The library %1 is not among the project&apos;s libraries.</source>
+        <translation>Biblioteket %1 är inte bland projektets bibliotek.</translation>
+    </message>
+    <message>
+        <source>The block could not be written: %1</source>
+        <translation>Blocket kunde inte skrivas: %1</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Gör block</translation>
+    </message>
+    <message>
+        <source>Save the project first: its blocks go to a library beside it.</source>
+        <translation>Spara projektet först: dess block hamnar i ett bibliotek bredvid det.</translation>
+    </message>
+    <message>
+        <source>A block cannot hold a block: leave block networks out of the selection.</source>
+        <translation>Ett block kan inte innehålla ett block: lämna blocknätverk utanför markeringen.</translation>
+    </message>
+    <message>
+        <source>Make Block takes networks of one step.</source>
+        <translation>Gör block tar nätverk ur ett steg.</translation>
+    </message>
+    <message>
+        <source>Update Block %1</source>
+        <translation>Uppdatera block %1</translation>
+    </message>
+    <message>
+        <source>Select a block made by another version of its block to update it.</source>
+        <translation>Markera ett block gjort av en annan version av sitt block för att uppdatera det.</translation>
+    </message>
+    <message>
+        <source>Change Block Pins</source>
+        <translation>Ändra blockets anslutningar</translation>
+    </message>
+    <message>
+        <source>No library of the project has this block: add its library on the project page to bind its pins.</source>
+        <translation>Inget av projektets bibliotek har detta block: lägg till dess bibliotek på projektsidan för att koppla dess anslutningar.</translation>
+    </message>
+    <message>
+        <source>Insert Block %1</source>
+        <translation>Infoga block %1</translation>
+    </message>
+    <message>
+        <source>Made by %1 version %2; the library has version %3 (Update Block).</source>
+        <translation>Gjort av %1 version %2; biblioteket har version %3 (Uppdatera block).</translation>
+    </message>
     <message>
         <source>%1 — PLC Code</source>
         <translation>%1 — PLC-kod</translation>
@@ -2692,6 +2768,130 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation>Ett systemblock: simulatorn utför dess instruktion %1.</translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation>bibliotek %1, version %2</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>får lämnas öppen</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>måste kopplas</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>standard %1</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation>konstant</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>tid</translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation>dubbelregister</translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation>register</translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation>bit</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>utgång</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>ingång</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation>Projektets bibliotek innehåller inga block. Lägg till ett bibliotek på projektsidan (Funktionsbibliotek).</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Sök:</translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation>Skriv för att filtrera på namn eller beskrivning</translation>
+    </message>
+    <message>
+        <source>Insert Function Block</source>
+        <translation>Infoga funktionsblock</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation>Anslutningar för %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation>Biblioteksfilen är ett namn av bokstäver, siffror och &apos;_&apos; i projektets mapp, till exempel Mina_Block.rslib.</translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation>privat minne</translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation>Står för</translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation>Anslutning eller privat variabel</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Namn</translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation>Det nätverken läser blir en ingång, det de skriver en utgång; ett minne som bara de använder blir blockets eget. Namnge anslutningarna som blockets användare ska se dem. Kommentarer på satserna följer inte med in i blocket.</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beskrivning:</translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation>&amp;Biblioteksfil:</translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation>Block&amp;namn:</translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation>Vad blocket gör, för dess användare</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Gör block</translation>
     </message>
 </context>
 </TS>

@@ -226,6 +226,7 @@ void LadderPage::updateTitle() {
     QStringList inserts;
     for (const auto& [kind, action] : a.insert)
         inserts << LadderActions::keyOf(action);
+    inserts << LadderActions::keyOf(a.insertBlock);
     m_title->setSubtitle(
         tr("Keys: %1 insert the toolbar's elements; %2 %3 %4 before, after, "
            "parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.")
