@@ -10,8 +10,10 @@ namespace {
 using blocks::PinDirection;
 using blocks::PinKind;
 
-constexpr qreal kHeader = 26;  // the block's name at the top of the box
-constexpr qreal kPinRow = 34;  // one pin: its operand's name above the stub, the operand below
+constexpr qreal kHeader = 26; // the block's name at the top of the box
+// One pin: its operand's name above the stub, the operand below; room too for
+// the power pin's contact with its name above and address below.
+constexpr qreal kPinRow = 42;
 constexpr qreal kStub = 36;    // the wire out of the box to a pin's operand
 constexpr qreal kPinInset = 6; // between the box's side and a pin's name
 constexpr qreal kMinimumBox = 150;

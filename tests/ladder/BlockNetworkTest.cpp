@@ -140,6 +140,15 @@ TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsAsQuestionMarks) {
         EXPECT_TRUE(box.box.contains(pin.pinRect)) << pin.pin.toStdString();
     EXPECT_LE(r.pinRect.bottom(), box.box.bottom());
     EXPECT_GE(layout.size.width(), q.operandRect.right());
+    // No two labels of the box cover each other.
+    std::vector<QRectF> labels;
+    for (const auto& pin : box.pins)
+        for (const QRectF& rect : {pin.nameRect, pin.operandRect, pin.contactRect, pin.pinRect})
+            if (!rect.isEmpty())
+                labels.push_back(rect);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+            EXPECT_FALSE(labels[i].intersects(labels[j])) << i << " and " << j;
     bool described = false;
     for (const auto& text : layout.texts)
         described = described || text.text == QStringLiteral("Q is set by S, reset by R.");
