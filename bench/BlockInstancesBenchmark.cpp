@@ -2,8 +2,11 @@
 // Opening a project whose 1,000 block instances are written without their
 // statements (they are expanded on reading) against opening the same project
 // with the statements written out (issue 15: within twice the time).
+#include "blocks/InstanceStanding.h"
 #include "blocks/LibraryReader.h"
 #include "blocks/ProjectInstances.h"
+#include "ladder/Layout.h"
+#include "ladder/UnitLadder.h"
 #include "project/ProjectFile.h"
 
 #include <benchmark/benchmark.h>
@@ -93,8 +96,7 @@ void BM_OpenWrittenOut(benchmark::State& state) {
 }
 BENCHMARK(BM_OpenWrittenOut)->Unit(benchmark::kMillisecond);
 
-// The same statements with no records at all: what the program costs to read.
-void BM_OpenStatementsAlone(benchmark::State& state) {
+const std::string& statementsAlone() {
     static const std::string text = [] {
         std::string plain;
         std::istringstream lines(writtenOut());
@@ -103,11 +105,63 @@ void BM_OpenStatementsAlone(benchmark::State& state) {
                 plain += line + "\n";
         return plain;
     }();
+    return text;
+}
+
+// The same statements with no records at all: what the program costs to read.
+void BM_OpenStatementsAlone(benchmark::State& state) {
     for (auto _ : state) {
-        project::ProjectReadResult read = project::readProject(text);
+        project::ProjectReadResult read = project::readProject(statementsAlone());
         benchmark::DoNotOptimize(read);
     }
 }
 BENCHMARK(BM_OpenStatementsAlone)->Unit(benchmark::kMillisecond);
+
+// What a ladder page does with every unit when it opens and after each edit:
+// how each instance stands, the ladder with boxes, and every network laid out.
+std::size_t layOutUnits(const project::Project& project, bool boxes) {
+    std::size_t elements = 0;
+    for (const auto& unit : project.program.units) {
+        std::vector<blocks::InstanceStatus> statuses;
+        if (boxes)
+            statuses = blocks::instanceStatuses(project.program, unit.station(), libraries());
+        const auto shown = [&](const lang::Step&, const blocks::BlockInstance& instance) {
+            for (const auto& status : statuses)
+                if (status.instance.record == instance.record)
+                    return status.standing == blocks::Standing::AsMade;
+            return false;
+        };
+        const auto symbols = ladder::SymbolTable::of(project.program, unit.station());
+        for (const auto& page : ladder::unitLadder(unit, shown)) {
+            for (std::size_t n = 0; n < page.ladder.networks.size(); ++n) {
+                const ladder::Network& network = page.ladder.networks[n];
+                ladder::LayoutContext context;
+                context.number = static_cast<int>(n) + 1;
+                context.firstStatement = page.firstStatements[n];
+                context.symbols = &symbols;
+                if (network.block)
+                    context.block = libraries().libraries[0].library.findBlock("EquivalentInputs");
+                const ladder::NetworkLayout layout = ladder::layoutNetwork(network, context);
+                elements += layout.elements.size() + (layout.block ? layout.block->pins.size() : 0);
+            }
+        }
+    }
+    return elements;
+}
+
+void BM_LadderOfInstances(benchmark::State& state) {
+    const project::Project project =
+        blocks::readProjectWithInstances(writtenOut(), libraries()).read.project;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(layOutUnits(project, true));
+}
+BENCHMARK(BM_LadderOfInstances)->Unit(benchmark::kMillisecond);
+
+void BM_LadderOfStatementsAlone(benchmark::State& state) {
+    const project::Project project = project::readProject(statementsAlone()).project;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(layOutUnits(project, false));
+}
+BENCHMARK(BM_LadderOfStatementsAlone)->Unit(benchmark::kMillisecond);
 
 } // namespace
