@@ -152,8 +152,7 @@ int runLadder(const Invocation& invocation) {
     const auto pages = ladder::unitLadder(
         *program, [&](const lang::Step& step, const blocks::BlockInstance& instance) {
             const blocks::InstanceStatus* status = statusOf(step.address, instance.record);
-            return status && (status->standing == blocks::Standing::AsMade ||
-                              status->standing == blocks::Standing::OtherVersion);
+            return status && blocks::drawnAsBox(*status);
         });
     const auto page = std::find_if(pages.begin(), pages.end(),
                                    [&](const ladder::StepPage& p) { return p.address == wanted; });

@@ -82,6 +82,20 @@ lang::Diagnostics callProblems(const lang::Document& document, int station,
     return expandInstance(block, trial, frame, variables).diagnostics;
 }
 
+bool drawnAsBox(const InstanceStatus& status) {
+    switch (status.standing) {
+    case Standing::AsMade:
+    case Standing::OtherVersion:
+        return true;
+    case Standing::NotExpanded:
+        return status.block != nullptr;
+    case Standing::EditedByHand:
+    case Standing::NoBlock:
+        break;
+    }
+    return false;
+}
+
 std::vector<InstanceStatus> instanceStatuses(const lang::Document& document, int station,
                                              const LibrarySet& libraries) {
     std::vector<InstanceStatus> statuses;

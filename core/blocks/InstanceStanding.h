@@ -53,6 +53,11 @@ struct InstanceStatus {
 lang::Diagnostics callProblems(const lang::Document& document, int station,
                                const BlockDefinition& block, const BlockInstance& instance);
 
+// Whether the IDE draws the instance as its block's box: while its
+// statements are what a version of its block made, or while it waits for
+// them with its block at hand (a call with an error, to be bound anew).
+bool drawnAsBox(const InstanceStatus& status);
+
 // Every instance of unit `station`, in file order, and how it stands.
 std::vector<InstanceStatus> instanceStatuses(const lang::Document& document, int station,
                                              const LibrarySet& libraries);

@@ -48,13 +48,11 @@ void LadderPage::rebuild() {
             }
             m_blockStatuses =
                 blocks::instanceStatuses(project.program, m_station, m_document->libraries());
-            // An instance is a box while it is what its block makes of it (or
-            // another version's making); edited by hand, it is its statements.
+            // Edited by hand, an instance is its statements (drawnAsBox).
             const auto shown = [this](const lang::Step& step, const blocks::BlockInstance& found) {
                 for (const auto& status : m_blockStatuses)
                     if (status.address == step.address && status.instance.record == found.record)
-                        return status.standing == blocks::Standing::AsMade ||
-                               status.standing == blocks::Standing::OtherVersion;
+                        return blocks::drawnAsBox(status);
                 return false;
             };
             for (auto& page : ladder::unitLadder(unit, shown))

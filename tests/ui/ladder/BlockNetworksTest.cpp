@@ -230,6 +230,30 @@ TEST_F(BlockNetworksTest, ABlockNetworkRefusesARungAndSaysWhy) {
         << page().message().toStdString();
 }
 
+TEST_F(BlockNetworksTest, ABadCallIsSavedAsItIsAndIsMendedInItsPinsDialog) {
+    QByteArray bad = kDoors;
+    bad.replace("Out=\"Q0.2\"", "Out=\"I0.5\"");
+    openLadder(bad);
+    const QString path = document()->path();
+    const QByteArray before = unitText();
+    ASSERT_TRUE(before.contains("Out=\"I0.5\"\n;@end")) << before.toStdString();
+    action("saveAction")->trigger();
+    EXPECT_EQ(readFile(path), bad) << "a file with a bad call loses nothing on save";
+
+    ASSERT_EQ(page().networkCount(0), 2);
+    ASSERT_TRUE(page().networkItem(0, 1)->layout().block.has_value())
+        << "the call waits for its statements as a box, to be bound anew";
+    page().setCursor({0, 1, std::nullopt, std::nullopt, -1});
+    DialogDriver driver({[](QDialog& pins) {
+        typeInto(pins, QStringLiteral("pin_Out"), QStringLiteral("Q0.2"));
+        pins.accept();
+    }});
+    QTest::keyClick(page().view(), Qt::Key_Return);
+    ASSERT_TRUE(driver.done());
+    EXPECT_TRUE(unitText().contains("Q0.2 = Door1A * Door1B * /M0.")) << unitText().toStdString();
+    EXPECT_EQ(page().blockStatus(0, 1)->standing, rs::blocks::Standing::AsMade);
+}
+
 TEST_F(BlockNetworksTest, MakeBlockTurnsNetworksIntoALibraryBlockAndAnInstance) {
     const QByteArray text = "! id_pluto:00=000000000000\n"
                             "! type_pluto:00=A20,is3\n"
