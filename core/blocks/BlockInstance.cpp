@@ -4,6 +4,7 @@
 #include "BlockLibrary.h"
 #include "BodyTemplate.h"
 #include "project/Annotation.h"
+#include "project/Utf8Text.h"
 
 #include <variant>
 
@@ -16,18 +17,6 @@ const Binding* findBinding(const std::vector<Binding>& bindings, std::string_vie
         if (sameName(binding.name, name))
             return &binding;
     return nullptr;
-}
-
-// The record a line holds, when it holds a well-formed one.
-std::optional<project::Annotation> recordOn(const lang::Line& line) {
-    const auto* comment = std::get_if<lang::CommentLine>(&line.body);
-    if (!comment)
-        return std::nullopt;
-    try {
-        return project::parseAnnotation(comment->text);
-    } catch (const project::AnnotationError&) {
-        return std::nullopt; // reading the project reported it
-    }
 }
 
 } // namespace
@@ -55,7 +44,7 @@ std::optional<BlockInstance> instanceOf(const project::Annotation& record, std::
         if (found == std::string_view::npos)
             return 0;
         searched = found + key.size() + 2;
-        return at.column + characterColumn(text, found + 1);
+        return at.column + project::characterColumn(text, found + 1);
     };
     if (record.arguments.size() != 1) {
         error(record.arguments.empty()
@@ -121,7 +110,7 @@ StepInstances findInstances(const lang::Step& step) {
     std::optional<BlockInstance> open;
     for (std::size_t i = 0; i < step.lines.size(); ++i) {
         const lang::Line& line = step.lines[i];
-        const auto record = recordOn(line);
+        const auto record = project::annotationOn(line);
         if (!record)
             continue;
         if (record->kind == kEndRecord) {

@@ -2,6 +2,7 @@
 #include "BodyCheck.h"
 
 #include "lang/Parser.h"
+#include "project/Utf8Text.h"
 
 #include <string_view>
 #include <variant>
@@ -71,12 +72,13 @@ BodyCheckResult checkBody(const BlockDefinition& block) {
         const std::string& line = block.body[i];
         const ScannedLine scanned = scanPlaceholders(line);
         if (scanned.fault) {
-            problem(i, characterColumn(line, scanned.fault->offset), scanned.fault->message);
+            problem(i, project::characterColumn(line, scanned.fault->offset),
+                    scanned.fault->message);
             placeholdersGood = false;
             continue;
         }
         for (const Placeholder& placeholder : scanned.placeholders) {
-            const int column = characterColumn(line, placeholder.offset);
+            const int column = project::characterColumn(line, placeholder.offset);
             if (placeholder.isPrivate) {
                 if (const PrivateVariable* variable = block.findPrivate(placeholder.name)) {
                     result.privateUsed[indexIn(block.privates, variable)] = true;
@@ -119,7 +121,7 @@ BodyCheckResult checkBody(const BlockDefinition& block) {
         const std::size_t offset = byteOffset(line.text, programColumn);
         const std::size_t source = offset < line.templateOffset.size() ? line.templateOffset[offset]
                                                                        : block.body[index].size();
-        problem(index, characterColumn(block.body[index], source), std::move(message));
+        problem(index, project::characterColumn(block.body[index], source), std::move(message));
     };
 
     const lang::ParseResult parsed = lang::parse(program);

@@ -72,14 +72,6 @@ SubstitutedLine substitute(std::string_view line, const PlaceholderValue& value)
     return result;
 }
 
-int characterColumn(std::string_view text, std::size_t offset) {
-    int column = 1;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i)
-        if (!isContinuation(text[i]))
-            ++column;
-    return column;
-}
-
 std::size_t byteOffset(std::string_view text, int column) {
     int seen = 1;
     for (std::size_t i = 0; i < text.size(); ++i) {

@@ -47,9 +47,6 @@ using PlaceholderValue = std::function<std::string(const Placeholder&)>;
 // The line must scan without a fault.
 SubstitutedLine substitute(std::string_view line, const PlaceholderValue& value);
 
-// 1-based character column of a byte offset in UTF-8 text.
-int characterColumn(std::string_view text, std::size_t offset);
-
 // The byte offset of a 1-based character column (the end when past it).
 std::size_t byteOffset(std::string_view text, int column);
 

@@ -107,7 +107,7 @@ public:
             const std::size_t begin = lineStart == std::string_view::npos ? 0 : lineStart + 1;
             const auto line =
                 static_cast<int>(std::count(m_text.begin(), m_text.begin() + begin, '\n')) + 1;
-            error(line, characterColumn(m_text.substr(begin), fault->offset - begin),
+            error(line, project::characterColumn(m_text.substr(begin), fault->offset - begin),
                   fault->message);
             return std::move(m_result);
         }
@@ -137,7 +137,7 @@ private:
     void warning(int line, int column, std::string message) {
         m_result.diagnostics.push_back({lang::Severity::Warning, line, column, std::move(message)});
     }
-    int column(std::size_t offset) const { return characterColumn(m_line, offset); }
+    int column(std::size_t offset) const { return project::characterColumn(m_line, offset); }
 
     void readLine(int number, std::string_view line) {
         if (!line.empty() && line.back() == '\r')

@@ -13,26 +13,6 @@ namespace rs::compiler {
 
 namespace {
 
-std::optional<project::Annotation> recordOn(const lang::Line& line) {
-    const auto* comment = std::get_if<lang::CommentLine>(&line.body);
-    if (!comment)
-        return std::nullopt;
-    try {
-        return project::parseAnnotation(comment->text);
-    } catch (const project::AnnotationError&) {
-        return std::nullopt; // reading the project reported it
-    }
-}
-
-// 1-based character column of a byte offset in UTF-8 text.
-int characterColumn(std::string_view text, std::size_t offset) {
-    int column = 1;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i)
-        if (!project::isUtf8Continuation(text[i]))
-            ++column;
-    return column;
-}
-
 bool fits(ParameterKind kind, const lang::Address& address) {
     using K = lang::AddressKind;
     switch (kind) {
@@ -72,13 +52,13 @@ bool isInteger(std::string_view text) {
 } // namespace
 
 bool isSystemRecord(const lang::Line& line) {
-    const auto record = recordOn(line);
+    const auto record = project::annotationOn(line);
     return record && record->kind == kSystemRecord;
 }
 
 std::optional<SystemCall> readSystemCall(const lang::Document& document, int station,
                                          const lang::Line& line, lang::Diagnostics& diagnostics) {
-    const auto record = recordOn(line);
+    const auto record = project::annotationOn(line);
     if (!record || record->kind != kSystemRecord)
         return std::nullopt;
     const lang::SourceLocation at = line.location;
@@ -109,7 +89,7 @@ std::optional<SystemCall> readSystemCall(const lang::Document& document, int sta
         if (found == std::string_view::npos)
             return 0;
         searched = found + key.size() + 2;
-        return at.column + characterColumn(text, found + 1);
+        return at.column + project::characterColumn(text, found + 1);
     };
     struct Given {
         std::string text;

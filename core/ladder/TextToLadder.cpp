@@ -32,16 +32,9 @@ Element toElement(const lang::Expr& expr) {
 
 // The comment text of a ";@network" record, or nothing for any other line.
 std::optional<std::string> networkComment(const lang::Line& line) {
-    const auto* comment = std::get_if<lang::CommentLine>(&line.body);
-    if (!comment)
-        return std::nullopt;
-    try {
-        auto annotation = project::parseAnnotation(comment->text);
-        if (annotation && annotation->kind == "network")
-            return annotation->value("comment");
-    } catch (const project::AnnotationError&) {
-        // Reading the project reported it; here it is a comment.
-    }
+    const auto annotation = project::annotationOn(line);
+    if (annotation && annotation->kind == "network")
+        return annotation->value("comment");
     return std::nullopt;
 }
 

@@ -105,4 +105,15 @@ std::string formatAnnotation(const Annotation& annotation) {
     return text;
 }
 
+std::optional<Annotation> annotationOn(const lang::Line& line) {
+    const auto* comment = std::get_if<lang::CommentLine>(&line.body);
+    if (!comment)
+        return std::nullopt;
+    try {
+        return parseAnnotation(comment->text);
+    } catch (const AnnotationError&) {
+        return std::nullopt;
+    }
+}
+
 } // namespace rs::project

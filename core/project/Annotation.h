@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "lang/Ast.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +30,10 @@ struct AnnotationError {
 // Reads the text after ';'. Returns nothing when the comment is no annotation
 // (does not start with '@'); throws AnnotationError when it is one but malformed.
 std::optional<Annotation> parseAnnotation(std::string_view commentText);
+
+// The well-formed annotation a comment line holds; nothing for any other
+// line or a malformed annotation (reading the project reports that).
+std::optional<Annotation> annotationOn(const lang::Line& line);
 
 // The comment text (without ';') for an annotation; values are always quoted.
 std::string formatAnnotation(const Annotation& annotation);

@@ -33,4 +33,12 @@ std::optional<TextFault> findTextFault(std::string_view text) {
     return std::nullopt;
 }
 
+int characterColumn(std::string_view text, std::size_t offset) {
+    int column = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i)
+        if (!isUtf8Continuation(text[i]))
+            ++column;
+    return column;
+}
+
 } // namespace rs::project

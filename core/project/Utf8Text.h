@@ -19,6 +19,9 @@ struct TextFault {
 // and values past U+10FFFF included); nothing when the text is clean.
 std::optional<TextFault> findTextFault(std::string_view text);
 
+// The 1-based character column of a byte offset in UTF-8 text.
+int characterColumn(std::string_view text, std::size_t offset);
+
 // True for the bytes that continue a UTF-8 sequence: they start no character.
 inline bool isUtf8Continuation(char c) {
     return (static_cast<unsigned char>(c) & 0xC0) == 0x80;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "blocks/BodyTemplate.h"
+#include "project/Utf8Text.h"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +38,7 @@ TEST(BodyTemplate, SubstitutesAndMapsBackToTheTemplate) {
 }
 
 TEST(BodyTemplate, ColumnsCountCharactersNotBytes) {
-    EXPECT_EQ(characterColumn("åäö x", 7), 5);
+    EXPECT_EQ(rs::project::characterColumn("åäö x", 7), 5);
     EXPECT_EQ(byteOffset("åäö x", 5), 7u);
     EXPECT_EQ(byteOffset("ab", 9), 2u);
 }
