@@ -120,6 +120,7 @@ expect DiagCode -32764
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32764
 set ChannelNO 0
 scans 1
 expect DiagCode -32768
@@ -160,6 +161,7 @@ scans 1
 set ChannelNC 1
 scans 1
 run 40ms
+expect DiagCode -32764
 set ChannelNC 0
 scans 1
 expect DiagCode -32767
@@ -186,6 +188,7 @@ expect DiagCode -32748
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32748
 set ChannelNC 1
 scans 1
 expect DiagCode -32768
@@ -224,6 +227,7 @@ set ChannelNO 0
 scans 1
 expect DiagCode -32748
 run 40ms
+expect DiagCode -32748
 set ChannelNO 1
 scans 1
 expect DiagCode -32767
@@ -243,6 +247,7 @@ expect DiagCode -32763
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32763
 set ChannelNO 1
 scans 1
 expect DiagCode -32767

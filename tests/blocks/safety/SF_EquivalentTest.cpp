@@ -113,6 +113,7 @@ expect DiagCode -32764
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32764
 set ChannelB 1
 # B is seen 50 ms after A
 scans 1
@@ -155,6 +156,7 @@ scans 1
 set ChannelA 1
 scans 1
 run 40ms
+expect DiagCode -32764
 set ChannelA 0
 scans 1
 expect DiagCode -32767
@@ -206,6 +208,7 @@ expect DiagCode -32748
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32748
 set ChannelA 1
 scans 1
 expect DiagCode -32768
@@ -243,6 +246,7 @@ scans 1
 set ChannelB 1
 scans 1
 run 40ms
+expect DiagCode -32748
 set ChannelB 0
 scans 1
 expect DiagCode -32767
@@ -265,6 +269,7 @@ expect DiagCode -32763
 expect Out 0
 expect Error 0
 run 40ms
+expect DiagCode -32763
 set ChannelB 0
 scans 1
 expect DiagCode -32767
