@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "SafetyBench.h"
+
+#include <gtest/gtest.h>
+
+// Instances of the safety blocks keep their own state, timer and edge:
+// several in one unit, and instances in two units of one project.
+
+using rs::safetytest::holdsOnBothInstructionSets;
+using rs::safetytest::scenarioHolds;
+
+TEST(SafetyInstances, TwoInstancesInOneUnitHaveTheirOwnStateTimerAndEdge) {
+    const std::string names = "! I0.0=A1\n! I0.1=B1\n! I0.2=A2\n! I0.3=B2\n! I0.4=Stop1\n"
+                              "! I0.5=Stop2\n! I0.6=Reset1\n! I0.7=Reset2\n! M0.0=Out1\n"
+                              "! M0.1=Out2\n! M0.2=StopOut1\n! M0.3=StopOut2\n! R0.0=Diag1\n"
+                              "! R0.1=Diag2\n! R0.2=StopDiag1\n! R0.3=StopDiag2\n";
+    const std::string code =
+        ";@block SF_Equivalent S_ChannelA=\"A1\" S_ChannelB=\"B1\" DiscrepancyTime=\"0s05\" "
+        "S_EquivalentOut=\"Out1\" DiagCode=\"Diag1\"\n;@end\n"
+        ";@block SF_Equivalent S_ChannelA=\"A2\" S_ChannelB=\"B2\" DiscrepancyTime=\"0s10\" "
+        "S_EquivalentOut=\"Out2\" DiagCode=\"Diag2\"\n;@end\n"
+        ";@block SF_EmergencyStop S_EStopIn=\"Stop1\" Reset=\"Reset1\" S_EStopOut=\"StopOut1\" "
+        "DiagCode=\"StopDiag1\"\n;@end\n"
+        ";@block SF_EmergencyStop S_EStopIn=\"Stop2\" Reset=\"Reset2\" S_EStopOut=\"StopOut2\" "
+        "DiagCode=\"StopDiag2\"\n;@end\n";
+    EXPECT_TRUE(holdsOnBothInstructionSets(names, code, R"(
+scans 1
+set A1 1
+scans 1
+expect Diag1 -32764
+expect Diag2 -32767
+run 30ms
+set A2 1
+scans 1
+expect Diag2 -32764
+# the first instance's 50 ms run out, the second's 100 ms do not
+run 30ms
+expect Diag1 -16383
+expect Diag2 -32764
+set B2 1
+scans 1
+expect Diag2 -32768
+expect Out2 1
+expect Diag1 -16383
+expect Out1 0
+# each stop sees its own reset button
+set Stop1 1
+set Stop2 1
+scans 1
+expect StopDiag1 -32765
+expect StopDiag2 -32765
+set Reset1 1
+scans 1
+expect StopDiag1 -32768
+expect StopOut1 1
+expect StopDiag2 -32765
+expect StopOut2 0
+set Reset2 1
+scans 1
+expect StopDiag2 -32768
+expect StopDiag1 -32768
+)"));
+}
+
+TEST(SafetyInstances, InstancesInTwoUnitsOfOneProjectAreIndependent) {
+    // Unit 0 an A20 with instruction set 3, unit 1 a B46 with set 2; each
+    // instance takes its private variables from its own unit.
+    const std::string project = "! id_pluto:00=000000000000\n! type_pluto:00=A20,is3\n"
+                                "! id_pluto_Double:01=000000000001\n! type_pluto:01=B46,is2\n"
+                                "! pgm_pluto:00\nS0.0_0\n"
+                                ";@block SF_Equivalent S_ChannelA=\"I0.0\" S_ChannelB=\"I0.1\" "
+                                "DiscrepancyTime=\"0s05\" S_EquivalentOut=\"M0.0\" "
+                                "DiagCode=\"R0.0\"\n;@end\n"
+                                "! pgm_pluto:01\nS1.0_0\n"
+                                ";@block SF_Equivalent S_ChannelA=\"I1.0\" S_ChannelB=\"I1.1\" "
+                                "DiscrepancyTime=\"0s05\" S_EquivalentOut=\"M1.0\" "
+                                "DiagCode=\"R1.0\"\n;@end\n";
+    EXPECT_TRUE(scenarioHolds(project, R"(
+scans 1
+set I0.0 1
+set I1.0 1
+set I1.1 1
+scans 1
+expect R0.0 -32764
+expect R1.0 -32768
+expect M1.0 1
+run 60ms
+expect R0.0 -16383
+expect M0.0 0
+expect R1.0 -32768
+expect M1.0 1
+set I1.0 0
+set I1.1 0
+scans 1
+expect R1.0 -32767
+expect R0.0 -16383
+)"));
+}
