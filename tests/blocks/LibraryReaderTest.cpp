@@ -292,7 +292,7 @@ TEST(LibraryReader, EnforcesItsLimits) {
 }
 
 TEST(LibraryReader, TheShippedLibrariesAreCanonicalAndClean) {
-    for (const std::string name : {"Rungsmith_Basics", "Rungsmith_System"}) {
+    for (const std::string name : {"Analog01", "Rungsmith_Basics", "Rungsmith_System"}) {
         std::ifstream file(RUNGSMITH_LIBRARIES "/" + name + ".rslib", std::ios::binary);
         std::stringstream text;
         text << file.rdbuf();
