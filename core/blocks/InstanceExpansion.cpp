@@ -124,12 +124,14 @@ bool fits(const Pin& pin, const compiler::SystemParameter& parameter) {
         return pin.kind == PinKind::Register;
     case compiler::ParameterKind::DoubleRegister:
         return pin.kind == PinKind::DoubleRegister;
+    case compiler::ParameterKind::AnalogInput:
+        return pin.kind == PinKind::Bit; // an input pin, bound to an IA
     }
     return false;
 }
 
 std::string parameterText(const compiler::SystemParameter& parameter) {
-    static constexpr const char* kinds[] = {"bit", "register", "double-register"};
+    static constexpr const char* kinds[] = {"bit", "register", "double-register", "bit"};
     return std::string(parameter.name) + " " +
            (parameter.direction == compiler::ParameterDirection::In ? "in " : "out ") +
            kinds[static_cast<int>(parameter.kind)];

@@ -55,6 +55,12 @@ bool isSixteenBit(const Address& a) {
            a.kind == AddressKind::DoubleRegisterHigh;
 }
 
+// The I/O options that make an IA terminal a value rather than an ordinary input.
+bool isValueOption(const std::string& option) {
+    return option == lang::kVoltageOption || option == lang::kCurrentOption ||
+           option == lang::kCounterUpOption || option == lang::kCounterUpDownOption;
+}
+
 std::string shown(const Operand& operand) {
     return operand.isName() ? "'" + operand.name + "' (" + lang::toString(operand.address) + ")"
                             : lang::toString(operand.address);
@@ -247,6 +253,9 @@ private:
                 checkConstant(argument, parameter.kind == ParameterKind::DoubleRegister);
                 continue;
             }
+            if (!parameter.analogueOption.empty() &&
+                !declaredAs(*argument.operand, parameter.analogueOption, *call.instruction))
+                continue;
             const bool output = parameter.direction == ParameterDirection::Out;
             const bool bit = parameter.kind == ParameterKind::Bit;
             const Use use = bit ? (output ? Use::WriteBit : Use::ReadBit)
@@ -254,6 +263,31 @@ private:
             if (checkOperand(*argument.operand, use) && output && bit)
                 noteCoil(*argument.operand, sequence, step);
         }
+    }
+
+    // An analogue input that a system instruction reads as a value in the
+    // unit of `option` (mV for voltage, µA for current) must not be declared
+    // otherwise; undeclared, it is unconfigured I/O, as anywhere.
+    bool declaredAs(const Operand& operand, std::string_view option,
+                    const SystemInstruction& instruction) {
+        const Address& a = operand.address;
+        const auto unit = m_units.find(a.unit);
+        if (unit == m_units.end())
+            return true;
+        const auto declared = unit->second.analogTerminals.find(a.index);
+        if (declared == unit->second.analogTerminals.end())
+            return true;
+        const auto& options = declared->second.options;
+        if (std::find(options.begin(), options.end(), option) != options.end())
+            return true;
+        const auto valueOption = std::find_if(options.begin(), options.end(), isValueOption);
+        error(operand.location,
+              std::string(instruction.name) + " reads " + shown(operand) + " as a " +
+                  std::string(option) + " input, but line " +
+                  std::to_string(declared->second.location.line) + " declares it " +
+                  (valueOption == options.end() ? "an ordinary input"
+                                                : "a " + *valueOption + " input"));
+        return false;
     }
 
     void checkJump(const Statement& s, int sequence, int step, std::set<int>& jumpTargets) {
@@ -598,10 +632,7 @@ private:
     // or as an ordinary input; the code must use it the same way.
     void checkAnalogUse(const Operand& operand, const TerminalDeclaration& declared, Use use) {
         const bool value =
-            std::any_of(declared.options.begin(), declared.options.end(), [](auto& o) {
-                return o == lang::kVoltageOption || o == lang::kCurrentOption ||
-                       o == lang::kCounterUpOption || o == lang::kCounterUpDownOption;
-            });
+            std::any_of(declared.options.begin(), declared.options.end(), isValueOption);
         const std::string line = std::to_string(declared.location.line);
         if (value && use == Use::ReadBit)
             error(operand.location, shown(operand) + " is declared as a " +

@@ -23,6 +23,8 @@ bool fits(ParameterKind kind, const lang::Address& address) {
                address.kind == K::DoubleRegisterHigh || address.kind == K::SystemRegister;
     case ParameterKind::DoubleRegister:
         return address.kind == K::DoubleRegister;
+    case ParameterKind::AnalogInput:
+        return address.kind == K::AnalogInput;
     }
     return false;
 }
@@ -38,6 +40,9 @@ std::string kindText(const SystemParameter& parameter) {
         break;
     case ParameterKind::DoubleRegister:
         text = "a double register (DR)";
+        break;
+    case ParameterKind::AnalogInput:
+        text = "an analogue input (IA)";
         break;
     }
     return parameter.takesNumber ? text + " or a number" : text;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Image.h"
+#include "lang/Keywords.h"
 
 #include <cstdint>
 #include <span>
@@ -18,19 +19,27 @@ namespace rs::compiler {
 enum class SystemInstructionId : std::uint8_t {
     RegisterValid = 1,
     DRegisterValid = 2,
+    ReadVoltage = 3,
+    ReadCurrent = 4,
+    ReadVoltage32 = 5,
+    ReadCurrent32 = 6,
 };
 
 enum class ParameterDirection : std::uint8_t { In, Out };
 
 // What an operand of a system instruction holds: a bit, a 16-bit word (R,
-// a half of a DR, SR) or a double register.
-enum class ParameterKind : std::uint8_t { Bit, Register, DoubleRegister };
+// a half of a DR, SR), a double register, or an analogue input (IA) read as
+// its value.
+enum class ParameterKind : std::uint8_t { Bit, Register, DoubleRegister, AnalogInput };
 
 struct SystemParameter {
     std::string_view name;
     ParameterDirection direction = ParameterDirection::In;
     ParameterKind kind = ParameterKind::Bit;
     bool takesNumber = false; // an input that may be a decimal number instead of a variable
+    // An analogue input: the I/O option it must be declared with ("voltage",
+    // "current"), for the value is in that option's unit (mV, µA).
+    std::string_view analogueOption = {};
 };
 
 struct SystemInstruction {
@@ -51,11 +60,49 @@ inline constexpr SystemParameter kDRegisterValid[] = {
     {"Valid", ParameterDirection::Out, ParameterKind::Bit},
     {"Value", ParameterDirection::Out, ParameterKind::DoubleRegister},
 };
+// ReadVoltage, ReadCurrent (manual Part 1, 8): the manual's pin names,
+// with '_' for its spaces. The _32 forms take double registers throughout.
+inline constexpr SystemParameter kReadVoltage[] = {
+    {"Input", ParameterDirection::In, ParameterKind::AnalogInput, false, lang::kVoltageOption},
+    {"Value_0V", ParameterDirection::In, ParameterKind::Register, true},
+    {"Value_10V", ParameterDirection::In, ParameterKind::Register, true},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+    {"Voltage", ParameterDirection::Out, ParameterKind::Register},
+    {"Scaled_Value", ParameterDirection::Out, ParameterKind::Register},
+};
+inline constexpr SystemParameter kReadCurrent[] = {
+    {"Input", ParameterDirection::In, ParameterKind::AnalogInput, false, lang::kCurrentOption},
+    {"Value_4mA", ParameterDirection::In, ParameterKind::Register, true},
+    {"Value_20mA", ParameterDirection::In, ParameterKind::Register, true},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+    {"Current", ParameterDirection::Out, ParameterKind::Register},
+    {"Scaled_Value", ParameterDirection::Out, ParameterKind::Register},
+};
+inline constexpr SystemParameter kReadVoltage32[] = {
+    {"Input", ParameterDirection::In, ParameterKind::AnalogInput, false, lang::kVoltageOption},
+    {"Value_0V", ParameterDirection::In, ParameterKind::DoubleRegister, true},
+    {"Value_10V", ParameterDirection::In, ParameterKind::DoubleRegister, true},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+    {"Voltage", ParameterDirection::Out, ParameterKind::DoubleRegister},
+    {"Scaled_Value", ParameterDirection::Out, ParameterKind::DoubleRegister},
+};
+inline constexpr SystemParameter kReadCurrent32[] = {
+    {"Input", ParameterDirection::In, ParameterKind::AnalogInput, false, lang::kCurrentOption},
+    {"Value_4mA", ParameterDirection::In, ParameterKind::DoubleRegister, true},
+    {"Value_20mA", ParameterDirection::In, ParameterKind::DoubleRegister, true},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+    {"Current", ParameterDirection::Out, ParameterKind::DoubleRegister},
+    {"Scaled_Value", ParameterDirection::Out, ParameterKind::DoubleRegister},
+};
 } // namespace parameters
 
 inline constexpr SystemInstruction kSystemInstructions[] = {
     {SystemInstructionId::RegisterValid, "RegisterValid", parameters::kRegisterValid},
     {SystemInstructionId::DRegisterValid, "DRegisterValid", parameters::kDRegisterValid},
+    {SystemInstructionId::ReadVoltage, "ReadVoltage", parameters::kReadVoltage},
+    {SystemInstructionId::ReadCurrent, "ReadCurrent", parameters::kReadCurrent},
+    {SystemInstructionId::ReadVoltage32, "ReadVoltage_32", parameters::kReadVoltage32},
+    {SystemInstructionId::ReadCurrent32, "ReadCurrent_32", parameters::kReadCurrent32},
 };
 
 // By name, without regard to case (as block and pin names); null when unknown.

@@ -91,7 +91,8 @@ TEST(SystemCall, WrongCallsAreErrorsAtTheRecord) {
     const std::vector<Case> cases = {
         {";@system ReadTemperature Input=\"R0.5\"",
          "12:1: error: unknown system instruction 'ReadTemperature'; Rungsmith's image has "
-         "RegisterValid, DRegisterValid\n"},
+         "RegisterValid, DRegisterValid, ReadVoltage, ReadCurrent, ReadVoltage_32, "
+         "ReadCurrent_32\n"},
         {";@system", "12:1: error: @system needs one system instruction's name, as in "
                      ";@system RegisterValid Input=\"R1.5\" Valid=\"M0.1\" Value=\"R0.7\"\n"},
         {";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\" Colour=\"red\"",

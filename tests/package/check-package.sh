@@ -73,6 +73,7 @@ for path in \
     ./usr/bin/rungsmith-cli \
     ./usr/share/rungsmith/examples/muting.sps \
     ./usr/share/rungsmith/examples/press-line.sps \
+    ./usr/share/rungsmith/libraries/Analog01.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Basics.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_System.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Safety.rslib \

@@ -34,6 +34,43 @@ void registerValid(UnitState& unit, const DecodedInstruction* operands) {
     store(operands[2], valid ? valueOf(input) : 0);
 }
 
+// The nominal range of an analogue input and what the block scales it by.
+struct AnalogueRange {
+    std::int64_t low;  // mV or µA: the point Value_0V or Value_4mA is given for
+    std::int64_t high; // the point Value_10V or Value_20mA is given for
+};
+constexpr AnalogueRange kVoltageRange{0, 10'000};     // 0-10 V in mV
+constexpr AnalogueRange kCurrentRange{4'000, 20'000}; // 4-20 mA in µA
+
+// a / b rounded down, for b > 0.
+std::int64_t floorDivided(std::int64_t a, std::int64_t b) {
+    return a / b - (a % b < 0 ? 1 : 0);
+}
+
+// offset · span / width to the nearest integer, a half rounded up, exact
+// for every 32-bit offset and span: with offset = q · width + r, 0 <= r <
+// width, no product leaves 64 bits.
+std::int64_t scaled(std::int64_t offset, std::int64_t span, std::int64_t width) {
+    const std::int64_t q = floorDivided(offset, width);
+    const std::int64_t r = offset - q * width;
+    return q * span + floorDivided(2 * r * span + width, 2 * width);
+}
+
+// ReadVoltage, ReadCurrent and their _32 forms (manual Part 1, 8): the
+// input's value is the measured one in mV or µA, already calibrated; Q says
+// it is within the nominal range; the scaled value is the straight line
+// through (low, Value at low) and (high, Value at high), also outside the
+// range (a wire break at 0 mA reads below the value at 4 mA).
+void readAnalogue(const DecodedInstruction* operands, AnalogueRange range) {
+    const std::int64_t measured = operands[0].readWord();
+    const std::int64_t atLow = valueOf(operands[1]);
+    const std::int64_t atHigh = valueOf(operands[2]);
+    operands[3].writeBit(range.low <= measured && measured <= range.high);
+    store(operands[4], measured);
+    store(operands[5],
+          atLow + scaled(measured - range.low, atHigh - atLow, range.high - range.low));
+}
+
 } // namespace
 
 void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
@@ -42,6 +79,14 @@ void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
     case SystemInstructionId::RegisterValid:
     case SystemInstructionId::DRegisterValid:
         registerValid(unit, operands);
+        return;
+    case SystemInstructionId::ReadVoltage:
+    case SystemInstructionId::ReadVoltage32:
+        readAnalogue(operands, kVoltageRange);
+        return;
+    case SystemInstructionId::ReadCurrent:
+    case SystemInstructionId::ReadCurrent32:
+        readAnalogue(operands, kCurrentRange);
         return;
     }
 }
