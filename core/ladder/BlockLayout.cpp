@@ -113,6 +113,11 @@ qreal placeBlock(NetworkLayout& layout, const BlockCall& call, const LayoutConte
             describeOperand(pin, bound.binding->operand, context.symbols);
         else
             pin.operand = QStringLiteral("???");
+        // An analogue input bound to a pin is read for its value (a system
+        // block's Input): shown as a number, never as the rung's power.
+        if (pin.address &&
+            (pin.address->kind == lang::AddressKind::AnalogInput || !pin.address->isBit()))
+            pin.kind = PinKind::Register;
         const bool in = bound.direction == PinDirection::In;
         const std::size_t row = in ? inRow++ : outRow++;
         const qreal y = boxTop + kHeader + static_cast<qreal>(row) * kPinRow + kPinRow / 2;
@@ -120,7 +125,7 @@ qreal placeBlock(NetworkLayout& layout, const BlockCall& call, const LayoutConte
         if (in) {
             pin.pinRect = QRectF(boxLeft + kPinInset, y - half,
                                  boxWidth - widestOut - 3 * kPinInset, 2 * half);
-            pin.power = !powerTaken && bound.kind == PinKind::Bit;
+            pin.power = !powerTaken && pin.kind == PinKind::Bit;
             powerTaken = powerTaken || pin.power;
             if (pin.power) {
                 // The rung: rail, a contact of the operand, the pin.

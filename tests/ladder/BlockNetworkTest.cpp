@@ -155,4 +155,20 @@ TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsAsQuestionMarks) {
     EXPECT_TRUE(described) << "the block's description is the network's comment";
 }
 
+TEST(BlockNetwork, AnAnalogueInputOnAPinIsANumberAndTakesNoRungPower) {
+    const std::string code = ";@block Latch S=\"IA0.1\" Q=\"Q0.2\" lib=\"Test\"\n;@end\n";
+    const auto project = rs::test::projectWithCode(code);
+    const auto pages = unitLadder(project.program.units.front());
+    const rs::blocks::BlockDefinition block = latch();
+    LayoutContext context;
+    context.block = &block;
+    const NetworkLayout layout = layoutNetwork(pages.front().ladder.networks.at(0), context);
+    ASSERT_TRUE(layout.block.has_value());
+    const PinLayout& s = layout.block->pins.at(0);
+    EXPECT_FALSE(s.power);
+    EXPECT_EQ(s.kind, rs::blocks::PinKind::Register);
+    EXPECT_EQ(s.operand, QStringLiteral("IA0.1"));
+    EXPECT_TRUE(layout.block->pins.at(1).power) << "R is the first bit input now";
+}
+
 } // namespace
