@@ -30,6 +30,7 @@ struct BoundPin {
     PinDirection direction = PinDirection::In;
     PinKind kind = PinKind::Bit;
     const blocks::Binding* binding = nullptr;
+    const blocks::Pin* pin = nullptr; // as the block defines it; null without the block
 };
 
 // The block's pins in its order; without the block, the pins the record binds.
@@ -38,11 +39,11 @@ std::vector<BoundPin> boundPins(const blocks::BlockInstance& instance,
     std::vector<BoundPin> pins;
     if (!block) {
         for (const auto& binding : instance.pins)
-            pins.push_back({binding.name, PinDirection::In, PinKind::Bit, &binding});
+            pins.push_back({binding.name, PinDirection::In, PinKind::Bit, &binding, nullptr});
         return pins;
     }
     for (const auto& pin : block->pins)
-        pins.push_back({pin.name, pin.direction, pin.kind, instance.findPin(pin.name)});
+        pins.push_back({pin.name, pin.direction, pin.kind, instance.findPin(pin.name), &pin});
     return pins;
 }
 
@@ -65,6 +66,17 @@ void describeOperand(PinLayout& pin, const std::string& operand, const SymbolTab
             return;
         }
     pin.operand = text(operand);
+}
+
+// What an open pin shows: its default in parentheses, nothing for a
+// secondary output (it may stay open, manual 3.13), else "???" as the
+// manual draws a pin still to be bound (3.10).
+QString openPinText(const blocks::Pin* pin) {
+    if (pin && pin->defaultValue)
+        return QStringLiteral("(%1)").arg(text(*pin->defaultValue));
+    if (pin && pin->direction == PinDirection::Out && pin->role == blocks::PinRole::Secondary)
+        return {};
+    return QStringLiteral("???");
 }
 
 } // namespace
@@ -112,7 +124,7 @@ qreal placeBlock(NetworkLayout& layout, const BlockCall& call, const LayoutConte
         if (bound.binding)
             describeOperand(pin, bound.binding->operand, context.symbols);
         else
-            pin.operand = QStringLiteral("???");
+            pin.operand = openPinText(bound.pin);
         // An analogue input bound to a pin is read for its value (a system
         // block's Input): shown as a number, never as the rung's power.
         if (pin.address &&

@@ -394,11 +394,13 @@ private:
         return bottom;
     }
 
-    // A block network shows its block's description as its comment.
+    // A block network shows the first line of its block's description as
+    // its comment: the dialogs show the whole of it.
     std::string commentShown() const {
-        if (m_network.block && m_context.block)
-            return m_context.block->description.in(m_context.language);
-        return m_network.comment;
+        if (!m_network.block || !m_context.block)
+            return m_network.comment;
+        const std::string& description = m_context.block->description.in(m_context.language);
+        return description.substr(0, description.find('\n'));
     }
 
     // The title and the comment's lines beside it; returns where the rungs start.

@@ -106,7 +106,7 @@ TEST(BlockNetwork, APastedInstanceComesWithoutItsStatementsAndPrivateVariables) 
               ";@block Latch S=\"EStop\" Q=\"Q0.2\" lib=\"Test\" version=\"2.0\"\n;@end\n");
 }
 
-TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsAsQuestionMarks) {
+TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsShowWhatTheyTake) {
     const auto project = rs::test::projectWithCode(kStep);
     const auto pages = unitLadder(project.program.units.front());
     const auto symbols = SymbolTable::of(project.program, 0);
@@ -131,7 +131,7 @@ TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsAsQuestionMarks) {
     EXPECT_LT(s.contactRect.right(), box.box.left());
     EXPECT_FALSE(r.power);
     EXPECT_TRUE(r.open);
-    EXPECT_EQ(r.operand, QStringLiteral("???"));
+    EXPECT_EQ(r.operand, QStringLiteral("(0)")) << "an open input shows the default it takes";
     EXPECT_LT(r.stub.x1(), box.box.left());
     EXPECT_EQ(q.operand, QStringLiteral("Q0.2"));
     EXPECT_GT(q.stub.x2(), box.box.right());
@@ -155,6 +155,28 @@ TEST(BlockNetwork, TheBoxHasInputsLeftOutputsRightAndOpenPinsAsQuestionMarks) {
     EXPECT_TRUE(described) << "the block's description is the network's comment";
 }
 
+TEST(BlockNetwork, AnOpenPinWithoutDefaultIsQuestionMarksAndAnOpenSecondaryOutputBlank) {
+    rs::blocks::BlockDefinition block = latch();
+    block.pins[1].defaultValue.reset();
+    block.pins.push_back({"Fault",
+                          rs::blocks::PinDirection::Out,
+                          rs::blocks::PinKind::Bit,
+                          rs::blocks::PinRole::Secondary,
+                          std::nullopt,
+                          {}});
+    const auto project = rs::test::projectWithCode(";@block Latch S=\"I0.1\"\n;@end\n");
+    const auto pages = unitLadder(project.program.units.front());
+    LayoutContext context;
+    context.block = &block;
+    const NetworkLayout layout = layoutNetwork(pages.front().ladder.networks.at(0), context);
+    ASSERT_TRUE(layout.block.has_value());
+    ASSERT_EQ(layout.block->pins.size(), 4U);
+    EXPECT_EQ(layout.block->pins[1].operand, QStringLiteral("???")) << "R must be bound";
+    EXPECT_EQ(layout.block->pins[2].operand, QStringLiteral("???")) << "Q is primary";
+    EXPECT_EQ(layout.block->pins[3].operand, QString()) << "Fault may stay open";
+    EXPECT_TRUE(layout.block->pins[3].open);
+}
+
 TEST(BlockNetwork, AnAnalogueInputOnAPinIsANumberAndTakesNoRungPower) {
     const std::string code = ";@block Latch S=\"IA0.1\" Q=\"Q0.2\" lib=\"Test\"\n;@end\n";
     const auto project = rs::test::projectWithCode(code);
@@ -168,6 +190,7 @@ TEST(BlockNetwork, AnAnalogueInputOnAPinIsANumberAndTakesNoRungPower) {
     EXPECT_FALSE(s.power);
     EXPECT_EQ(s.kind, rs::blocks::PinKind::Register);
     EXPECT_EQ(s.operand, QStringLiteral("IA0.1"));
+    EXPECT_EQ(layout.block->pins.at(1).operand, QStringLiteral("(0)"));
     EXPECT_TRUE(layout.block->pins.at(1).power) << "R is the first bit input now";
 }
 

@@ -86,8 +86,9 @@ TEST_F(BlockNetworksTest, AnOpenedInstanceIsOneBoxWithItsPins) {
     ASSERT_EQ(layout.block->pins.size(), 5U);
     EXPECT_TRUE(layout.block->pins[0].power);
     EXPECT_EQ(layout.block->pins[0].name, QStringLiteral("Door1A"));
-    EXPECT_EQ(layout.block->pins[2].operand, QStringLiteral("???")) << "DiscrepancyTime is open";
-    EXPECT_EQ(layout.block->pins[4].operand, QStringLiteral("???")) << "Fault is open";
+    EXPECT_EQ(layout.block->pins[2].operand, QStringLiteral("(0s50)"))
+        << "DiscrepancyTime is open and takes its default";
+    EXPECT_TRUE(layout.block->pins[4].operand.isEmpty()) << "Fault may stay open";
     const std::set<rs::lang::Address> watched = page().pinVariables();
     EXPECT_EQ(watched.size(), 3U) << "Door1A, Door1B and Q0.2 show live values";
 }
