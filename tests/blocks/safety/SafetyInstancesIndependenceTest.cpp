@@ -96,3 +96,57 @@ expect R1.0 -32767
 expect R0.0 -16383
 )"));
 }
+
+TEST(SafetyInstances, TwoHandControlsAndGuardLocksInOneUnitHaveTheirOwnTimerAndEdge) {
+    const std::string names = "! I0.0=B1a\n! I0.1=B2a\n! I0.2=B1b\n! I0.3=B2b\n! I0.4=Closed\n"
+                              "! I0.5=Locked\n! I0.6=Safe\n! I0.7=Start\n! M0.10=Unlock1\n"
+                              "! M0.11=Unlock2\n! M0.0=OutA\n! M0.1=OutB\n! R0.0=DiagA\n"
+                              "! R0.1=DiagB\n! R0.2=LockDiag1\n! R0.3=LockDiag2\n";
+    const std::string code =
+        ";@block SF_TwoHandControlTypeIII S_Button1=\"B1a\" S_Button2=\"B2a\" "
+        "S_TwoHandOut=\"OutA\" DiagCode=\"DiagA\"\n;@end\n"
+        ";@block SF_TwoHandControlTypeIII S_Button1=\"B1b\" S_Button2=\"B2b\" "
+        "S_TwoHandOut=\"OutB\" DiagCode=\"DiagB\"\n;@end\n"
+        ";@block SF_GuardLocking S_GuardMonitoring=\"Closed\" S_GuardLock=\"Locked\" "
+        "S_SafetyActive=\"Safe\" S_StartReset=\"Start\" UnlockRequest=\"Unlock1\" "
+        "DiagCode=\"LockDiag1\"\n;@end\n"
+        ";@block SF_GuardLocking S_GuardMonitoring=\"Closed\" S_GuardLock=\"Locked\" "
+        "S_SafetyActive=\"Safe\" S_StartReset=\"Start\" UnlockRequest=\"Unlock2\" "
+        "DiagCode=\"LockDiag2\"\n;@end\n";
+    EXPECT_TRUE(holdsOnBothInstructionSets(names, code, R"(
+set Closed 1
+set Locked 1
+set Safe 1
+set Start 1
+scans 2
+expect DiagA -32764
+expect DiagB -32764
+expect LockDiag1 -32768
+expect LockDiag2 -32768
+set B1a 1
+scans 1
+expect DiagA -32763
+run 300ms
+set B1b 1
+scans 1
+expect DiagB -32763
+# the first instance's 500 ms run out, the second's do not
+run 200ms
+expect DiagA -16379
+expect DiagB -32763
+set B2b 1
+scans 1
+expect DiagB -32768
+expect OutB 1
+expect OutA 0
+# each lock sees its own request
+set Unlock1 1
+scans 1
+expect LockDiag1 -32749
+expect LockDiag2 -32768
+set Unlock2 1
+scans 1
+expect LockDiag2 -32749
+expect LockDiag1 -32749
+)"));
+}
