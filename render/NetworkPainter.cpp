@@ -145,8 +145,8 @@ private:
         QString operand = pin.operand;
         if (value && !bit)
             operand += QStringLiteral(" = %1").arg(*value);
-        m_painter.setPen(pin.open ? m_style.ink : m_style.addressInk);
-        drawText(pin.open ? m_nameFont : m_addressFont, pin.operandRect, side | Qt::AlignTop,
+        m_painter.setPen(pin.missing ? m_style.ink : m_style.addressInk);
+        drawText(pin.missing ? m_nameFont : m_addressFont, pin.operandRect, side | Qt::AlignTop,
                  operand, Qt::ElideMiddle);
     }
 

@@ -68,6 +68,8 @@ void describeOperand(PinLayout& pin, const std::string& operand, const SymbolTab
     pin.operand = text(operand);
 }
 
+const QString kMissing = QStringLiteral("???");
+
 // What an open pin shows: its default in parentheses, nothing for a
 // secondary output (it may stay open, manual 3.13), else "???" as the
 // manual draws a pin still to be bound (3.10).
@@ -76,7 +78,7 @@ QString openPinText(const blocks::Pin* pin) {
         return QStringLiteral("(%1)").arg(text(*pin->defaultValue));
     if (pin && pin->direction == PinDirection::Out && pin->role == blocks::PinRole::Secondary)
         return {};
-    return QStringLiteral("???");
+    return kMissing;
 }
 
 } // namespace
@@ -125,6 +127,7 @@ qreal placeBlock(NetworkLayout& layout, const BlockCall& call, const LayoutConte
             describeOperand(pin, bound.binding->operand, context.symbols);
         else
             pin.operand = openPinText(bound.pin);
+        pin.missing = pin.open && pin.operand == kMissing;
         // An analogue input bound to a pin is read for its value (a system
         // block's Input): shown as a number, never as the rung's power.
         if (pin.address &&

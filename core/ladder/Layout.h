@@ -94,10 +94,11 @@ struct PinLayout {
     QString pin;
     blocks::PinDirection direction = blocks::PinDirection::In;
     blocks::PinKind kind = blocks::PinKind::Bit;
-    bool open = false;  // unbound: drawn "???" (manual 3.10)
-    bool power = false; // the first bit input: the rung's power through a contact of its operand
-    QString name;       // the operand's symbolic name; empty when it has none
-    QString operand;    // the operand's address, or the time or constant bound
+    bool open = false;    // unbound: its default, nothing, or "???"
+    bool missing = false; // open and to be bound: drawn "???" (manual 3.10)
+    bool power = false;   // the first bit input: the rung's power through a contact of its operand
+    QString name;         // the operand's symbolic name; empty when it has none
+    QString operand;      // the operand's address, or the time or constant bound
     std::optional<lang::Address> address; // the bound variable, whose live value is shown
     QRectF pinRect;                       // the pin's name, inside the box
     QLineF stub;                          // from the box's side outwards

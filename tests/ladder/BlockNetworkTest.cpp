@@ -175,6 +175,8 @@ TEST(BlockNetwork, AnOpenPinWithoutDefaultIsQuestionMarksAndAnOpenSecondaryOutpu
     EXPECT_EQ(layout.block->pins[2].operand, QStringLiteral("???")) << "Q is primary";
     EXPECT_EQ(layout.block->pins[3].operand, QString()) << "Fault may stay open";
     EXPECT_TRUE(layout.block->pins[3].open);
+    EXPECT_FALSE(layout.block->pins[3].missing);
+    EXPECT_TRUE(layout.block->pins[1].missing);
 }
 
 TEST(BlockNetwork, AnAnalogueInputOnAPinIsANumberAndTakesNoRungPower) {

@@ -196,9 +196,11 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
     rebuild();
     updateTitle();
     if (!samePage) {
-        m_view->verticalScrollBar()->setValue(0);
         if (stepCount() > 0 && networkCount(0) > 0)
             setCursor({0, 0, std::nullopt, std::nullopt, -1});
+        // A page opens at its top left, whatever the view's size is yet.
+        m_view->verticalScrollBar()->setValue(0);
+        m_view->horizontalScrollBar()->setValue(0);
     }
 }
 
@@ -370,6 +372,11 @@ void LadderPage::ensureCursorVisible() {
         rect = item->elementRect(*element);
     else if (cursor.node)
         rect = item->groupRect(*cursor.node);
+    // Of a network or group larger than the view, its top left is what
+    // must show: ensureVisible would bring its bottom right into view.
+    const QSizeF view = m_view->mapToScene(m_view->viewport()->rect()).boundingRect().size();
+    rect.setWidth(std::min(rect.width(), std::max<qreal>(view.width() - 40, 1)));
+    rect.setHeight(std::min(rect.height(), std::max<qreal>(view.height() - 40, 1)));
     m_view->ensureVisible(item->mapRectToScene(rect), 20, 20);
 }
 
