@@ -150,3 +150,59 @@ expect LockDiag2 -32749
 expect LockDiag1 -32749
 )"));
 }
+
+TEST(SafetyInstances, EdmAndMutingInstancesInOneUnitHaveTheirOwnTimersAndEdges) {
+    const std::string names = "! I0.0=Ctl1\n! I0.1=Ctl2\n! I0.2=Fb1\n! I0.3=Fb2\n! I0.4=Start\n"
+                              "! I0.5=Aopd\n! I0.6=Lamp\n! I0.7=Enable\n! I0.10=A11\n"
+                              "! I0.11=A12\n! I0.12=B11\n! I0.13=B12\n! I0.17=Rear\n"
+                              "! R0.0=EdmDiag1\n! R0.1=EdmDiag2\n! R0.2=MuteDiag1\n"
+                              "! R0.3=MuteDiag2\n";
+    const std::string code =
+        ";@block SF_EDM S_OutControl=\"Ctl1\" S_EDM1=\"Fb1\" S_EDM2=\"Fb1\" "
+        "MonitoringTime=\"0s05\" S_StartReset=\"Start\" DiagCode=\"EdmDiag1\"\n;@end\n"
+        ";@block SF_EDM S_OutControl=\"Ctl2\" S_EDM1=\"Fb2\" S_EDM2=\"Fb2\" "
+        "MonitoringTime=\"0s10\" S_StartReset=\"Start\" DiagCode=\"EdmDiag2\"\n;@end\n"
+        ";@block SF_MutingSeq S_AOPD_In=\"Aopd\" MutingSwitch11=\"A11\" MutingSwitch12=\"A12\" "
+        "MutingSwitch21=\"Rear\" MutingSwitch22=\"Rear\" S_MutingLamp=\"Lamp\" "
+        "MaxMutingTime=\"1s00\" MutingEnable=\"Enable\" S_StartReset=\"Start\" "
+        "DiagCode=\"MuteDiag1\"\n;@end\n"
+        ";@block SF_MutingSeq S_AOPD_In=\"Aopd\" MutingSwitch11=\"B11\" MutingSwitch12=\"B12\" "
+        "MutingSwitch21=\"Rear\" MutingSwitch22=\"Rear\" S_MutingLamp=\"Lamp\" "
+        "MaxMutingTime=\"1s00\" MutingEnable=\"Enable\" S_StartReset=\"Start\" "
+        "DiagCode=\"MuteDiag2\"\n;@end\n";
+    EXPECT_TRUE(holdsOnBothInstructionSets(names, code, R"(
+set Start 1
+set Fb1 1
+set Fb2 1
+set Aopd 1
+set Lamp 1
+scans 3
+expect EdmDiag1 -30704
+expect EdmDiag2 -30704
+expect MuteDiag1 -32768
+expect MuteDiag2 -32768
+# both switched on in scan s, neither feedback follows: C090 in s + 6 and s + 11
+set Ctl1 1
+set Ctl2 1
+scans 7
+expect EdmDiag1 -16240
+expect EdmDiag2 -32768
+scans 4
+expect EdmDiag2 -32768
+scans 1
+expect EdmDiag2 -16240
+# each muting sees its own sensors' edges
+set Enable 1
+set A11 1
+scans 1
+expect MuteDiag1 -32751
+expect MuteDiag2 -32768
+set B11 1
+scans 1
+expect MuteDiag2 -32751
+set A12 1
+scans 1
+expect MuteDiag1 -32750
+expect MuteDiag2 -32751
+)"));
+}
