@@ -128,8 +128,9 @@ private:
         const bool bit = pin.kind == blocks::PinKind::Bit;
         const bool powered = bit && value && *value != 0;
         m_painter.setPen(m_style.wirePen(powered));
-        m_painter.drawLine(pin.stub);
-        if (pin.power) {
+        if (!pin.stub.isNull())
+            m_painter.drawLine(pin.stub);
+        if (pin.power && !pin.contactRect.isEmpty()) {
             m_painter.setPen(m_style.wirePen(powered));
             m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
             contact(pin.contactRect, {}, false);

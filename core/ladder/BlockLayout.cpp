@@ -155,6 +155,13 @@ qreal placeBlock(NetworkLayout& layout, const BlockCall& call, const LayoutConte
                 layout.wires.push_back({QLineF(railX, y, pin.contactRect.left(), y),
                                         {PowerFeed::Kind::Rail, context.firstStatement, {}},
                                         false});
+                if (pin.open) {
+                    // Nothing bound, so nothing switches: the rung runs
+                    // straight to the pin, its default written below it.
+                    layout.wires.back().line.setP2(QPointF(boxLeft, y));
+                    pin.contactRect = {};
+                    pin.stub = {};
+                }
             } else {
                 pin.stub = QLineF(boxLeft - kStub, y, boxLeft, y);
                 const qreal right = boxLeft - kStub;

@@ -193,7 +193,15 @@ TEST(BlockNetwork, AnAnalogueInputOnAPinIsANumberAndTakesNoRungPower) {
     EXPECT_EQ(s.kind, rs::blocks::PinKind::Register);
     EXPECT_EQ(s.operand, QStringLiteral("IA0.1"));
     EXPECT_EQ(layout.block->pins.at(1).operand, QStringLiteral("(0)"));
-    EXPECT_TRUE(layout.block->pins.at(1).power) << "R is the first bit input now";
+    const PinLayout& r = layout.block->pins.at(1);
+    EXPECT_TRUE(r.power) << "R is the first bit input now";
+    EXPECT_TRUE(r.contactRect.isEmpty()) << "open, it switches nothing: the rung runs to it";
+    bool straight = false;
+    for (const auto& wire : layout.wires)
+        straight =
+            straight || (wire.line.p2() == QPointF(layout.block->box.left(), wire.line.y1()) &&
+                         wire.feed.kind == PowerFeed::Kind::Rail);
+    EXPECT_TRUE(straight);
 }
 
 } // namespace

@@ -73,6 +73,9 @@ for path in \
     ./usr/bin/rungsmith-cli \
     ./usr/share/rungsmith/examples/muting.sps \
     ./usr/share/rungsmith/examples/press-line.sps \
+    ./usr/share/rungsmith/examples/safety-cell.sps \
+    ./usr/share/rungsmith/examples/safety-cell-press.scn \
+    ./usr/share/rungsmith/examples/safety-cell-conveyor.scn \
     ./usr/share/rungsmith/libraries/Analog01.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Basics.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_System.rslib \
