@@ -23,6 +23,8 @@ enum class SystemInstructionId : std::uint8_t {
     ReadCurrent = 4,
     ReadVoltage32 = 5,
     ReadCurrent32 = 6,
+    HSSpeedCountUp = 7,
+    HSSpeedCountDir = 8,
 };
 
 enum class ParameterDirection : std::uint8_t { In, Out };
@@ -38,7 +40,8 @@ struct SystemParameter {
     ParameterKind kind = ParameterKind::Bit;
     bool takesNumber = false; // an input that may be a decimal number instead of a variable
     // An analogue input: the I/O option it must be declared with ("voltage",
-    // "current"), for the value is in that option's unit (mV, µA).
+    // "current", "counter_up", "counter_updown"), for the value is in that
+    // option's unit (mV, µA, Hz).
     std::string_view analogueOption = {};
 };
 
@@ -94,6 +97,23 @@ inline constexpr SystemParameter kReadCurrent32[] = {
     {"Current", ParameterDirection::Out, ParameterKind::DoubleRegister},
     {"Scaled_Value", ParameterDirection::Out, ParameterKind::DoubleRegister},
 };
+// HS_SpeedCount_Up, HS_SpeedCount_Dir (manual Part 1, 9): the manual's pin
+// names; its speeds "shall be connected to a register (R)".
+inline constexpr SystemParameter kHSSpeedCountUp[] = {
+    {"Input", ParameterDirection::In, ParameterKind::AnalogInput, false, lang::kCounterUpOption},
+    {"Valid", ParameterDirection::Out, ParameterKind::Bit},
+    {"EdgePer10ms", ParameterDirection::Out, ParameterKind::Register},
+    {"PulsePerSec", ParameterDirection::Out, ParameterKind::Register},
+};
+inline constexpr SystemParameter kHSSpeedCountDir[] = {
+    {"Input_A", ParameterDirection::In, ParameterKind::AnalogInput, false,
+     lang::kCounterUpDownOption},
+    {"Input_B", ParameterDirection::In, ParameterKind::AnalogInput, false,
+     lang::kCounterUpDownOption},
+    {"Valid", ParameterDirection::Out, ParameterKind::Bit},
+    {"EdgePer10ms", ParameterDirection::Out, ParameterKind::Register},
+    {"PulsePerSec", ParameterDirection::Out, ParameterKind::Register},
+};
 } // namespace parameters
 
 inline constexpr SystemInstruction kSystemInstructions[] = {
@@ -103,6 +123,8 @@ inline constexpr SystemInstruction kSystemInstructions[] = {
     {SystemInstructionId::ReadCurrent, "ReadCurrent", parameters::kReadCurrent},
     {SystemInstructionId::ReadVoltage32, "ReadVoltage_32", parameters::kReadVoltage32},
     {SystemInstructionId::ReadCurrent32, "ReadCurrent_32", parameters::kReadCurrent32},
+    {SystemInstructionId::HSSpeedCountUp, "HS_SpeedCount_Up", parameters::kHSSpeedCountUp},
+    {SystemInstructionId::HSSpeedCountDir, "HS_SpeedCount_Dir", parameters::kHSSpeedCountDir},
 };
 
 // By name, without regard to case (as block and pin names); null when unknown.

@@ -292,8 +292,8 @@ TEST(LibraryReader, EnforcesItsLimits) {
 }
 
 TEST(LibraryReader, TheShippedLibrariesAreCanonicalAndClean) {
-    for (const std::string name :
-         {"Analog01", "Rungsmith_Basics", "Rungsmith_Safety", "Rungsmith_System"}) {
+    for (const std::string name : {"Analog01", "Rungsmith_Basics", "Rungsmith_Safety",
+                                   "Rungsmith_Speed", "Rungsmith_System"}) {
         std::ifstream file(RUNGSMITH_LIBRARIES "/" + name + ".rslib", std::ios::binary);
         std::stringstream text;
         text << file.rdbuf();

@@ -189,7 +189,7 @@ TEST(SystemBlock, ABlockWhoseCallCannotBeMadeIsAnErrorAtTheRecord) {
         {";@block Newer Input=\"R0.5\"",
          "13:1: Newer: system instruction 'ReadTemperature' is not one of this Rungsmith's "
          "(RegisterValid, DRegisterValid, ReadVoltage, ReadCurrent, ReadVoltage_32, "
-         "ReadCurrent_32)\n"},
+         "ReadCurrent_32, HS_SpeedCount_Up, HS_SpeedCount_Dir)\n"},
         {";@block Misfit Input=\"R0.5\" Valid=\"R1.1\"",
          "13:1: Misfit: the block does not fit its system instruction RegisterValid, which needs "
          "the pin Valid out bit\n"},

@@ -78,6 +78,7 @@ for path in \
     ./usr/share/rungsmith/examples/safety-cell-conveyor.scn \
     ./usr/share/rungsmith/libraries/Analog01.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Basics.rslib \
+    ./usr/share/rungsmith/libraries/Rungsmith_Speed.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_System.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Safety.rslib \
     "./usr/share/applications/$app_id.desktop" \

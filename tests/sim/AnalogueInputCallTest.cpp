@@ -3,46 +3,20 @@
 // (docs/image-format.md, "System instructions"), in each of its tiers: the
 // machine code, the unmarked interpreter and the marking interpreter.
 #include "SimulationFixture.h"
+#include "SimulatorTier.h"
 
 #include <gtest/gtest.h>
 
 #include <climits>
-#include <cstdlib>
-#include <optional>
 #include <ostream>
 #include <string>
 
+using rs::test::MachineCodeSetting;
 using rs::test::Simulated;
+using rs::test::SimulatorTier;
 using namespace rs;
 
 namespace {
-
-enum class Tier { MachineCode, Interpreter, MarkingInterpreter };
-
-// The environment variable that rules the machine code out, for as long as
-// the test runs, and as it was afterwards.
-class MachineCodeSetting {
-public:
-    explicit MachineCodeSetting(bool on) {
-        if (const char* before = std::getenv("RUNGSMITH_NO_JIT"))
-            m_before = before;
-        if (on)
-            unsetenv("RUNGSMITH_NO_JIT");
-        else
-            setenv("RUNGSMITH_NO_JIT", "1", 1);
-    }
-    ~MachineCodeSetting() {
-        if (m_before)
-            setenv("RUNGSMITH_NO_JIT", m_before->c_str(), 1);
-        else
-            unsetenv("RUNGSMITH_NO_JIT");
-    }
-    MachineCodeSetting(const MachineCodeSetting&) = delete;
-    MachineCodeSetting& operator=(const MachineCodeSetting&) = delete;
-
-private:
-    std::optional<std::string> m_before;
-};
 
 // A D45 reading each of its four instructions from an input of its own.
 const char* kProgram =
@@ -64,10 +38,10 @@ const char* kProgram =
     ";@system ReadVoltage_32 Input=\"IA0.3\" Value_0V=\"-2147483648\" Value_10V=\"2147483647\" "
     "Q=\"M0.3\" Voltage=\"DR0.8\" Scaled_Value=\"DR0.12\"\n";
 
-class AnalogueInputCall : public testing::TestWithParam<Tier> {
+class AnalogueInputCall : public testing::TestWithParam<SimulatorTier> {
 protected:
-    AnalogueInputCall() : m_setting(GetParam() == Tier::MachineCode), s(kProgram) {
-        s.simulation->unit(0)->setEagerConduction(GetParam() == Tier::MarkingInterpreter);
+    AnalogueInputCall() : m_setting(GetParam() == SimulatorTier::MachineCode), s(kProgram) {
+        s.simulation->unit(0)->setEagerConduction(GetParam() == SimulatorTier::MarkingInterpreter);
     }
 
     // Q, the calibrated value and the scaled value after a scan with `input`.
@@ -152,17 +126,4 @@ TEST_P(AnalogueInputCall, TheThirtyTwoBitFormsTakeDoubleRegisters) {
     EXPECT_EQ(voltage32(INT_MIN).scaled, INT_MIN);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTier, AnalogueInputCall,
-                         testing::Values(Tier::MachineCode, Tier::Interpreter,
-                                         Tier::MarkingInterpreter),
-                         [](const testing::TestParamInfo<Tier>& info) {
-                             switch (info.param) {
-                             case Tier::MachineCode:
-                                 return "MachineCode";
-                             case Tier::Interpreter:
-                                 return "Interpreter";
-                             case Tier::MarkingInterpreter:
-                                 return "MarkingInterpreter";
-                             }
-                             return "";
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryTier, AnalogueInputCall, rs::test::kEveryTier, rs::test::tierName);

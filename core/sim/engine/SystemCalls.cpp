@@ -71,6 +71,25 @@ void readAnalogue(const DecodedInstruction* operands, AnalogueRange range) {
           atLow + scaled(measured - range.low, atHigh - atLow, range.high - range.low));
 }
 
+// A counter input of a D45 counts up to 14000 Hz (manual Part 1, 9).
+constexpr std::int64_t kHighestCountedFrequency = 14'000;
+
+// HS_SpeedCount_Up, HS_SpeedCount_Dir (manual Part 1, 9): the input's value
+// is its pulse frequency in Hz, signed for an up/down counter (negative
+// counting down); Valid says the counter counts it. PulsePerSec is the
+// frequency and EdgePer10ms the same speed per 10 ms, to the nearest integer
+// with a half away from zero, so that the opposite direction reads the
+// opposite value. Of an up/down pair only Input_A is read: the simulator
+// gives an encoder's speed to its first channel.
+void countSpeed(const DecodedInstruction& input, const DecodedInstruction* outputs,
+                std::int64_t lowest) {
+    const std::int64_t hertz = input.readWord();
+    outputs[0].writeBit(lowest <= hertz && hertz <= kHighestCountedFrequency);
+    const std::int64_t magnitude = (hertz < 0 ? -hertz : hertz) + 50;
+    store(outputs[1], hertz < 0 ? -(magnitude / 100) : magnitude / 100);
+    store(outputs[2], hertz);
+}
+
 } // namespace
 
 void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
@@ -87,6 +106,12 @@ void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
     case SystemInstructionId::ReadCurrent:
     case SystemInstructionId::ReadCurrent32:
         readAnalogue(operands, kCurrentRange);
+        return;
+    case SystemInstructionId::HSSpeedCountUp:
+        countSpeed(operands[0], operands + 1, 0);
+        return;
+    case SystemInstructionId::HSSpeedCountDir:
+        countSpeed(operands[0], operands + 2, -kHighestCountedFrequency);
         return;
     }
 }
