@@ -4,6 +4,8 @@
 #include <QApplication>
 #include <QDialog>
 
+#include <gtest/gtest.h>
+
 DialogDriver::DialogDriver(std::deque<Handler> handlers) : m_handlers(std::move(handlers)) {
     connect(&m_timer, &QTimer::timeout, this, &DialogDriver::poll);
     m_timer.start(10);
@@ -18,6 +20,11 @@ void DialogDriver::poll() {
     m_handlers.pop_front();
     ++m_handled;
     handler(*dialog);
+    // A handler stopped by a failed ASSERT leaves its dialog open, and the
+    // modal loop would wait for it forever: closing it lets the test end
+    // with its failure.
+    if (::testing::Test::HasFatalFailure() && dialog->isVisible())
+        dialog->reject();
     if (m_handlers.empty())
         m_timer.stop();
 }

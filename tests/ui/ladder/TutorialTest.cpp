@@ -252,7 +252,7 @@ TEST_F(TutorialTest, TheMutingApplicationIsDrawnSavedReopenedCompiledAndBehaves)
     clickNode({PageRef::Kind::Ladder, document(), 0, 0});
     page().view()->setFocus();
     QTest::keyClick(page().view(), Qt::Key_Insert);
-    insertBlock(QStringLiteral("muting"), QStringLiteral("TwoSensorMuting"),
+    insertBlock(QStringLiteral("twosensor"), QStringLiteral("TwoSensorMuting"),
                 {{QStringLiteral("Sensor1"), QStringLiteral("MuteSensor1")},
                  {QStringLiteral("Sensor2"), QStringLiteral("MuteSensor2")},
                  {QStringLiteral("Beam"), QStringLiteral("LightBeamSensor")},
@@ -267,7 +267,7 @@ TEST_F(TutorialTest, TheMutingApplicationIsDrawnSavedReopenedCompiledAndBehaves)
     QTest::keyClick(page().view(), '\\');
     insert('C', QStringLiteral("MutingActive"));
     QTest::keyClick(page().view(), Qt::Key_Insert);
-    insertBlock(QStringLiteral("monitored"), QStringLiteral("MonitoredReset"),
+    insertBlock(QStringLiteral("monitoredreset"), QStringLiteral("MonitoredReset"),
                 {{QStringLiteral("Enable"), QStringLiteral("ProtectionOk")},
                  {QStringLiteral("Reset"), QStringLiteral("ResetButton")},
                  {QStringLiteral("Feedback"), QStringLiteral("ContMonitor")},
