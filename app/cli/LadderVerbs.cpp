@@ -142,16 +142,10 @@ int runLadder(const Invocation& invocation) {
         blocks::librariesFor(loaded.places, loaded.project.libraries);
     const std::vector<blocks::InstanceStatus> statuses =
         blocks::instanceStatuses(document, *unit, libraries);
-    const auto statusOf = [&](const lang::StepAddress& step,
-                              std::size_t record) -> const blocks::InstanceStatus* {
-        for (const auto& status : statuses)
-            if (status.address == step && status.instance.record == record)
-                return &status;
-        return nullptr;
-    };
     const auto pages = ladder::unitLadder(
         *program, [&](const lang::Step& step, const blocks::BlockInstance& instance) {
-            const blocks::InstanceStatus* status = statusOf(step.address, instance.record);
+            const blocks::InstanceStatus* status =
+                blocks::statusAt(statuses, step.address, instance.record);
             return status && blocks::drawnAsBox(*status);
         });
     const auto page = std::find_if(pages.begin(), pages.end(),
@@ -174,7 +168,8 @@ int runLadder(const Invocation& invocation) {
     context.symbols = &symbols;
     const ladder::Network& network = page->ladder.networks[index];
     if (network.block)
-        if (const blocks::InstanceStatus* status = statusOf(wanted, network.block->instance.record))
+        if (const blocks::InstanceStatus* status =
+                blocks::statusAt(statuses, wanted, network.block->instance.record))
             context.block = status->block;
     const ladder::NetworkLayout layout = ladder::layoutNetwork(network, context);
     std::set<lang::Address> pinVariables;

@@ -96,6 +96,14 @@ bool drawnAsBox(const InstanceStatus& status) {
     return false;
 }
 
+const InstanceStatus* statusAt(const std::vector<InstanceStatus>& statuses,
+                               const lang::StepAddress& step, std::size_t record) {
+    for (const auto& status : statuses)
+        if (status.address == step && status.instance.record == record)
+            return &status;
+    return nullptr;
+}
+
 std::vector<InstanceStatus> instanceStatuses(const lang::Document& document, int station,
                                              const LibrarySet& libraries) {
     std::vector<InstanceStatus> statuses;

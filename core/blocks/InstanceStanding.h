@@ -58,6 +58,11 @@ lang::Diagnostics callProblems(const lang::Document& document, int station,
 // them with its block at hand (a call with an error, to be bound anew).
 bool drawnAsBox(const InstanceStatus& status);
 
+// The status of the instance whose ";@block" record is line `record` of
+// the step at `step`; null when there is none.
+const InstanceStatus* statusAt(const std::vector<InstanceStatus>& statuses,
+                               const lang::StepAddress& step, std::size_t record);
+
 // Every instance of unit `station`, in file order, and how it stands.
 std::vector<InstanceStatus> instanceStatuses(const lang::Document& document, int station,
                                              const LibrarySet& libraries);

@@ -42,11 +42,7 @@ const blocks::InstanceStatus* LadderPage::blockStatus(int step, int network) con
     const auto& block = m_steps[step].ladder.networks[network].block;
     if (!block)
         return nullptr;
-    for (const auto& status : m_blockStatuses)
-        if (status.address == m_steps[step].address &&
-            status.instance.record == block->instance.record)
-            return &status;
-    return nullptr;
+    return blocks::statusAt(m_blockStatuses, m_steps[step].address, block->instance.record);
 }
 
 QString LadderPage::blockNote(const blocks::InstanceStatus& status) const {

@@ -50,10 +50,8 @@ void LadderPage::rebuild() {
                 blocks::instanceStatuses(project.program, m_station, m_document->libraries());
             // Edited by hand, an instance is its statements (drawnAsBox).
             const auto shown = [this](const lang::Step& step, const blocks::BlockInstance& found) {
-                for (const auto& status : m_blockStatuses)
-                    if (status.address == step.address && status.instance.record == found.record)
-                        return blocks::drawnAsBox(status);
-                return false;
+                const auto* status = blocks::statusAt(m_blockStatuses, step.address, found.record);
+                return status && blocks::drawnAsBox(*status);
             };
             for (auto& page : ladder::unitLadder(unit, shown))
                 if (page.address.sequence == m_sequence)
