@@ -72,6 +72,14 @@ struct Description {
     friend bool operator==(const Description&, const Description&) = default;
 };
 
+// What one value of a block's state register (its DiagCode) means, for the
+// block's documentation page: the library's `state` records.
+struct StateMeaning {
+    int code = 0; // the 16-bit pattern, 0x0000 to 0xFFFF (16#8001 is 0x8001)
+    Description meaning;
+    friend bool operator==(const StateMeaning&, const StateMeaning&) = default;
+};
+
 struct BlockDefinition {
     std::string name;
     BlockKind kind = BlockKind::Macro;
@@ -84,6 +92,7 @@ struct BlockDefinition {
     int timers = 0;
     std::string systemInstruction; // System blocks only
     std::vector<std::string> body; // lines, placeholders unsubstituted
+    std::vector<StateMeaning> states; // in the library's order; empty for a block without states
 
     // Pin names are matched without regard to case (blocks.md).
     const Pin* findPin(std::string_view pinName) const;
