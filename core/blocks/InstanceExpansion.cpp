@@ -280,7 +280,10 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
             error("input " + pin.name + " is not bound and has no default");
             continue;
         }
-        if (input && pin.kind != PinKind::Bit) {
+        // The language has no time constant 0s00 (TON(0s00) does not compile),
+        // so a time default of 0 is a register nothing writes: it holds 0.
+        const bool zeroTime = input && pin.kind == PinKind::Time && *pin.defaultValue == "0s00";
+        if (input && pin.kind != PinKind::Bit && !zeroTime) {
             pinValues[pin.name] = *pin.defaultValue;
             continue;
         }

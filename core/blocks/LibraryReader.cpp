@@ -8,8 +8,10 @@
 #include "project/Utf8Text.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdint>
+#include <map>
 #include <optional>
 
 namespace rs::blocks {
@@ -77,6 +79,13 @@ std::string quoted(std::string_view text) {
     return "'" + std::string(text) + "'";
 }
 
+// Where a state's records are, for the checks that need all of them.
+struct StatePlace {
+    int line = 0;                       // its first record
+    int column = 1;                     // of that record's language
+    std::array<int, 3> languageLines{}; // en, sv, de: the line of its meaning, 0 if none
+};
+
 // Where the reader found what it stores in the model, for problems found
 // once a block is complete.
 struct BlockPlaces {
@@ -88,6 +97,8 @@ struct BlockPlaces {
     std::vector<int> bodyLines;
     std::vector<int> bodyColumns; // character column of the body text's first byte
     int descriptionLines = 0;
+    std::map<int, std::size_t> stateIndex; // by code, into BlockDefinition::states
+    std::vector<StatePlace> statePlaces;   // as BlockDefinition::states
 };
 
 class Reader {
@@ -217,6 +228,8 @@ private:
                 return readSystem(words, keyStart);
             if (key == "body")
                 return readBody(keyEnd);
+            if (key == "state")
+                return readState(words);
             if (key == "library") {
                 error(m_number, column(keyStart), "'library' comes before the first block");
                 return;
@@ -227,7 +240,7 @@ private:
 
     static bool isBlockKey(std::string_view key) {
         return key == "kind" || key == "pin" || key == "private" || key == "timers" ||
-               key == "system" || key == "body";
+               key == "system" || key == "body" || key == "state";
     }
 
     // One word after the key; an error and false otherwise.
@@ -333,6 +346,62 @@ private:
         *text += line;
         m_lastDescription = text;
         m_lastDescriptionLine = m_number;
+    }
+
+    // `state CODE LANG TEXT`: one line per code and language, so unlike a
+    // description a meaning is one line and given once.
+    void readState(const std::vector<Word>& words) {
+        if (words.empty()) {
+            error(m_number, column(m_line.size()), "expected a state code: 16#8001");
+            return;
+        }
+        const Word& codeWord = words[0];
+        const std::optional<int> code = stateCodeOf(codeWord.text);
+        if (!code) {
+            error(m_number, column(codeWord.offset),
+                  "bad state code " + quoted(codeWord.text) +
+                      ": 16# and four hex digits, 16#0000 to 16#FFFF");
+            return;
+        }
+        if (words.size() < 2) {
+            error(m_number, column(m_line.size()), "expected a language: en, sv or de");
+            return;
+        }
+        const Word& language = words[1];
+        const int slot = language.text == "en"   ? 0
+                         : language.text == "sv" ? 1
+                         : language.text == "de" ? 2
+                                                 : -1;
+        if (slot < 0) {
+            error(m_number, column(language.offset),
+                  "unknown language " + quoted(language.text) + ": en, sv or de");
+            return;
+        }
+        const std::size_t textStart = language.offset + language.text.size() + 1;
+        if (textStart >= m_line.size()) {
+            error(m_number, column(m_line.size()),
+                  "expected what state " + stateCodeWord(*code) + " means");
+            return;
+        }
+        const auto [found, added] = m_places.stateIndex.try_emplace(*code, m_block->states.size());
+        if (added) {
+            m_block->states.push_back({*code, {}});
+            m_places.statePlaces.push_back({m_number, column(language.offset), {}});
+        }
+        int& seen = m_places.statePlaces[found->second].languageLines[slot];
+        if (seen != 0) {
+            error(m_number, column(language.offset),
+                  "the " + std::string(language.text) + " meaning of state " +
+                      stateCodeWord(*code) + " is given twice (first at line " +
+                      std::to_string(seen) + ")");
+            return;
+        }
+        seen = m_number;
+        Description& meaning = m_block->states[found->second].meaning;
+        std::string& text = slot == 0   ? meaning.english
+                            : slot == 1 ? meaning.swedish
+                                        : meaning.german;
+        text = std::string(m_line.substr(textStart));
     }
 
     void startBlock(const std::vector<Word>& words, std::size_t keyStart) {
@@ -616,6 +685,13 @@ private:
             error(m_systemLine, 1, "a macro block calls no system instruction");
         if (block.kind == BlockKind::Macro && block.body.empty())
             error(line, at, "macro block " + name + " has no body: write 'body STATEMENT' lines");
+        for (std::size_t i = 0; i < block.states.size(); ++i)
+            if (const StatePlace& place = m_places.statePlaces[i]; place.languageLines[0] == 0) {
+                const std::string code = stateCodeWord(block.states[i].code);
+                error(place.line, place.column,
+                      "state " + code + " has no English meaning: write 'state " + code +
+                          " en TEXT'");
+            }
         // A body over a bad pin or variable would only repeat its problem.
         if (lang::errorCount(m_result.diagnostics) > m_errorsBeforeBlock)
             return;

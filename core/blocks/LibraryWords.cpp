@@ -147,6 +147,30 @@ bool isTimeConstant(std::string_view text) {
     return *seconds * 100 + (hundredths[0] - '0') * 10 + (hundredths[1] - '0') <= 65535;
 }
 
+std::optional<int> stateCodeOf(std::string_view word) {
+    if (word.size() != 7 || word.substr(0, 3) != "16#")
+        return std::nullopt;
+    int code = 0;
+    for (const char c : word.substr(3)) {
+        const int digit = c >= '0' && c <= '9'   ? c - '0'
+                          : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                          : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                                                 : -1;
+        if (digit < 0)
+            return std::nullopt;
+        code = code * 16 + digit;
+    }
+    return code;
+}
+
+std::string stateCodeWord(int code) {
+    static constexpr char kDigits[] = "0123456789ABCDEF";
+    std::string word = "16#";
+    for (int shift = 12; shift >= 0; shift -= 4)
+        word += kDigits[(code >> shift) & 0xF];
+    return word;
+}
+
 bool isLibraryName(std::string_view name) {
     const auto letter = [](char c) {
         return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -40,5 +41,10 @@ std::optional<std::int64_t> canonicalInteger(std::string_view text);
 // A time constant as defaults and bindings write it: 0s00 .. 655s35, seconds
 // without leading zeros, hundredths two digits.
 bool isTimeConstant(std::string_view text);
+
+// A state code as `state` records write it: 16# and four hex digits, either
+// case on reading, upper case on writing (16#8001 is 0x8001).
+std::optional<int> stateCodeOf(std::string_view word);
+std::string stateCodeWord(int code);
 
 } // namespace rs::blocks

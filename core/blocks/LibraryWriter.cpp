@@ -74,6 +74,14 @@ std::string writeLibrary(const BlockLibrary& library) {
         if (block.kind == BlockKind::System)
             out += "    system " + block.systemInstruction + '\n';
         appendDescription(out, "    ", block.description);
+        for (const StateMeaning& state : block.states) {
+            const std::string prefix = "    state " + stateCodeWord(state.code) + ' ';
+            out += prefix + "en " + state.meaning.english + '\n';
+            if (!state.meaning.swedish.empty())
+                out += prefix + "sv " + state.meaning.swedish + '\n';
+            if (!state.meaning.german.empty())
+                out += prefix + "de " + state.meaning.german + '\n';
+        }
         for (const Pin& pin : block.pins)
             appendPin(out, pin);
         for (const PrivateVariable& variable : block.privates) {

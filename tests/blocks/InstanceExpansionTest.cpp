@@ -14,7 +14,8 @@ using namespace rs;
 namespace {
 
 // A library for the tests: a latch with a default-1 enable, a register
-// output, and a block that needs many memories.
+// output, a timer with a time of 0 and one of 0s50 by default, and a block
+// that needs many memories.
 const char* kLibrary = R"(rungsmith-library 1
 library Test
 version 1.0
@@ -32,6 +33,18 @@ block Latch
     body R({#q}) = {R}
     body {Q} = {#q}
     body ({Count}++) = P({S})
+block Delay
+    kind macro
+    version 1.0
+    description en Fast follows In after Short, Slow after Long.
+    pin In in bit primary
+    pin Short in time secondary default=0s00
+    pin Long in time secondary default=0s50
+    pin Fast out bit primary
+    pin Slow out bit primary
+    timers 2
+    body {Fast} = {In} * TON({Short})
+    body {Slow} = {In} * TON({Long})
 block Greedy
     kind macro
     version 1.0
@@ -128,6 +141,32 @@ TEST(InstanceExpansion, TwoInstancesGetPrivateVariablesOfTheirOwnAndKeepTheirOwn
                                             "expect Q0.2 1\nexpect Q0.3 0\n"
                                             "set I0.2 1\nscans 1\nset I0.1 1\nscans 1\n"
                                             "expect Q0.2 0\nexpect Q0.3 1\n",
+                                            names),
+                         simulation);
+    EXPECT_EQ(report.failed, 0) << (report.failures.empty() ? "" : report.failures.front());
+    EXPECT_EQ(report.passed, 4);
+}
+
+TEST(InstanceExpansion, AnOpenTimeOfZeroIsARegisterNothingWritesAndOtherTimesAreTheirDefault) {
+    // TON(0s00) does not compile: the time 0 is a register holding 0.
+    const auto result = read(";@block Delay In=\"Start\" Fast=\"Q0.2\" Slow=\"Q0.3\"\n;@end\n");
+    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    const std::string text = project::writeProject(result.read.project);
+    EXPECT_NE(text.find(";@block Delay In=\"Start\" Fast=\"Q0.2\" Slow=\"Q0.3\" lib=\"Test\" "
+                        "version=\"1.0\" #pin.Short=\"R0.149\"\n"
+                        "Q0.2 = Start * TON(R0.149)\n"
+                        "Q0.3 = Start * TON(0s50)\n"
+                        ";@end\n"),
+              std::string::npos)
+        << text;
+    const compiler::CompileResult compiled = compiler::compileText(text);
+    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    sim::Simulation simulation(compiled.images);
+    const sim::OperandNames names(result.read.project);
+    const sim::ScenarioReport report =
+        sim::runScenario("delay.scn",
+                         sim::parseScenario("set I0.0 1\nscans 1\nexpect Q0.2 1\nexpect Q0.3 0\n"
+                                            "run 490ms\nexpect Q0.3 0\nscans 1\nexpect Q0.3 1\n",
                                             names),
                          simulation);
     EXPECT_EQ(report.failed, 0) << (report.failures.empty() ? "" : report.failures.front());

@@ -57,6 +57,10 @@ TEST(LibraryReader, ReadsEveryField) {
                              "  description en  Second, indented.\n"
                              "  description sv Första raden: åäö.\n"
                              "  description de Erste Zeile: äöüß.\n"
+                             "  state 16#8001 en Waiting.\n"
+                             "  state 16#c001 en  Failed, indented.\n"
+                             "  state 16#8001 sv Väntar.\n"
+                             "  state 16#8001 de Wartet.\n"
                              "  pin Start in bit primary operands=input,memory\n"
                              "  pin Delay in time secondary default=2s50\n"
                              "  pin Limit in register secondary default=-7 operands=number\n"
@@ -99,6 +103,10 @@ TEST(LibraryReader, ReadsEveryField) {
     EXPECT_EQ(timed.description.in("sv"), "Första raden: åäö.");
     EXPECT_EQ(timed.description.in("de"), "Erste Zeile: äöüß.");
     EXPECT_EQ(timed.description.in("fr"), timed.description.english);
+    ASSERT_EQ(timed.states.size(), 2u);
+    EXPECT_EQ(timed.states[0], (StateMeaning{0x8001, {"Waiting.", "Väntar.", "Wartet."}}));
+    EXPECT_EQ(timed.states[1], (StateMeaning{0xC001, {" Failed, indented.", "", ""}}));
+    EXPECT_EQ(timed.states[1].meaning.in("de"), " Failed, indented.");
     ASSERT_EQ(timed.pins.size(), 7u);
     const Pin& start = timed.pins[0];
     EXPECT_EQ(start.name, "Start");
@@ -136,8 +144,18 @@ TEST(LibraryReader, ReadsEveryField) {
     EXPECT_TRUE(analog.body.empty());
     EXPECT_EQ(library.findBlock("analog"), &analog);
 
-    // The canonical text reads back to the same model.
-    EXPECT_EQ(readLibrary(writeLibrary(library)).library, library);
+    // The canonical text reads back to the same model; the states come after
+    // the description, each code's languages together, the code upper case.
+    const std::string written = writeLibrary(library);
+    EXPECT_NE(written.find("    description de Erste Zeile: äöüß.\n"
+                           "    state 16#8001 en Waiting.\n"
+                           "    state 16#8001 sv Väntar.\n"
+                           "    state 16#8001 de Wartet.\n"
+                           "    state 16#C001 en  Failed, indented.\n"
+                           "    pin Start "),
+              std::string::npos)
+        << written;
+    EXPECT_EQ(readLibrary(written).library, library);
 }
 
 TEST(LibraryReader, AcceptsByteOrderMarkAndCrLf) {
@@ -219,6 +237,33 @@ TEST(LibraryReader, ReportsEachErrorAtItsLineAndColumn) {
         {"    pin In in bit primary", "    pin In\tin bit primary",
          "t.rslib:8:11: error: control character \\t: a library holds printable text and spaces "
          "only\n"},
+        {"Out.\n", "Out.\n    state 8001 en Waiting.\n",
+         "t.rslib:8:11: error: bad state code '8001': 16# and four hex digits, 16#0000 to "
+         "16#FFFF\n"},
+        {"Out.\n", "Out.\n    state 16#10000 en Waiting.\n",
+         "t.rslib:8:11: error: bad state code '16#10000': 16# and four hex digits, 16#0000 to "
+         "16#FFFF\n"},
+        {"Out.\n", "Out.\n    state 16#80G1 en Waiting.\n",
+         "t.rslib:8:11: error: bad state code '16#80G1': 16# and four hex digits, 16#0000 to "
+         "16#FFFF\n"},
+        {"Out.\n", "Out.\n    state 16#8001\n",
+         "t.rslib:8:18: error: expected a language: en, sv or de\n"},
+        {"Out.\n", "Out.\n    state 16#8001 fr Attend.\n",
+         "t.rslib:8:19: error: unknown language 'fr': en, sv or de\n"},
+        {"Out.\n", "Out.\n    state 16#8001 en   \n",
+         "t.rslib:8:21: error: expected what state 16#8001 means\n"},
+        {"Out.\n",
+         "Out.\n    state 16#800a en Waiting.\n    state 16#800A sv Väntar.\n"
+         "    state 16#800A sv Väntar igen.\n",
+         "t.rslib:10:19: error: the sv meaning of state 16#800A is given twice (first at line "
+         "9)\n"},
+        {"Out.\n",
+         "Out.\n    state 16#8001 en Waiting.\n    state 16#C001 sv Fel.\n"
+         "    state 16#C001 de Fehler.\n",
+         "t.rslib:9:19: error: state 16#C001 has no English meaning: write 'state 16#C001 en "
+         "TEXT'\n"},
+        {"version 1.0\n", "version 1.0\nstate 16#8001 en Waiting.\n",
+         "t.rslib:4:1: error: 'state' belongs to a block: write 'block NAME' first\n"},
         {"Copies In to Out.", "Copies \xC3 to Out.",
          "t.rslib:7:27: error: invalid UTF-8: the file must be UTF-8 text\n"},
     };
@@ -319,6 +364,9 @@ TEST(LibraryReader, TheDocumentedExampleReadsWithoutProblems) {
     const std::string example = doc.substr(start + 4, end - start - 4);
     const LibraryReadResult read = readLibrary(example);
     EXPECT_EQ(problems(example), "");
-    ASSERT_EQ(read.library.blocks.size(), 2u);
+    ASSERT_EQ(read.library.blocks.size(), 3u);
     EXPECT_EQ(read.library.blocks[1].kind, BlockKind::System);
+    EXPECT_EQ(read.library.blocks[2].states,
+              (std::vector<StateMeaning>{{0x0000, {"stopped", "stoppad", "angehalten"}},
+                                         {0x8000, {"running", "i drift", "in Betrieb"}}}));
 }

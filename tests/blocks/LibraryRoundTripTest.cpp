@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace rs::blocks;
@@ -12,8 +13,8 @@ using namespace rs::blocks;
 namespace {
 
 // Random libraries that the reader must accept: names, pins of every kind,
-// private variables, descriptions with Swedish and German letters, and
-// bodies of statements over the pins.
+// private variables, descriptions and state meanings with Swedish and German
+// letters, and bodies of statements over the pins.
 class RandomLibrary {
 public:
     explicit RandomLibrary(unsigned seed) : m_random(seed) {}
@@ -160,6 +161,14 @@ private:
         block.kind = chance(4) ? BlockKind::System : BlockKind::Macro;
         block.version = version();
         block.description = description();
+        for (int states = below(5); states > 0; --states) {
+            const int code = below(65536);
+            if (std::none_of(block.states.begin(), block.states.end(),
+                             [&](const StateMeaning& state) { return state.code == code; }))
+                block.states.push_back({code,
+                                        {textLine(), chance(2) ? textLine() : std::string(),
+                                         chance(2) ? textLine() : std::string()}});
+        }
         if (block.kind == BlockKind::System)
             block.systemInstruction = name(40);
         const int pins = below(8);

@@ -32,6 +32,11 @@ const std::string kRegisterTimeBlock =
     "DiscrepancyTime=\"Limit\" S_EquivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
 
+// DiscrepancyTime open: blocks.md's default, the time 0.
+const std::string kOpenTimeBlock =
+    ";@block SF_Equivalent S_ChannelA=\"ChannelA\" S_ChannelB=\"ChannelB\" "
+    "S_EquivalentOut=\"Out\" Error=\"Error\" DiagCode=\"DiagCode\"\n;@end\n";
+
 } // namespace
 
 TEST(SF_Equivalent, ActivateOffHoldsStateZeroWithEveryOutputOff) {
@@ -334,5 +339,39 @@ run 20ms
 set ChannelA 1
 scans 1
 expect DiagCode -32768
+)"));
+}
+
+TEST(SF_Equivalent, AnOpenDiscrepancyTimeIsZeroAndWantsBothInOneScan) {
+    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kOpenTimeBlock, R"(
+scans 1
+set ChannelA 1
+set ChannelB 1
+scans 1
+expect DiagCode -32768
+expect Out 1
+set ChannelA 0
+set ChannelB 0
+scans 1
+expect DiagCode -32767
+set ChannelA 1
+scans 1
+expect DiagCode -32764
+set ChannelB 1
+# B seen one scan after A: the timer of 0 has elapsed
+scans 1
+expect DiagCode -16383
+expect Error 1
+expect Out 0
+set ChannelA 0
+set ChannelB 0
+scans 1
+set ChannelB 1
+scans 1
+expect DiagCode -32748
+set ChannelA 1
+scans 1
+expect DiagCode -16382
+expect Error 1
 )"));
 }

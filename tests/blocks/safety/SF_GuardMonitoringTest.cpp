@@ -15,7 +15,7 @@ using rs::safetytest::holdsOnBothInstructionSets;
 namespace {
 
 // A unit with one instance whose switches, outputs and DiagCode are bound;
-// `bindings` adds further pins (DiscrepancyTime among them: it is required).
+// `bindings` adds further pins (DiscrepancyTime among them: open it is 0).
 ::testing::AssertionResult guardHolds(const std::string& bindings, const std::string& scenario) {
     const std::string names = "! I0.0=Act\n! I0.1=Switch1\n! I0.2=Switch2\n! I0.3=StartReset\n"
                               "! I0.4=AutoReset\n! I0.5=ResetButton\n! M0.0=Ready\n! M0.1=Out\n"

@@ -17,7 +17,7 @@ namespace {
 
 // A unit with one instance using three modes (Mode0 to Mode2, S_Mode3 to
 // S_Mode7 open); `bindings` adds further pins (ModeMonitorTime among them:
-// it is required).
+// open it is 0).
 ::testing::AssertionResult selectorHolds(const std::string& bindings, const std::string& scenario) {
     const std::string names = "! I0.0=Act\n! I0.1=Mode0\n! I0.2=Mode1\n! I0.3=Mode2\n"
                               "! I0.4=Unlock\n! I0.5=SetMode\n! I0.6=AutoSet\n! I0.7=ResetButton\n"

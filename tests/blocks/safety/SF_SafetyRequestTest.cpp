@@ -16,7 +16,7 @@ using rs::safetytest::holdsOnBothInstructionSets;
 namespace {
 
 // A unit with one instance whose inputs, outputs and DiagCode are bound;
-// `bindings` adds further pins (MonitoringTime among them: it is required).
+// `bindings` adds further pins (MonitoringTime among them: open it is 0).
 ::testing::AssertionResult requestHolds(const std::string& bindings, const std::string& scenario) {
     const std::string names = "! I0.0=Act\n! I0.1=OpMode\n! I0.2=Ack\n! I0.3=ResetButton\n"
                               "! M0.0=Ready\n! M0.1=Active\n! M0.2=Request\n! M0.3=Error\n"
