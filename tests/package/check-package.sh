@@ -81,6 +81,8 @@ for path in \
     ./usr/share/rungsmith/libraries/Rungsmith_Speed.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_System.rslib \
     ./usr/share/rungsmith/libraries/Rungsmith_Safety.rslib \
+    ./usr/share/rungsmith/libraries/Rungsmith_Safety/SF_EmergencyStop.sps \
+    ./usr/share/rungsmith/libraries/Rungsmith_Safety/SF_EmergencyStop.scn \
     "./usr/share/applications/$app_id.desktop" \
     "./usr/share/metainfo/$app_id.metainfo.xml" \
     ./usr/share/mime/packages/rungsmith.xml \
