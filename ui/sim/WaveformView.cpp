@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WaveformView.h"
 
-#include "shell/StatusColors.h"
+#include "WaveformPainter.h"
 #include "sim/WaveformRecorder.h"
 
 #include <QMouseEvent>
 #include <QPainter>
-#include <QPainterPath>
 #include <QScrollBar>
 #include <QWheelEvent>
 
@@ -20,30 +19,6 @@ namespace {
 constexpr double kMinMsPerPixel = 0.05;
 constexpr double kMaxMsPerPixel = 60000.0;
 constexpr double kZoomStep = 1.5;
-constexpr int kMinTickSpacing = 80; // pixels between labelled ticks
-
-QColor bitColor(const QPalette& palette) {
-    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 140, 0);
-}
-
-QString timeLabel(std::int64_t ms, std::int64_t step) {
-    if (step >= 1000 && ms % 1000 == 0)
-        return QStringLiteral("%1 s").arg(ms / 1000);
-    if (step >= 100)
-        return QStringLiteral("%1 s").arg(static_cast<double>(ms) / 1000.0, 0, 'f', 1);
-    return QStringLiteral("%1 ms").arg(ms);
-}
-
-// A round tick step (1, 2, 5 x 10^n ms) at least `minimum` ms long.
-std::int64_t tickStep(double minimum) {
-    std::int64_t step = 1;
-    while (true) {
-        for (int factor : {1, 2, 5})
-            if (static_cast<double>(step * factor) >= minimum)
-                return step * factor;
-        step *= 10;
-    }
-}
 
 } // namespace
 
@@ -67,10 +42,6 @@ int WaveformView::plotWidth() const {
 std::int64_t WaveformView::firstVisibleMs() const {
     return m_recorder->startMs() +
            static_cast<std::int64_t>(horizontalScrollBar()->value() * m_msPerPixel);
-}
-
-double WaveformView::xOf(std::int64_t timeMs) const {
-    return kNameWidth + static_cast<double>(timeMs - firstVisibleMs()) / m_msPerPixel;
 }
 
 void WaveformView::updateScrollBars() {
@@ -168,114 +139,20 @@ void WaveformView::mousePressEvent(QMouseEvent* event) {
     viewport()->update();
 }
 
-void WaveformView::paintRuler(QPainter& painter, int width) {
-    const QPalette& pal = palette();
-    painter.fillRect(QRect(0, 0, width, kRulerHeight), pal.color(QPalette::Window));
-    painter.setPen(pal.color(QPalette::Mid));
-    painter.drawLine(0, kRulerHeight - 1, width, kRulerHeight - 1);
-    const std::int64_t step = tickStep(kMinTickSpacing * m_msPerPixel);
-    const std::int64_t first = firstVisibleMs();
-    const std::int64_t last = first + static_cast<std::int64_t>(plotWidth() * m_msPerPixel);
-    for (std::int64_t t = (first / step) * step; t <= last; t += step) {
-        const double x = xOf(t);
-        if (x < kNameWidth)
-            continue;
-        painter.setPen(pal.color(QPalette::Mid));
-        painter.drawLine(QPointF(x, kRulerHeight - 6), QPointF(x, viewport()->height()));
-        painter.setPen(pal.color(QPalette::WindowText));
-        painter.drawText(QPointF(x + 3, kRulerHeight - 7), timeLabel(t, step));
-    }
-}
-
 void WaveformView::paintEvent(QPaintEvent*) {
     QPainter painter(viewport());
-    const QPalette& pal = palette();
     const int width = viewport()->width();
-    paintRuler(painter, width);
-    const auto& traces = m_recorder->traces();
-    const QColor bits = bitColor(pal);
-    const std::int64_t first = firstVisibleMs();
-    const std::int64_t end = m_recorder->endMs();
-    const double right = std::min<double>(xOf(end), width);
-    int y = kRulerHeight;
-    for (int row = verticalScrollBar()->value();
-         row < static_cast<int>(traces.size()) && y < viewport()->height(); ++row) {
-        const sim::WaveformRecorder::Trace& trace = traces[static_cast<std::size_t>(row)];
-        const QRect nameRect(0, y, kNameWidth, kRowHeight);
-        painter.fillRect(nameRect, row == m_selected ? pal.color(QPalette::Highlight)
-                                                     : pal.color(QPalette::Window));
-        painter.setPen(row == m_selected ? pal.color(QPalette::HighlightedText)
-                                         : pal.color(QPalette::WindowText));
-        const QString name = m_names ? m_names(trace.address) : QString();
-        const QString label = QString::fromStdString(lang::toString(trace.address)) +
-                              (name.isEmpty() ? QString() : QStringLiteral("  ") + name);
-        const QRect textRect = nameRect.adjusted(6, 0, -4, 0);
-        painter.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
-                         painter.fontMetrics().elidedText(label, Qt::ElideRight, textRect.width()));
-        painter.setPen(pal.color(QPalette::Midlight));
-        painter.drawLine(0, y + kRowHeight - 1, width, y + kRowHeight - 1);
-
-        // The change in effect at the left edge, then every change up to the right edge.
-        const auto& changes = trace.changes;
-        auto it = std::upper_bound(
-            changes.begin(), changes.end(), first,
-            [](std::int64_t t, const sim::WaveformRecorder::Change& c) { return t < c.timeMs; });
-        if (it != changes.begin())
-            --it;
-        const double high = y + 5;
-        const double low = y + kRowHeight - 6;
-        painter.save();
-        painter.setClipRect(QRect(kNameWidth, y, width - kNameWidth, kRowHeight));
-        if (trace.address.isBit() && trace.address.kind != lang::AddressKind::AnalogInput) {
-            QPainterPath path;
-            bool started = false;
-            for (; it != changes.end(); ++it) {
-                const double x = std::max(xOf(it->timeMs), double(kNameWidth) - 1);
-                if (x > width)
-                    break;
-                const double level = it->value ? high : low;
-                if (!started) {
-                    path.moveTo(x, level);
-                    started = true;
-                } else {
-                    path.lineTo(x, path.currentPosition().y());
-                    path.lineTo(x, level);
-                }
-            }
-            if (started)
-                path.lineTo(right, path.currentPosition().y());
-            painter.setPen(QPen(bits, 2));
-            painter.drawPath(path);
-        } else {
-            painter.setPen(QPen(pal.color(QPalette::Text), 1));
-            for (; it != changes.end(); ++it) {
-                const double x0 = std::max(xOf(it->timeMs), double(kNameWidth) - 4);
-                if (x0 > width)
-                    break;
-                const auto next = std::next(it);
-                const double x1 = next == changes.end() ? right : xOf(next->timeMs);
-                const double slope = std::min(3.0, (x1 - x0) / 2);
-                const double middle = (high + low) / 2;
-                QPainterPath band;
-                band.moveTo(x0, middle);
-                band.lineTo(x0 + slope, high);
-                band.lineTo(x1 - slope, high);
-                band.lineTo(x1, middle);
-                band.lineTo(x1 - slope, low);
-                band.lineTo(x0 + slope, low);
-                band.closeSubpath();
-                painter.drawPath(band);
-                const QString text = QString::number(it->value);
-                const QRectF textRect(x0 + slope, high, x1 - x0 - 2 * slope, low - high);
-                if (painter.fontMetrics().horizontalAdvance(text) < textRect.width())
-                    painter.drawText(textRect, Qt::AlignCenter, text);
-            }
-        }
-        painter.restore();
-        y += kRowHeight;
-    }
-    if (traces.empty()) {
-        painter.setPen(pal.color(QPalette::PlaceholderText));
+    render::WaveformPainter waveform(*m_recorder, palette());
+    waveform.setLabels([this](int row) {
+        const lang::Address& address = m_recorder->traces()[static_cast<std::size_t>(row)].address;
+        const QString name = m_names ? m_names(address) : QString();
+        return QString::fromStdString(lang::toString(address)) +
+               (name.isEmpty() ? QString() : QStringLiteral("  ") + name);
+    });
+    waveform.paint(painter, width, viewport()->height(),
+                   {firstVisibleMs(), m_msPerPixel, verticalScrollBar()->value(), m_selected});
+    if (m_recorder->traces().empty()) {
+        painter.setPen(palette().color(QPalette::PlaceholderText));
         painter.drawText(QRect(kNameWidth, kRulerHeight, width - kNameWidth,
                                viewport()->height() - kRulerHeight),
                          Qt::AlignCenter,

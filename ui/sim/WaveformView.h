@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "WaveformPainter.h"
+
 #include <QAbstractScrollArea>
 
 #include <cstdint>
@@ -23,9 +25,9 @@ namespace rs::ui {
 class WaveformView : public QAbstractScrollArea {
     Q_OBJECT
 public:
-    static constexpr int kNameWidth = 150;
-    static constexpr int kRulerHeight = 22;
-    static constexpr int kRowHeight = 28;
+    static constexpr int kNameWidth = render::WaveformPainter::kNameWidth;
+    static constexpr int kRulerHeight = render::WaveformPainter::kRulerHeight;
+    static constexpr int kRowHeight = render::WaveformPainter::kRowHeight;
 
     explicit WaveformView(const sim::WaveformRecorder* recorder, QWidget* parent = nullptr);
 
@@ -60,8 +62,6 @@ protected:
 private:
     void updateScrollBars();
     int plotWidth() const;
-    double xOf(std::int64_t timeMs) const;
-    void paintRuler(QPainter& painter, int width);
 
     const sim::WaveformRecorder* m_recorder;
     std::function<QString(const lang::Address&)> m_names;
