@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "BlockChooserDialog.h"
 
+#include "BlockDocumentationDialog.h"
 #include "BlockText.h"
 
 #include <QDialogButtonBox>
@@ -48,6 +49,8 @@ BlockChooserDialog::BlockChooserDialog(const blocks::LibrarySet& libraries, QWid
     middle->addWidget(m_list, 2);
     middle->addWidget(m_description, 3);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    auto* documentation = buttons->addButton(tr("&Documentation..."), QDialogButtonBox::ActionRole);
+    documentation->setObjectName(QStringLiteral("documentation"));
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addLayout(middle, 1);
@@ -66,10 +69,16 @@ BlockChooserDialog::BlockChooserDialog(const blocks::LibrarySet& libraries, QWid
     connect(m_list, &QListWidget::itemActivated, this, &BlockChooserDialog::accept);
     connect(buttons, &QDialogButtonBox::accepted, this, &BlockChooserDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &BlockChooserDialog::reject);
-    connect(m_list, &QListWidget::currentRowChanged, buttons->button(QDialogButtonBox::Ok),
-            [this, buttons] { buttons->button(QDialogButtonBox::Ok)->setEnabled(block()); });
+    connect(documentation, &QPushButton::clicked, this, &BlockChooserDialog::showDocumentation);
+    connect(m_description, &QTextBrowser::anchorClicked, this,
+            &BlockChooserDialog::showDocumentation);
+    auto enable = [this, buttons, documentation] {
+        buttons->button(QDialogButtonBox::Ok)->setEnabled(block());
+        documentation->setEnabled(block());
+    };
+    connect(m_list, &QListWidget::currentRowChanged, this, enable);
     filter();
-    buttons->button(QDialogButtonBox::Ok)->setEnabled(block());
+    enable();
     m_filter->setFocus();
 }
 
@@ -103,7 +112,17 @@ void BlockChooserDialog::filter() {
 
 void BlockChooserDialog::showChosen() {
     const blocks::BlockDefinition* chosen = block();
-    m_description->setHtml(chosen ? BlockText::html(*library(), *chosen) : QString());
+    m_description->setHtml(chosen ? BlockText::html(*library(), *chosen) +
+                                        QStringLiteral("<p><a href=\"documentation\">%1</a></p>")
+                                            .arg(tr("The block's documentation: states, "
+                                                    "transitions and a timing diagram")
+                                                     .toHtmlEscaped())
+                                  : QString());
+}
+
+void BlockChooserDialog::showDocumentation() {
+    if (const blocks::BlockDefinition* chosen = block())
+        BlockDocumentationDialog::show(*library(), *chosen, this);
 }
 
 // Up and Down in the filter move through the list, so the keyboard never

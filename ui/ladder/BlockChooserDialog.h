@@ -35,6 +35,7 @@ protected:
 private:
     void filter();
     void showChosen();
+    void showDocumentation();
 
     std::vector<std::pair<const blocks::LoadedLibrary*, const blocks::BlockDefinition*>> m_blocks;
     QLineEdit* m_filter;

@@ -7,6 +7,7 @@
 #include "LadderPage.h"
 
 #include "BlockChooserDialog.h"
+#include "BlockDocumentationDialog.h"
 #include "BlockPinsDialog.h"
 #include "BlockText.h"
 #include "MakeBlockDialog.h"
@@ -133,6 +134,16 @@ void LadderPage::updateBlock() {
     instance.version.clear();
     rewriteBlock(tr("Update Block %1").arg(fromUtf8(instance.type)), cursor.step, cursor.network,
                  std::move(instance));
+}
+
+void LadderPage::showBlockDocumentation() {
+    const blocks::InstanceStatus* status =
+        blockStatus(m_drawing.cursor.step, m_drawing.cursor.network);
+    if (!status || !status->block) {
+        setMessage(tr("Select a block network whose block a library of the project has."));
+        return;
+    }
+    BlockDocumentationDialog::show(*status->library, *status->block, this);
 }
 
 void LadderPage::makeBlock() {

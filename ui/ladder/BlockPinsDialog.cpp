@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "BlockPinsDialog.h"
 
+#include "BlockDocumentationDialog.h"
 #include "BlockText.h"
 #include "blocks/InstanceStanding.h"
 #include "document/ProjectDocument.h"
@@ -11,6 +12,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QStringListModel>
 #include <QVBoxLayout>
 
@@ -69,6 +71,16 @@ BlockPinsDialog::BlockPinsDialog(ProjectDocument* document, int station,
     m_problem->setWordWrap(true);
     m_problem->setStyleSheet(QStringLiteral("color: #c00000"));
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    if (document && blocks::libraryOf(instance, document->libraries())) {
+        auto* documentation =
+            buttons->addButton(tr("&Documentation..."), QDialogButtonBox::ActionRole);
+        documentation->setObjectName(QStringLiteral("documentation"));
+        connect(documentation, &QPushButton::clicked, this, [this] {
+            if (const blocks::LoadedLibrary* library =
+                    blocks::libraryOf(m_instance, m_document->libraries()))
+                BlockDocumentationDialog::show(*library, m_block, this);
+        });
+    }
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(description);
     layout->addLayout(form);

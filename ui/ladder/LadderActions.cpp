@@ -129,6 +129,7 @@ LadderActions::LadderActions(QWidget* page) {
     newConfigOption = made(page, "newConfigOptionAction", tr("New &Config Option..."));
     updateBlock = made(page, "updateBlockAction", tr("&Update Block"));
     makeBlock = made(page, "makeBlockAction", tr("&Make Block..."));
+    blockDocumentation = made(page, "blockDocumentationAction", tr("&Block Documentation..."));
     cutNetworks = made(page, "cutNetworksAction", tr("Cu&t Network(s)"));
     copyNetworks = made(page, "copyNetworksAction", tr("&Copy Network(s)"));
     pasteNetworks = made(page, "pasteNetworksAction", tr("&Paste Network(s)"));

@@ -58,6 +58,7 @@ public:
     // The context menu's commands without keys.
     QAction* newConfigOption;
     QAction* updateBlock;
+    QAction* blockDocumentation;
     QAction* makeBlock;
     QAction* cutNetworks;
     QAction* copyNetworks;

@@ -107,6 +107,7 @@ void LadderPage::connectActions() {
     on(a.insertBlock, [this] { insertBlock(); });
     on(a.updateBlock, [this] { updateBlock(); });
     on(a.makeBlock, [this] { makeBlock(); });
+    on(a.blockDocumentation, [this] { showBlockDocumentation(); });
     on(a.expandAll, [this] { setAllCollapsed(false); });
     on(a.collapseAll, [this] { setAllCollapsed(true); });
     on(a.editNetwork, [this] { enterEditMode(); });

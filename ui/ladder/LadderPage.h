@@ -129,6 +129,8 @@ public:
     // Make Block…: the chosen networks become a block of a user library in
     // the project's folder, and an instance of it takes their place.
     void makeBlock();
+    // The documentation page of the block the cursor's network holds.
+    void showBlockDocumentation();
     // How the instance a block network holds stands; null for another network.
     const blocks::InstanceStatus* blockStatus(int step, int network) const;
     // A Config Option network at the start of the PLC code (manual 11.6).

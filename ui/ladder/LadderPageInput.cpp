@@ -96,7 +96,7 @@ void LadderPage::showEditMenu(const QPoint& globalPosition) {
     if (cursorElement())
         menu.addActions({a.properties, a.deleteSelection});
     if (blockStatus(m_drawing.cursor.step, m_drawing.cursor.network))
-        menu.addActions({a.properties, a.updateBlock});
+        menu.addActions({a.properties, a.updateBlock, a.blockDocumentation});
     menu.addActions({a.networkComment, a.editNetwork});
     if (m_sequence > 0)
         menu.addAction(a.newStep);
