@@ -384,6 +384,10 @@
         <source>New Se&amp;quence...</source>
         <translation>Neue Se&amp;quenz …</translation>
     </message>
+    <message>
+        <source>&amp;Block Documentation...</source>
+        <translation>&amp;Bausteindokumentation...</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -1192,6 +1196,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
         <translation>Tasten: %1 fügen die Elemente der Werkzeugleiste ein; %2 %3 %4 davor, danach, parallel; %5 Eigenschaften; %6 löschen; %7 neues Netzwerk; %8 Bearbeitungsmodus.</translation>
+    </message>
+    <message>
+        <source>Select a block network whose block a library of the project has.</source>
+        <translation>Wählen Sie ein Bausteinnetzwerk, dessen Baustein eine Bibliothek des Projekts enthält.</translation>
     </message>
 </context>
 <context>
@@ -2839,12 +2847,24 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Insert Function Block</source>
         <translation>Funktionsbaustein einfügen</translation>
     </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation>Die Dokumentation des Bausteins: Zustände, Übergänge und ein Zeitdiagramm</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::BlockPinsDialog</name>
     <message>
         <source>%1 Pins</source>
         <translation>Anschlüsse von %1</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
     </message>
 </context>
 <context>
@@ -2892,6 +2912,130 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Make Block</source>
         <translation>Baustein erstellen</translation>
+    </message>
+</context>
+<context>
+    <name>BlockDocumentation</name>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation>Bibliothek %1, Version %2. Bausteinversion %3.</translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation>Ein Systembaustein: Der Simulator führt seine Anweisung %1 aus, die die Sprache nicht ausdrücken kann.</translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation>Anschlüsse</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Anschluss</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation>Wenn nicht beschaltet</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>Vorgabe %1</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>muss beschaltet werden</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>darf offen bleiben</translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation>Zeitdiagramm</translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation>Kein Zeitdiagramm: %1</translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation>Die Anschlüsse des Beispielprojekts %1, während sein Szenario %2 läuft, ab dem Einschalten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>Die eine Erwartung des Szenarios traf zu.</numerusform>
+            <numerusform>Alle %n Erwartungen des Szenarios trafen zu.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n Erwartung des Szenarios traf nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
+            <numerusform>%n Erwartungen des Szenarios trafen nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Zustände</translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation>DiagCode enthält den Zustand als 16-Bit-Muster (16#8000 liest sich in einem Register als -32768). Die Ausgänge, die jeder Zustand einschaltet:</translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation>Die Ausgänge, die jeder Zustand einschaltet:</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation>Jeder Zyklus nimmt höchstens einen Übergang: den ersten der Liste des Zustands, dessen Bedingung erfüllt ist. Die Ausgänge folgen dann dem neuen Zustand. In den Bedingungen ist * UND, + ODER und / NICHT, wie im Programm.</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>Im Zustand</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation>Nächster Zustand</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>immer</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>jeder</translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation>Die übrigen Zeilen des Bausteins, die die Bedingungen und Ausgänge verwenden:</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation>%1 — Bausteindokumentation</translation>
     </message>
 </context>
 </TS>

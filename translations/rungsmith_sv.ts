@@ -384,6 +384,10 @@
         <source>New Se&amp;quence...</source>
         <translation>Ny sek&amp;vens …</translation>
     </message>
+    <message>
+        <source>&amp;Block Documentation...</source>
+        <translation>&amp;Blockdokumentation...</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -1192,6 +1196,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
         <translation>Tangenter: %1 infogar verktygsfältets element; %2 %3 %4 före, efter, parallellt; %5 egenskaper; %6 ta bort; %7 nytt nätverk; %8 redigeringsläge.</translation>
+    </message>
+    <message>
+        <source>Select a block network whose block a library of the project has.</source>
+        <translation>Välj ett blocknätverk vars block finns i ett av projektets bibliotek.</translation>
     </message>
 </context>
 <context>
@@ -2839,12 +2847,24 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Insert Function Block</source>
         <translation>Infoga funktionsblock</translation>
     </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation>Blockets dokumentation: tillstånd, övergångar och ett tidsdiagram</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::BlockPinsDialog</name>
     <message>
         <source>%1 Pins</source>
         <translation>Anslutningar för %1</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
     </message>
 </context>
 <context>
@@ -2892,6 +2912,130 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Make Block</source>
         <translation>Gör block</translation>
+    </message>
+</context>
+<context>
+    <name>BlockDocumentation</name>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation>Bibliotek %1, version %2. Blockversion %3.</translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation>Ett systemblock: simulatorn utför dess instruktion %1, som språket inte kan uttrycka.</translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation>Anslutningar</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Anslutning</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Slag</translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation>Om inte ansluten</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>standard %1</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>måste anslutas</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>får lämnas öppen</translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation>Tidsdiagram</translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation>Inget tidsdiagram: %1</translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation>Exempelprojektets %1 anslutningar medan dess scenario %2 körs, från tillslag.</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>Scenariots enda förväntan höll.</numerusform>
+            <numerusform>Scenariots alla %n förväntningar höll.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n förväntan i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
+            <numerusform>%n förväntningar i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Tillstånd</translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation>DiagCode håller tillståndet som dess 16-bitarsmönster (16#8000 läses -32768 i ett register). Utgångarna som varje tillstånd slår till:</translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation>Utgångarna som varje tillstånd slår till:</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Tillstånd</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Betydelse</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Övergångar</translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation>Varje programcykel tar högst en övergång: den första i tillståndets lista vars villkor är uppfyllt. Utgångarna följer sedan det nya tillståndet. I villkoren är * OCH, + ELLER och / INTE, som i programmet.</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>I tillstånd</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Villkor</translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation>Nästa tillstånd</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>alltid</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>alla</translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation>Blockets övriga rader, som villkoren och utgångarna använder:</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation>%1 — Blockdokumentation</translation>
     </message>
 </context>
 </TS>
