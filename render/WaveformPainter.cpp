@@ -39,6 +39,10 @@ void WaveformPainter::setLabels(std::function<QString(int row)> labels) {
     m_labels = std::move(labels);
 }
 
+void WaveformPainter::setValueText(std::function<QString(int row, std::int64_t value)> valueText) {
+    m_valueText = std::move(valueText);
+}
+
 std::int64_t WaveformPainter::tickStep(double minimumMs) {
     std::int64_t step = 1;
     while (true) {
@@ -143,7 +147,8 @@ int WaveformPainter::paint(QPainter& painter, int width, int height, const View&
                 band.lineTo(x0 + slope, low);
                 band.closeSubpath();
                 painter.drawPath(band);
-                const QString text = QString::number(it->value);
+                const QString text =
+                    m_valueText ? m_valueText(row, it->value) : QString::number(it->value);
                 const QRectF textRect(x0 + slope, high, x1 - x0 - 2 * slope, low - high);
                 if (painter.fontMetrics().horizontalAdvance(text) < textRect.width())
                     painter.drawText(textRect, Qt::AlignCenter, text);
@@ -157,7 +162,8 @@ int WaveformPainter::paint(QPainter& painter, int width, int height, const View&
 }
 
 QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QString>& labels,
-                     int width, const QPalette& palette, qreal devicePixelRatio) {
+                     int width, const QPalette& palette, qreal devicePixelRatio,
+                     std::function<QString(int row, std::int64_t value)> valueText) {
     const int rows = static_cast<int>(recorder.traces().size());
     const int height = WaveformPainter::kRulerHeight + rows * WaveformPainter::kRowHeight;
     QImage image(QSize(width, height) * devicePixelRatio, QImage::Format_ARGB32_Premultiplied);
@@ -172,6 +178,7 @@ QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QS
         return row < static_cast<int>(labels.size()) ? labels[static_cast<std::size_t>(row)]
                                                      : QString();
     });
+    painter.setValueText(std::move(valueText));
     QPainter p(&image);
     p.setRenderHint(QPainter::Antialiasing);
     painter.paint(p, width, height, {recorder.startMs(), span / plot, 0, -1});

@@ -39,6 +39,8 @@ public:
 
     // The label of each row; the address when not set.
     void setLabels(std::function<QString(int row)> labels);
+    // How a number is written in its band; in decimal when not set.
+    void setValueText(std::function<QString(int row, std::int64_t value)> valueText);
 
     // Fills `width` x `height` from (0, 0); returns the rows drawn.
     int paint(QPainter& painter, int width, int height, const View& view) const;
@@ -52,11 +54,13 @@ private:
     const sim::WaveformRecorder& m_recorder;
     QPalette m_palette;
     std::function<QString(int row)> m_labels;
+    std::function<QString(int row, std::int64_t value)> m_valueText;
 };
 
 // The whole recording, every row, `width` pixels wide (device independent),
 // at the given pixel ratio: a picture for a page.
 QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QString>& labels,
-                     int width, const QPalette& palette, qreal devicePixelRatio = 1.0);
+                     int width, const QPalette& palette, qreal devicePixelRatio = 1.0,
+                     std::function<QString(int row, std::int64_t value)> valueText = {});
 
 } // namespace rs::render

@@ -2693,4 +2693,21 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
+<context>
+    <name>BlockDocumentation</name>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>The scenario&apos;s one expectation held.</numerusform>
+            <numerusform>All %n expectations of the scenario held.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n expectation of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
+            <numerusform>%n expectations of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

@@ -31,10 +31,16 @@ BlockDocumentationDialog::BlockDocumentationDialog(const blocks::LoadedLibrary& 
         std::vector<QString> labels;
         for (const std::string& label : example.labels)
             labels.push_back(QString::fromStdString(label));
+        // DiagCode is read as the pattern the states table lists.
+        auto valueText = [&example](int row, std::int64_t value) {
+            return example.labels[static_cast<std::size_t>(row)] == "DiagCode"
+                       ? QString::fromStdString(blockdoc::stateCode(static_cast<int>(value)))
+                       : QString::number(value);
+        };
         m_page->document()->addResource(
             QTextDocument::ImageResource, BlockDocumentation::timingDiagramUrl(),
             render::waveformImage(example.recording, labels, kDiagramWidth, palette(),
-                                  devicePixelRatio()));
+                                  devicePixelRatio(), valueText));
     }
     m_page->setHtml(BlockDocumentation::html(library, block, example));
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
