@@ -4,12 +4,14 @@
 #include "ProjectLoading.h"
 
 #include "Verbs.h"
+#include "blockdoc/StateMachineTable.h"
 #include "blocks/LibrarySearch.h"
 #include "blocks/LibraryWords.h"
 #include "lang/Diagnostic.h"
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace rs::cli {
@@ -118,6 +120,57 @@ std::string operandList(const blocks::Pin& pin) {
     return text;
 }
 
+// Pads UTF-8 text to `width` characters (printf's width counts bytes).
+std::string padded(std::string text, std::size_t width) {
+    const auto characters =
+        static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+            return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+        }));
+    if (characters < width)
+        text.append(width - characters, ' ');
+    return text;
+}
+
+// The state machine the body describes (blockdoc::stateMachineOf), as the
+// documentation page shows it: states with meaning and outputs, then each
+// state's transitions in the order they are tried.
+void printStateMachine(const blocks::BlockDefinition& block, const std::string& language) {
+    const blockdoc::StateMachineTable table = blockdoc::stateMachineOf(block);
+    if (table.empty())
+        return;
+    std::printf("\nStates (DiagCode, meaning, outputs on):\n");
+    for (std::size_t i = 0; i < table.states.size(); ++i) {
+        const int state = table.states[i];
+        std::string meaning;
+        for (const blocks::StateMeaning& m : block.states)
+            if (m.code == state)
+                meaning = m.meaning.in(language);
+        std::string on;
+        for (std::size_t o = 0; o < table.outputs.size(); ++o)
+            if (table.outputsOn[i][o])
+                on += (on.empty() ? "" : ", ") + table.outputs[o];
+        std::printf("  %s  %s %s\n", blockdoc::stateCode(state).c_str(),
+                    padded(meaning, 50).c_str(), on.empty() ? "-" : on.c_str());
+    }
+    std::printf("\nTransitions (in each state the first whose condition holds is taken):\n");
+    auto print = [](const std::string& from, const blockdoc::Transition& t) {
+        std::printf("  %-7s  %-50s -> %s\n", from.c_str(),
+                    t.condition.empty() ? "always" : t.condition.c_str(),
+                    blockdoc::stateCode(t.to).c_str());
+    };
+    for (const blockdoc::Transition& t : table.transitions)
+        if (t.from.empty())
+            print("any", t);
+    for (const int state : table.states) {
+        std::string from = blockdoc::stateCode(state);
+        for (const blockdoc::Transition* t : table.transitionsFrom(state))
+            if (!t->from.empty()) {
+                print(from, *t);
+                from.clear();
+            }
+    }
+}
+
 int show(const Invocation& invocation) {
     if (invocation.arguments.size() != 2)
         return usage(QStringLiteral("blocks show takes one block NAME"));
@@ -154,6 +207,7 @@ int show(const Invocation& invocation) {
                         std::string(blocks::wordOf(pin.role)).c_str(), fill.c_str(),
                         operandList(pin).c_str());
         }
+        printStateMachine(*block, language.toStdString());
         if (!block->privates.empty()) {
             std::printf("\nPrivate variables:\n");
             for (const auto& variable : block->privates)

@@ -2,6 +2,7 @@
 #include "ProgramRun.h"
 
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -94,6 +95,27 @@ TEST(BlocksCli, ShowsAStandardBlockInEnglishByDefault) {
     const rs::test::ProgramRun swedish =
         rs::test::runCli({"blocks", "show", "ResetLatch", "--language", "sv"});
     EXPECT_TRUE(swedish.outText().contains("  Låsning med återställningsknapp.\n"));
+}
+
+TEST(BlocksCli, ShowsAStateMachinesStatesAndTransitionsInTheChosenLanguage) {
+    const rs::test::ProgramRun run = rs::test::runCli({"blocks", "show", "SF_EmergencyStop"});
+    EXPECT_EQ(run.exitCode, 0);
+    const QString text = run.outText();
+    EXPECT_TRUE(text.contains(QRegularExpression(
+        "\n  16#8000  released and acknowledged: safe to run +Ready, S_EStopOut\n")))
+        << text.toStdString();
+    // 8003's list in the order it is tried, Activate off first.
+    EXPECT_TRUE(text.contains(QRegularExpression("\n  any +/Activate +-> 16#0000\n")));
+    EXPECT_TRUE(text.contains(QRegularExpression("\n  16#8003 +Reset \\* /resetEdge +-> 16#C001\n"
+                                                 " +/S_EStopIn +-> 16#8002\n"
+                                                 " +resetEdge +-> 16#8000\n")))
+        << text.toStdString();
+    const rs::test::ProgramRun german =
+        rs::test::runCli({"blocks", "show", "SF_EmergencyStop", "--language", "de"});
+    EXPECT_FALSE(german.outText().contains("released and acknowledged"));
+    EXPECT_TRUE(german.outText().contains("\n  16#8000  ")) << german.outText().toStdString();
+    const rs::test::ProgramRun latch = rs::test::runCli({"blocks", "show", "ResetLatch"});
+    EXPECT_FALSE(latch.outText().contains("States")) << "a body without a state register";
 }
 
 TEST(BlocksCli, ABadLibraryIsReportedAtItsLineAndColumnWithExit1) {
