@@ -172,6 +172,10 @@ OperandNames::OperandNames(const project::Project& project) {
         add(unit.declarations);
 }
 
+bool OperandNames::hasStation(int station) const {
+    return std::find(m_stations.begin(), m_stations.end(), station) != m_stations.end();
+}
+
 bool OperandNames::resolve(std::string_view word, lang::Address& address,
                            std::string& error) const {
     lang::AddressWord read = lang::readAddressWord(word);
@@ -347,6 +351,19 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
             } else {
                 expectCount(words.size() < 3 ? 3 : 5, "expect OPERAND VALUE [within DURATION]");
             }
+        } else if (verb == "disconnect" || verb == "connect") {
+            step.kind =
+                verb == "connect" ? ScenarioStep::Kind::Connect : ScenarioStep::Kind::Disconnect;
+            ok = expectCount(2, verb == "connect" ? "connect UNIT" : "disconnect UNIT");
+            std::int64_t station = -1;
+            if (ok &&
+                (parseInteger(words[1].text, station) != Number::Ok ||
+                 !names.hasStation(static_cast<int>(station)) || station < 0 || station > 31)) {
+                fail(words[1], "expected the number of one of the project's units, found '" +
+                                   std::string(words[1].text) + "'");
+                ok = false;
+            }
+            step.value = station;
         } else if (verb == "cycle") {
             step.kind = ScenarioStep::Kind::Cycle;
             ok = expectCount(2, "cycle DURATION") && duration(words[1], step.durationMs);
@@ -362,7 +379,8 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
                 cycleMs = step.durationMs;
         } else {
             fail(words[0], "unknown line '" + std::string(words[0].text) +
-                               "'; expected set, release, run, scans, expect or cycle");
+                               "'; expected set, release, run, scans, expect, cycle, "
+                               "disconnect or connect");
         }
         if (ok)
             scenario.steps.push_back(std::move(step));

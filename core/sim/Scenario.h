@@ -15,7 +15,17 @@
 namespace rs::sim {
 
 struct ScenarioStep {
-    enum class Kind { Set, Release, Run, Scans, Expect, Cycle } kind = Kind::Run;
+    // Disconnect and Connect take unit `value` off the bus and put it back.
+    enum class Kind {
+        Set,
+        Release,
+        Run,
+        Scans,
+        Expect,
+        Cycle,
+        Disconnect,
+        Connect
+    } kind = Kind::Run;
     lang::Address operand;
     std::int64_t value = 0;
     std::int64_t durationMs = 0; // Run, Cycle; Expect with `within` (0 without)
@@ -42,6 +52,7 @@ public:
     explicit OperandNames(const project::Project& project);
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
+    bool hasStation(int station) const;
 
 private:
     struct Entry {

@@ -66,6 +66,11 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
         case ScenarioStep::Kind::Release:
             simulation.release(step.operand);
             break;
+        case ScenarioStep::Kind::Disconnect:
+        case ScenarioStep::Kind::Connect:
+            simulation.setOnBus(static_cast<int>(step.value),
+                                step.kind == ScenarioStep::Kind::Connect);
+            break;
         case ScenarioStep::Kind::Run: {
             const std::int64_t end = simulation.timeMs() + step.durationMs;
             while (simulation.timeMs() < end && scan()) {
@@ -122,6 +127,8 @@ std::int64_t scenarioLengthMs(const Scenario& scenario, int cycleMs) {
             break;
         case ScenarioStep::Kind::Set:
         case ScenarioStep::Kind::Release:
+        case ScenarioStep::Kind::Disconnect:
+        case ScenarioStep::Kind::Connect:
             break;
         }
     }

@@ -24,14 +24,31 @@ Simulation::Simulation(std::vector<compiler::UnitImage> images, int cycleMs)
     : m_bus(std::make_unique<UnitEngine::Bus>()), m_cycleMs(cycleMs) {
     std::sort(images.begin(), images.end(),
               [](const auto& a, const auto& b) { return a.station < b.station; });
-    std::array<bool, 32> present{};
-    for (auto& image : images) {
-        present[image.station % 32] = true;
+    for (auto& image : images)
         m_units.push_back(std::make_unique<UnitEngine>(std::move(image), *m_bus));
+    tellPresence();
+    publish();
+}
+
+void Simulation::tellPresence() {
+    std::array<bool, 32> onBus{};
+    for (const auto& unit : m_units) {
+        const auto station = static_cast<std::size_t>(unit->image().station % 32);
+        onBus[station] = !m_offBus[station];
     }
     for (auto& unit : m_units)
-        unit->setPresent(present);
-    publish();
+        unit->setPresent(m_offBus[static_cast<std::size_t>(unit->image().station % 32)]
+                             ? std::array<bool, 32>{} // setPresent adds the unit itself
+                             : onBus);
+}
+
+void Simulation::setOnBus(int station, bool on) {
+    m_offBus[static_cast<std::size_t>(station) % 32] = !on;
+    tellPresence();
+}
+
+bool Simulation::isOnBus(int station) const {
+    return !m_offBus[static_cast<std::size_t>(station) % 32];
 }
 
 std::vector<int> Simulation::stations() const {
@@ -57,6 +74,8 @@ void Simulation::setRemanent(int station, std::vector<lang::Address> addresses) 
 }
 
 void Simulation::restart() {
+    m_offBus = {};
+    tellPresence();
     for (auto& unit : m_units)
         unit->powerOn(m_remanent[unit->image().station % 32]);
     m_timeMs = 0;

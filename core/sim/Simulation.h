@@ -46,12 +46,21 @@ public:
     // kept by restart().
     void setRemanent(int station, std::vector<lang::Address> addresses);
 
+    // Takes a unit off the bus (a cable pulled) or puts it back, from the next
+    // scan on. A unit off the bus runs on alone: it sees no other unit and no
+    // other sees it (SM_Pluto<n>_Present 0, its global variables read 0 on the
+    // others and theirs 0 on it). restart() puts every unit back.
+    void setOnBus(int station, bool on);
+    bool isOnBus(int station) const;
+
 private:
     void publish();
+    void tellPresence();
 
     std::unique_ptr<UnitEngine::Bus> m_bus; // stable address: engines point into it
     std::vector<std::unique_ptr<UnitEngine>> m_units;
     std::array<std::vector<lang::Address>, 32> m_remanent;
+    std::array<bool, 32> m_offBus{};
     int m_cycleMs;
     std::int64_t m_timeMs = 0;
     std::uint64_t m_scans = 0;

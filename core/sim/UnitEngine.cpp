@@ -255,7 +255,7 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         sm[memory] = flashing(memory, timeMs);
     for (int station = 0; station < 32; ++station)
         sm[static_cast<std::size_t>(100 + station)] = t.present[static_cast<std::size_t>(station)];
-    t.operands.readBus();
+    t.operands.readBus(t.present);
     if (t.eagerConduction) {
         runSteps(true, cycleMs);
         return;

@@ -103,7 +103,7 @@ TEST(ScenarioReading, AByteOrderMarkIsSkipped) {
 TEST(ScenarioReading, ALoneCarriageReturnEndsALine) {
     EXPECT_EQ(diagnostics("set EStop 1\rwait 5s\r\nrun 10ms\rexpect Q0.2 1\r"),
               Lines{"t.scn:2:1: error: unknown line 'wait'; expected set, release, run, scans, "
-                    "expect or cycle"});
+                    "expect, cycle, disconnect or connect"});
     const sim::ScenarioReport report = run("set EStop 1\rrun 10ms\rexpect Q0.2 1\rexpect Q0.2 1\r");
     EXPECT_EQ(report.passed, 2);
     EXPECT_EQ(report.failed, 0);

@@ -114,8 +114,8 @@ TEST(Scenario, SyntaxErrorsAreReportedAndCountAsOneFailure) {
             "t.scn:1:11: error: I0.12 is a bit: its value is 0 or 1",
             "t.scn:2:8: error: unexpected 'ms'; the form is run DURATION",
             "t.scn:3:8: error: unknown operand 'Nothing': use an address or a declared name",
-            "t.scn:4:1: error: unknown line 'wait'; expected set, release, run, scans, expect "
-            "or cycle",
+            "t.scn:4:1: error: unknown line 'wait'; expected set, release, run, scans, expect, "
+            "cycle, disconnect or connect",
             "t.scn:6:1: error: cycle must come before the first run",
             "t.scn:7:15: error: expected 'within', found 'inside'",
             "t.scn:8:1: error: missing argument; the form is set OPERAND VALUE",
@@ -137,4 +137,37 @@ TEST(Scenario, TraceIsStandardVcdAndTheSameEveryRun) {
     // first scan and drops in the scan after the stop.
     EXPECT_NE(first.vcd.find("#10\n1!\n1\"\n1#\n"), std::string::npos);
     EXPECT_NE(first.vcd.find("#110\n0!\n0#\n"), std::string::npos);
+}
+
+// Unit 1 reads unit 0's input and unit 0 reads unit 1's; a unit off the bus
+// sees neither the other nor its variables, and neither is seen.
+TEST(Scenario, AUnitOffTheBusSeesNoOtherAndIsSeenByNone) {
+    const char* twoUnits = "! id_pluto:00=000000000000\n"
+                           "! id_pluto:01=000000000001\n"
+                           "! type_pluto:00=A20,is3\n"
+                           "! type_pluto:01=A20,is3\n"
+                           "! pgm_pluto:00\n"
+                           "! I0.0,static\n"
+                           "S0.0_0\n"
+                           "Q0.2 = I1.0\n"
+                           "! pgm_pluto:01\n"
+                           "! I1.0,static\n"
+                           "S1.0_0\n"
+                           "Q1.2 = I0.0\n";
+    ScenarioRun r = run("set I0.0 1\nset I1.0 1\nscans 3\n"
+                        "expect Q0.2 1\nexpect Q1.2 1\nexpect SM0.101 1\nexpect SM1.100 1\n"
+                        "disconnect 1\nscans 2\n"
+                        "expect Q0.2 0\nexpect Q1.2 0\nexpect SM0.101 0\nexpect SM1.100 0\n"
+                        "expect SM1.101 1\n"
+                        "connect 1\nscans 2\nexpect Q0.2 1\nexpect Q1.2 1\n",
+                        twoUnits);
+    EXPECT_EQ(r.report.failed, 0) << (r.report.failures.empty() ? "" : r.report.failures[0]);
+    EXPECT_EQ(r.report.passed, 11);
+    // A new run starts with every unit on the bus.
+    ScenarioRun again = run("disconnect 0\nscans 2\nexpect Q1.2 0\n", twoUnits);
+    EXPECT_EQ(again.report.passed, 1);
+    ScenarioRun unknown = run("disconnect 7\nexpect Q0.2 0\n", twoUnits);
+    ASSERT_EQ(unknown.report.diagnostics.size(), 1U);
+    EXPECT_EQ(unknown.report.diagnostics[0],
+              "t.scn:1:12: error: expected the number of one of the project's units, found '7'");
 }

@@ -119,7 +119,7 @@ Ref OperandDecoder::readRemote(const lang::Address& address,
                             reinterpret_cast<const std::uint8_t*>(&copy);
         m_remoteCopies.push_back({reinterpret_cast<std::uint8_t*>(&copy) + offset,
                                   reinterpret_cast<const std::uint8_t*>(&m_bus[station]) + offset,
-                                  size});
+                                  size, station});
     }
     return ref;
 }
@@ -204,9 +204,13 @@ OperandDecoder::decode(const std::vector<compiler::Instruction>& code,
     return decoded;
 }
 
-void OperandDecoder::readBus() {
-    for (const RemoteCopy& copy : m_remoteCopies)
-        std::memcpy(copy.to, copy.from, copy.size);
+void OperandDecoder::readBus(const std::array<bool, 32>& present) {
+    for (const RemoteCopy& copy : m_remoteCopies) {
+        if (present[copy.station])
+            std::memcpy(copy.to, copy.from, copy.size);
+        else
+            std::memset(copy.to, 0, copy.size);
+    }
 }
 
 } // namespace rs::sim::engine

@@ -26,14 +26,16 @@ public:
     // The image's code with operands resolved, the forced variables' writes to the sink.
     std::vector<DecodedInstruction> decode(const std::vector<compiler::Instruction>& code,
                                            const std::map<lang::Address, std::int64_t>& forces);
-    // Copies the other units' variables that the code reads from the bus.
-    void readBus();
+    // Copies the other units' variables that the code reads from the bus;
+    // those of a unit not present (off the bus, as this unit sees it) read 0.
+    void readBus(const std::array<bool, 32>& present);
 
 private:
     struct RemoteCopy {
         std::uint8_t* to;
         const std::uint8_t* from;
         std::size_t size;
+        std::size_t station;
     };
     UnitMemory& remoteCopy(int station);
     template <typename Ref>
