@@ -36,10 +36,15 @@ void Simulation::tellPresence() {
         const auto station = static_cast<std::size_t>(unit->image().station % 32);
         onBus[station] = !m_offBus[station];
     }
-    for (auto& unit : m_units)
-        unit->setPresent(m_offBus[static_cast<std::size_t>(unit->image().station % 32)]
-                             ? std::array<bool, 32>{} // setPresent adds the unit itself
-                             : onBus);
+    for (auto& unit : m_units) {
+        const auto station = static_cast<std::size_t>(unit->image().station % 32);
+        std::array<bool, 32> cutOff{};
+        for (std::size_t other = 0; other < 32; ++other)
+            cutOff[other] = other != station && (m_offBus[station] || m_offBus[other]);
+        unit->setPresent(m_offBus[station] ? std::array<bool, 32>{} // setPresent adds the unit
+                                           : onBus);
+        unit->setCutOff(cutOff);
+    }
 }
 
 void Simulation::setOnBus(int station, bool on) {

@@ -110,6 +110,7 @@ struct UnitEngine::Tiers {
     std::vector<int> ranSteps; // steps run in the last scan, by index
     std::map<lang::Address, std::int64_t> forces;
     std::array<bool, 32> present{};
+    std::array<bool, 32> cutOff{};
 };
 
 UnitEngine::UnitEngine(compiler::UnitImage image, const Bus& published)
@@ -202,6 +203,10 @@ void UnitEngine::setPresent(const std::array<bool, 32>& present) {
     m_tiers->present[m_tiers->image.station] = true;
 }
 
+void UnitEngine::setCutOff(const std::array<bool, 32>& cutOff) {
+    m_tiers->cutOff = cutOff;
+}
+
 void UnitEngine::applyForces() {
     for (const auto& [address, value] : m_tiers->forces)
         write(address, value);
@@ -255,7 +260,7 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
         sm[memory] = flashing(memory, timeMs);
     for (int station = 0; station < 32; ++station)
         sm[static_cast<std::size_t>(100 + station)] = t.present[static_cast<std::size_t>(station)];
-    t.operands.readBus(t.present);
+    t.operands.readBus(t.cutOff);
     if (t.eagerConduction) {
         runSteps(true, cycleMs);
         return;

@@ -55,6 +55,10 @@ public:
 
     // The units on the bus, for SM_Pluto0_Present .. SM_Pluto31_Present.
     void setPresent(const std::array<bool, 32>& present);
+    // The units whose variables this unit cannot reach over the bus (it or
+    // they are off it): they read 0. A unit of another project stays
+    // reachable, its variables set from outside.
+    void setCutOff(const std::array<bool, 32>& cutOff);
 
     // A forced variable keeps its value: the program's writes to it are dropped.
     void force(const lang::Address& address, std::int64_t value);

@@ -204,12 +204,12 @@ OperandDecoder::decode(const std::vector<compiler::Instruction>& code,
     return decoded;
 }
 
-void OperandDecoder::readBus(const std::array<bool, 32>& present) {
+void OperandDecoder::readBus(const std::array<bool, 32>& cutOff) {
     for (const RemoteCopy& copy : m_remoteCopies) {
-        if (present[copy.station])
-            std::memcpy(copy.to, copy.from, copy.size);
-        else
+        if (cutOff[copy.station])
             std::memset(copy.to, 0, copy.size);
+        else
+            std::memcpy(copy.to, copy.from, copy.size);
     }
 }
 

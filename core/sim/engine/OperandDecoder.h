@@ -27,8 +27,8 @@ public:
     std::vector<DecodedInstruction> decode(const std::vector<compiler::Instruction>& code,
                                            const std::map<lang::Address, std::int64_t>& forces);
     // Copies the other units' variables that the code reads from the bus;
-    // those of a unit not present (off the bus, as this unit sees it) read 0.
-    void readBus(const std::array<bool, 32>& present);
+    // those of a unit cut off from this one read 0.
+    void readBus(const std::array<bool, 32>& cutOff);
 
 private:
     struct RemoteCopy {
