@@ -8,8 +8,11 @@
 namespace rs::ui {
 
 void installTranslations(QCoreApplication& application, const QLocale& locale) {
+    // "qt" is Qt 6's catalogue of catalogues (qt_de loads qtbase_de and the
+    // rest) or, for Swedish on Debian 12, Qt 4's single catalogue, which still
+    // holds the file dialog's and the text fields' strings.
     auto* qt = new QTranslator(&application);
-    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+    if (qt->load(locale, QStringLiteral("qt"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(qt);
     else

@@ -1,5 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "shell/Translations.h"
+
+#include <QApplication>
+#include <QDialogButtonBox>
 #include <QFile>
+#include <QPushButton>
+#include <QTranslator>
 #include <QXmlStreamReader>
 
 #include <gtest/gtest.h>
@@ -42,3 +48,48 @@ TEST(Translations, GermanIsComplete) {
 }
 
 } // namespace
+
+namespace {
+
+// The window's translations as the GUI's main installs them, taken out again
+// so that the other tests keep their English.
+class InstalledTranslations {
+public:
+    explicit InstalledTranslations(const QLocale& locale) {
+        const QList<QTranslator*> before = qApp->findChildren<QTranslator*>();
+        rs::ui::installTranslations(*qApp, locale);
+        for (QTranslator* translator : qApp->findChildren<QTranslator*>())
+            if (!before.contains(translator))
+                m_added.push_back(translator);
+    }
+    ~InstalledTranslations() {
+        for (QTranslator* translator : m_added) {
+            QCoreApplication::removeTranslator(translator);
+            delete translator;
+        }
+    }
+
+private:
+    QList<QTranslator*> m_added;
+};
+
+QString buttonText(QDialogButtonBox::StandardButton which) {
+    QDialogButtonBox box(which);
+    return box.button(which)->text();
+}
+
+} // namespace
+
+TEST(Translations, QtsOwnButtonsSpeakSwedishAndGerman) {
+    {
+        InstalledTranslations swedish{QLocale(QLocale::Swedish)};
+        EXPECT_EQ(buttonText(QDialogButtonBox::Cancel), QStringLiteral("Avbryt"));
+        EXPECT_EQ(buttonText(QDialogButtonBox::Discard), QStringLiteral("Förkasta"));
+    }
+    {
+        InstalledTranslations german{QLocale(QLocale::German)};
+        EXPECT_EQ(buttonText(QDialogButtonBox::Cancel), QStringLiteral("Abbrechen"));
+        EXPECT_EQ(buttonText(QDialogButtonBox::Save), QStringLiteral("Speichern"));
+    }
+    EXPECT_EQ(buttonText(QDialogButtonBox::Cancel), QStringLiteral("Cancel"));
+}
