@@ -5,6 +5,7 @@
 #include "Lexer.h"
 #include "TextCase.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -737,6 +738,25 @@ private:
         return expr;
     }
 
+    // "0.5": a time written the way most languages write a number.
+    static bool isDecimalFraction(std::string_view text) {
+        const std::size_t dot = text.find('.');
+        auto digits = [](std::string_view part) {
+            return !part.empty() && std::all_of(part.begin(), part.end(),
+                                                [](char c) { return c >= '0' && c <= '9'; });
+        };
+        return dot != std::string_view::npos && digits(text.substr(0, dot)) &&
+               digits(text.substr(dot + 1));
+    }
+
+    // "0.5" as the language writes it, "0s50"; hundredths beyond two decimals dropped.
+    static std::string asTime(std::string_view decimal) {
+        const std::size_t dot = decimal.find('.');
+        std::string fraction(decimal.substr(dot + 1, 2));
+        fraction.resize(2, '0');
+        return std::string(decimal.substr(0, dot)) + "s" + fraction;
+    }
+
     TimerPreset parseTimerPreset(const std::string& keyword) {
         TimerPreset preset;
         Token token = current();
@@ -756,6 +776,9 @@ private:
             preset.hundredths = toInt(whole) * 100 + hundredths;
             return preset;
         }
+        if (at(TokenKind::Word) && isDecimalFraction(token.text))
+            fail("a time is written with the decimal sign 's': " + asTime(token.text) + ", not " +
+                 std::string(token.text));
         if (at(TokenKind::Word)) {
             Operand operand = parseOperand("a time or a register");
             if (!operand.isName() && operand.address.isBit() && !operand.address.isWord())

@@ -63,6 +63,9 @@ TEST(ElementText, RefusesWhatIsNotOneElementWithAReason) {
     EXPECT_FALSE(readElement(document, 0, "").error.empty());
     EXPECT_FALSE(readOutput(document, 0, "Q0.2 = I0.1").error.empty());
     EXPECT_FALSE(readOutput(document, 0, "(").error.empty());
+    // A preset typed as most languages write a number says how this one does.
+    EXPECT_EQ(readElement(document, 0, "TON(0.5)").error,
+              "a time is written with the decimal sign 's': 0s50, not 0.5");
 }
 
 TEST(NetworkText, NetworksGoThroughTheClipboardWithAddressesForNames) {

@@ -35,6 +35,11 @@ TEST(Diagnostics, PointAtTheOffendingToken) {
               "3:8: negation applies to one operand, not to a group in parentheses");
     EXPECT_EQ(statementError("Q0.1 = I0.0 * TON(5)"),
               "3:19: a time needs the decimal sign 's', as in 5s00");
+    EXPECT_EQ(statementError("Q0.1 = I0.0 * TON(0.5)"),
+              "3:19: a time is written with the decimal sign 's': 0s50, not 0.5");
+    EXPECT_EQ(statementError("Q0.1 = TPS(12.345)"),
+              "3:12: a time is written with the decimal sign 's': 12s34, not 12.345");
+    EXPECT_EQ(statementError("Q0.1 = TON(R0.5)"), "no error");
     EXPECT_EQ(statementError("Q0.1 = TON(1s234)"),
               "3:12: a time has at most two decimals (hundredths of a second): '1s234'");
     EXPECT_EQ(
