@@ -171,11 +171,18 @@ void MainWindow::createActions() {
     m_quitAction->setMenuRole(QAction::QuitRole);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
-    m_undoAction = action(tr("&Undo"), "undoAction", QKeySequence::Undo);
+    m_undoAction = action(tr("&Undo"), "undoAction");
+    m_undoAction->setShortcuts(QKeySequence::Undo);
     m_undoAction->setIcon(namedIcon("edit-undo"));
     connect(m_undoAction, &QAction::triggered, this, &MainWindow::undo);
-    m_redoAction = action(tr("&Redo"), "redoAction", QKeySequence::Redo);
+    m_redoAction = action(tr("&Redo"), "redoAction");
     m_redoAction->setIcon(namedIcon("edit-redo"));
+    // Every binding of the platform (Ctrl+Shift+Z on Linux desktops), and
+    // Ctrl+Y, which the manual's tool and Windows use, wherever it is not one.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
+        redoKeys << QKeySequence(Qt::CTRL | Qt::Key_Y);
+    m_redoAction->setShortcuts(redoKeys);
     connect(m_redoAction, &QAction::triggered, this, &MainWindow::redo);
 
     // The clipboard commands act on whatever text field has the focus.

@@ -6,6 +6,7 @@
 #include "ladder/LadderPage.h"
 #include "output/ProblemsView.h"
 #include "pages/VariablesPage.h"
+#include "project/ProjectFile.h"
 #include "shell/ProjectTree.h"
 #include "shell/RecentFiles.h"
 #include "text/ProgramEditor.h"
@@ -398,3 +399,23 @@ TEST(MainWindowTranslation, SwedishAndGermanMenus) {
 }
 
 } // namespace
+
+TEST_F(MainWindowTest, CtrlYRedoesAsCtrlShiftZDoes) {
+    ASSERT_TRUE(
+        window.loadFile(writeFile(QStringLiteral("press.sps"), kCanonicalProject)).isEmpty());
+    showWindow();
+    const std::string before = rs::project::writeProject(document()->project());
+    document()->edit(QStringLiteral("Rename"), [](rs::project::Project& project) {
+        project.libraries = {"Rungsmith_Basics"};
+    });
+    const std::string edited = rs::project::writeProject(document()->project());
+    ASSERT_NE(edited, before);
+    for (const QKeySequence& redo :
+         {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)}) {
+        QTest::keySequence(&window, QKeySequence(Qt::CTRL | Qt::Key_Z));
+        EXPECT_EQ(rs::project::writeProject(document()->project()), before);
+        QTest::keySequence(&window, redo);
+        EXPECT_EQ(rs::project::writeProject(document()->project()), edited)
+            << redo.toString().toStdString();
+    }
+}
