@@ -9,6 +9,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
@@ -53,7 +54,11 @@ CsvExportDialog::CsvExportDialog(int station, const QString& suggestedPath, QWid
     form->addRow(tr("&Prefix for names:"), m_prefix);
     form->addRow(tr("Sort by:"), radios(m_order, {tr("&Variable"), tr("Symbolic &name")}));
     form->addRow(tr("&Separator:"), m_separator);
-    form->addRow(tr("&File:"), file);
+    // A row's label made from text has no buddy: its '&' would show, and
+    // Alt+F would lead nowhere.
+    auto* fileLabel = new QLabel(tr("&File:"), this);
+    fileLabel->setBuddy(m_path);
+    form->addRow(fileLabel, file);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     QPushButton* exportButton = buttons->addButton(tr("&Export"), QDialogButtonBox::AcceptRole);

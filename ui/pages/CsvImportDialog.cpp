@@ -57,7 +57,11 @@ CsvImportDialog::CsvImportDialog(const project::Project& project, int station, Q
     file->addWidget(m_path, 1);
     file->addWidget(browse);
     auto* form = new QFormLayout;
-    form->addRow(tr("&File:"), file);
+    // A row's label made from text has no buddy: its '&' would show, and
+    // Alt+F would lead nowhere.
+    auto* fileLabel = new QLabel(tr("&File:"), this);
+    fileLabel->setBuddy(m_path);
+    form->addRow(fileLabel, file);
     form->addRow(tr("&Remove prefix from names:"), m_prefix);
 
     m_changes->setObjectName(QStringLiteral("csvChanges"));
