@@ -3113,4 +3113,11 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Voreinstellungen</translation>
     </message>
 </context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+</context>
 </TS>

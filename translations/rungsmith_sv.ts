@@ -3113,4 +3113,11 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Återställ standardvärden</translation>
     </message>
 </context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation>steg %1</translation>
+    </message>
+</context>
 </TS>

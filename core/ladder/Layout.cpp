@@ -8,6 +8,7 @@
 #include "lang/Keywords.h"
 #include "lang/Printer.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 #include <algorithm>
@@ -141,10 +142,11 @@ private:
         l.kind = kindOf(output);
         switch (output.kind) {
         case lang::StatementKind::Jump:
-            l.address =
-                QStringLiteral("step ") +
-                (output.relativeJump && output.jumpStep >= 0 ? QStringLiteral("+") : QString()) +
-                QString::number(output.jumpStep);
+            // The window's translations hold it (ui/CMakeLists.txt scans this file).
+            l.address = QCoreApplication::translate("rs::ladder::Layout", "step %1")
+                            .arg((output.relativeJump && output.jumpStep >= 0 ? QStringLiteral("+")
+                                                                              : QString()) +
+                                 QString::number(output.jumpStep));
             break;
         case lang::StatementKind::Assign:
             l.name = nameOf(output.assignment.target);

@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "shell/Translations.h"
+#include "ladder/Layout.h"
+#include "ladder/UnitLadder.h"
+#include "lang/Parser.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>
@@ -92,4 +95,23 @@ TEST(Translations, QtsOwnButtonsSpeakSwedishAndGerman) {
         EXPECT_EQ(buttonText(QDialogButtonBox::Save), QStringLiteral("Speichern"));
     }
     EXPECT_EQ(buttonText(QDialogButtonBox::Cancel), QStringLiteral("Cancel"));
+}
+
+TEST(Translations, TheLadderWritesAJumpsStepInTheWindowsLanguage) {
+    const rs::lang::ParseResult parsed =
+        rs::lang::parse("! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\nJ(+1) = I0.4\n");
+    ASSERT_TRUE(parsed.diagnostics.empty());
+    const auto pages = rs::ladder::unitLadder(parsed.document.units.front());
+    auto jumpLabel = [&pages] {
+        rs::ladder::LayoutContext context;
+        const rs::ladder::NetworkLayout layout =
+            rs::ladder::layoutNetwork(pages.front().ladder.networks.front(), context);
+        for (const auto& element : layout.elements)
+            if (element.kind == rs::ladder::ElementKind::Jump)
+                return element.address;
+        return QString();
+    };
+    EXPECT_EQ(jumpLabel(), QStringLiteral("step +1"));
+    InstalledTranslations swedish{QLocale(QLocale::Swedish)};
+    EXPECT_EQ(jumpLabel(), QStringLiteral("steg +1"));
 }
