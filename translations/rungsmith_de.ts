@@ -2777,6 +2777,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;Kein Projekt ist geöffnet&lt;/h2&gt;&lt;p&gt;Beginnen Sie ein neues Projekt, öffnen Sie eines oder sehen Sie sich das Beispiel aus dem Handbuch an.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
+        <translation>&lt;b&gt;&amp;Zuletzt geöffnete Projekte&lt;/b&gt;</translation>
+    </message>
 </context>
 <context>
     <name>BlockText</name>

@@ -2777,6 +2777,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation>&lt;h2&gt;Inget projekt är öppet&lt;/h2&gt;&lt;p&gt;Starta ett nytt projekt, öppna ett, eller titta på exemplet från manualen.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
+        <translation>&lt;b&gt;&amp;Senaste projekt&lt;/b&gt;</translation>
+    </message>
 </context>
 <context>
     <name>BlockText</name>

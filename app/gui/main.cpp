@@ -219,11 +219,11 @@ int main(int argc, char* argv[]) {
 
     window.restoreLayout();
     window.show();
-    const bool recovered = window.recoverAutosaved() > 0;
+    window.recoverAutosaved();
+    // Without a file the window starts on its welcome page, with the
+    // projects opened last.
     if (!files.isEmpty())
         window.openFile(files.first());
-    else if (!recovered)
-        window.showExample();
     if (page && !window.showPage(page->kind, page->station, page->sequence))
         complain(noSuchUnit);
     if (parser.isSet(simulateOption)) {

@@ -56,6 +56,7 @@ public:
     void updateActions(const ProjectDocument* current);
     // Lists the recent files in `menu`, numbered, with Clear Menu.
     void fillRecentMenu(QMenu* menu);
+    QStringList recentPaths() const { return m_recentFiles.paths(); }
 
     // Opens a project file without asking anything and without recording it
     // among the recent files. Returns the error message, empty on success.

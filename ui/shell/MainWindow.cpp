@@ -82,6 +82,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
 
     const OpenProjects::Actions& projectActions = m_projects->actions();
     m_welcomePage->offer({projectActions.newProject, projectActions.open, projectActions.example});
+    m_welcomePage->showRecent(m_projects->recentPaths());
+    connect(m_welcomePage, &WelcomePage::openRequested, m_projects,
+            [this](const QString& path) { m_projects->openFile(path); });
 
     connect(m_textPage, &TextPage::diagnosticsChanged, this, [this](const lang::Diagnostics& d) {
         m_problems->setDiagnostics(d);
@@ -463,6 +466,7 @@ bool MainWindow::showPage(const PageRef& page) {
     ProjectDocument* document = page.document;
     switch (page.kind) {
     case PageRef::Kind::None:
+        m_welcomePage->showRecent(m_projects->recentPaths());
         m_pages->setCurrentWidget(m_welcomePage);
         if (!documents().empty())
             m_current.document = nullptr;

@@ -16,6 +16,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
 #include <QStackedWidget>
@@ -418,4 +419,25 @@ TEST_F(MainWindowTest, CtrlYRedoesAsCtrlShiftZDoes) {
         EXPECT_EQ(rs::project::writeProject(document()->project()), edited)
             << redo.toString().toStdString();
     }
+}
+
+TEST_F(MainWindowTest, TheWelcomePageListsRecentProjectsAndOpensOneByKey) {
+    const QString first = writeFile(QStringLiteral("first.sps"), kCanonicalProject);
+    const QString second = writeFile(QStringLiteral("second.sps"), kCanonicalProject);
+    ASSERT_TRUE(window.openFile(first));
+    ASSERT_TRUE(window.openFile(second));
+    ASSERT_TRUE(window.closeDocument(window.documents().back()));
+    ASSERT_TRUE(window.closeDocument(window.documents().front()));
+    showWindow();
+    EXPECT_EQ(currentPage()->objectName(), QStringLiteral("welcomePage"));
+    auto* recent = currentPage()->findChild<QListWidget*>(QStringLiteral("recentProjects"));
+    ASSERT_NE(recent, nullptr);
+    ASSERT_EQ(recent->count(), 2);
+    EXPECT_TRUE(recent->isVisibleTo(currentPage()));
+    EXPECT_TRUE(recent->item(0)->text().startsWith(QStringLiteral("second.sps")));
+    recent->setFocus();
+    QTest::keyClick(recent, Qt::Key_Down);
+    QTest::keyClick(recent, Qt::Key_Return);
+    ASSERT_EQ(window.documents().size(), 1u);
+    EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("first.sps")));
 }
