@@ -2,6 +2,7 @@
 #include "ElementText.h"
 
 #include "LadderToText.h"
+#include "SymbolTable.h"
 #include "TextToLadder.h"
 #include "lang/NameResolver.h"
 #include "lang/Parser.h"
@@ -16,6 +17,42 @@ namespace {
 struct StatementReading {
     std::optional<lang::Statement> statement;
     std::string error;
+};
+
+// An address typed where the unit has a name for it is written with the
+// name, as the program writes its other uses (issue 17: "i0.1" for EStop).
+class OperandNamer {
+public:
+    explicit OperandNamer(const SymbolTable& symbols) : m_symbols(symbols) {}
+
+    void name(lang::Statement& statement) const {
+        name(statement.target);
+        name(statement.assignment.target);
+        name(statement.assignment.left);
+        name(statement.assignment.right);
+        if (statement.condition)
+            name(*statement.condition);
+    }
+
+private:
+    void name(lang::Operand& operand) const {
+        if (!operand.isName() && operand.address.valid())
+            operand.name = m_symbols.nameOf(operand.address);
+    }
+    void name(lang::Value& value) const {
+        if (value.operand)
+            name(*value.operand);
+    }
+    void name(lang::Expr& expr) const {
+        for (auto& child : expr.children)
+            name(child);
+        name(expr.operand);
+        name(expr.right);
+        if (expr.preset.registerOperand)
+            name(*expr.preset.registerOperand);
+    }
+
+    const SymbolTable& m_symbols;
 };
 
 StatementReading readStatement(const lang::Document& document, int station,
@@ -44,9 +81,13 @@ StatementReading readStatement(const lang::Document& document, int station,
     const auto& units = parsed.document.units;
     if (units.empty() || units.back().steps.empty())
         return {std::nullopt, "not a statement"};
+    const SymbolTable symbols = SymbolTable::of(document, station);
     for (const auto& line : units.back().steps.back().lines)
-        if (const auto* read = std::get_if<lang::Statement>(&line.body))
-            return {*read, {}};
+        if (const auto* read = std::get_if<lang::Statement>(&line.body)) {
+            lang::Statement named = *read;
+            OperandNamer(symbols).name(named);
+            return {named, {}};
+        }
     return {std::nullopt, "nothing to read"};
 }
 

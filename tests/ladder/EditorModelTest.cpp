@@ -35,7 +35,7 @@ TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
     const auto document = documentWithNames();
     for (const char* text :
          {"EStop", "/I0.2", "R0.3.7", "P(I0.14)", "N(/I0.1)", "/P(I0.3)", "TON(2s50)", "/TPS(R0.5)",
-          "TOF(1s50)", "(Count>=5)", "/(R0.1=R0.2)"}) {
+          "TOF(1s50)", "(Count>=5)", "/(R0.4=R0.2)"}) {
         const ElementReading read = readElement(document, 0, text);
         ASSERT_TRUE(read.element) << text << ": " << read.error;
         EXPECT_EQ(elementText(*read.element), text);
@@ -49,11 +49,27 @@ TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
 TEST(ElementText, ReadsEveryOutputKind) {
     const auto document = documentWithNames();
     for (const char* text : {"Q0.2", "S(Q0.2)", "R(M0.1)", "T(Q0.3)", "J(+1)", "J(0)", "J(-2)",
-                             "R(S0.1)", "(Count += 2)", "(R0.1++)", "(R0.1 = R0.2 + R0.3)"}) {
+                             "R(S0.1)", "(Count += 2)", "(R0.4++)", "(R0.4 = R0.2 + R0.3)"}) {
         const OutputReading read = readOutput(document, 0, text);
         ASSERT_TRUE(read.output) << text << ": " << read.error;
         EXPECT_EQ(outputText(*read.output), text);
     }
+}
+
+TEST(ElementText, AnAddressTypedWhereTheUnitHasANameIsWrittenWithTheName) {
+    const auto document = documentWithNames();
+    const ElementReading contact = readElement(document, 0, "/i0.12");
+    ASSERT_TRUE(contact.element) << contact.error;
+    EXPECT_EQ(elementText(*contact.element), "/EStop");
+    const ElementReading compare = readElement(document, 0, "(r0.1>=r0.2)");
+    ASSERT_TRUE(compare.element) << compare.error;
+    EXPECT_EQ(elementText(*compare.element), "(Count>=R0.2)");
+    const OutputReading assign = readOutput(document, 0, "(R0.2 = R0.1 + 1)");
+    ASSERT_TRUE(assign.output) << assign.error;
+    EXPECT_EQ(outputText(*assign.output), "(R0.2 = Count + 1)");
+    const ElementReading timer = readElement(document, 0, "TON(R0.1)");
+    ASSERT_TRUE(timer.element) << timer.error;
+    EXPECT_EQ(elementText(*timer.element), "TON(Count)");
 }
 
 TEST(ElementText, RefusesWhatIsNotOneElementWithAReason) {

@@ -94,8 +94,12 @@ private:
             named.name = "EStop";
             return named;
         }
+        // An unnamed operand never stands at a named address: the editor
+        // writes an address that has a name with the name.
         const AddressKind kinds[] = {AddressKind::Input, AddressKind::Output, AddressKind::Memory};
-        return address(kinds[number(0, 2)], number(0, 15));
+        const AddressKind kind = kinds[number(0, 2)];
+        const int index = number(0, 15);
+        return address(kind, kind == AddressKind::Input && index == 12 ? 13 : index);
     }
     Operand word() {
         if (number(0, 5) == 0) {
@@ -103,7 +107,8 @@ private:
             named.name = "Count";
             return named;
         }
-        return address(AddressKind::Register, number(0, 20));
+        const int index = number(0, 19);
+        return address(AddressKind::Register, index >= 1 ? index + 1 : index);
     }
     Value value() {
         if (coin())
