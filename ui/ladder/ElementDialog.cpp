@@ -43,11 +43,15 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
 
     auto* form = new QFormLayout;
     form->addRow(tr("&Type:"), m_kind);
-    auto* newVariable = new QPushButton(tr("New &Variable..."), this);
-    newVariable->setObjectName(QStringLiteral("newVariable"));
+    m_newVariable = new QPushButton(tr("New &Variable..."), this);
+    m_newVariable->setObjectName(QStringLiteral("newVariable"));
+    // Alt+V opens it; Tab passes it by, so a space typed after Tab from the
+    // operand does not open a dialog (issue 17).
+    m_newVariable->setFocusPolicy(Qt::ClickFocus);
+    m_newVariable->setAutoDefault(false);
     auto* operandRow = new QHBoxLayout;
     operandRow->addWidget(m_operand, 1);
-    operandRow->addWidget(newVariable);
+    operandRow->addWidget(m_newVariable);
     form->addRow(m_operandLabel, operandRow);
     form->addRow(m_valueLabel, m_value);
     form->addRow(QString(), m_negated);
@@ -74,7 +78,7 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
     connect(buttons, &QDialogButtonBox::accepted, this, &ElementDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &ElementDialog::reject);
     connect(m_kind, &QComboBox::currentIndexChanged, this, &ElementDialog::kindChanged);
-    connect(newVariable, &QPushButton::clicked, this, &ElementDialog::newVariable);
+    connect(m_newVariable, &QPushButton::clicked, this, &ElementDialog::newVariable);
     kindChanged();
     m_operand->setFocus();
     m_operand->selectAll();
@@ -101,6 +105,9 @@ void ElementDialog::kindChanged() {
     m_valueLabel->setVisible(info.hasValue);
     m_value->setVisible(info.hasValue);
     m_negated->setVisible(info.canNegate);
+    // A jump's step and a sequence reset's sequence are no variables.
+    m_newVariable->setVisible(info.operandRole != ladder::OperandRole::Step &&
+                              info.operandRole != ladder::OperandRole::Sequence);
     m_problem->clear();
 }
 

@@ -11,6 +11,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QLineEdit;
 
 namespace rs::ui {
@@ -44,6 +45,7 @@ private:
     bool m_isOutput;
     QComboBox* m_kind;
     QLabel* m_operandLabel;
+    QPushButton* m_newVariable;
     QLineEdit* m_operand;
     QLabel* m_valueLabel;
     QLineEdit* m_value;
