@@ -5,6 +5,7 @@
 #include "SymbolTable.h"
 #include "TextToLadder.h"
 #include "lang/NameResolver.h"
+#include "lang/OperandWalk.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
 
@@ -21,39 +22,12 @@ struct StatementReading {
 
 // An address typed where the unit has a name for it is written with the
 // name, as the program writes its other uses (issue 17: "i0.1" for EStop).
-class OperandNamer {
-public:
-    explicit OperandNamer(const SymbolTable& symbols) : m_symbols(symbols) {}
-
-    void name(lang::Statement& statement) const {
-        name(statement.target);
-        name(statement.assignment.target);
-        name(statement.assignment.left);
-        name(statement.assignment.right);
-        if (statement.condition)
-            name(*statement.condition);
-    }
-
-private:
-    void name(lang::Operand& operand) const {
+void nameOperands(lang::Statement& statement, const SymbolTable& symbols) {
+    lang::forEachOperand(statement, [&symbols](lang::Operand& operand) {
         if (!operand.isName() && operand.address.valid())
-            operand.name = m_symbols.nameOf(operand.address);
-    }
-    void name(lang::Value& value) const {
-        if (value.operand)
-            name(*value.operand);
-    }
-    void name(lang::Expr& expr) const {
-        for (auto& child : expr.children)
-            name(child);
-        name(expr.operand);
-        name(expr.right);
-        if (expr.preset.registerOperand)
-            name(*expr.preset.registerOperand);
-    }
-
-    const SymbolTable& m_symbols;
-};
+            operand.name = symbols.nameOf(operand.address);
+    });
+}
 
 StatementReading readStatement(const lang::Document& document, int station,
                                const std::string& statement) {
@@ -85,7 +59,7 @@ StatementReading readStatement(const lang::Document& document, int station,
     for (const auto& line : units.back().steps.back().lines)
         if (const auto* read = std::get_if<lang::Statement>(&line.body)) {
             lang::Statement named = *read;
-            OperandNamer(symbols).name(named);
+            nameOperands(named, symbols);
             return {named, {}};
         }
     return {std::nullopt, "nothing to read"};

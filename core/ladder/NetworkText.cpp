@@ -3,6 +3,7 @@
 
 #include "LadderToText.h"
 #include "TextToLadder.h"
+#include "lang/OperandWalk.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
 #include "project/Annotation.h"
@@ -11,31 +12,8 @@ namespace rs::ladder {
 
 namespace {
 
-void unname(lang::Operand& operand) {
-    operand.name.clear();
-}
-
-void unname(lang::Value& value) {
-    if (value.operand)
-        unname(*value.operand);
-}
-
-void unname(lang::Expr& expr) {
-    unname(expr.operand);
-    unname(expr.right);
-    if (expr.preset.registerOperand)
-        unname(*expr.preset.registerOperand);
-    for (auto& child : expr.children)
-        unname(child);
-}
-
 void unname(lang::Statement& statement) {
-    unname(statement.target);
-    unname(statement.assignment.target);
-    unname(statement.assignment.left);
-    unname(statement.assignment.right);
-    if (statement.condition)
-        unname(*statement.condition);
+    lang::forEachOperand(statement, [](lang::Operand& operand) { operand.name.clear(); });
 }
 
 constexpr int kStation = 0;

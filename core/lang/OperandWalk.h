@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "Ast.h"
+
+namespace rs::lang {
+
+// Calls `visit` on every operand a statement writes or reads: its target,
+// an assignment's target and values, and every operand of its condition
+// (contacts, edges, comparisons and their values, a timer's register
+// preset), in that order.
+template <typename Visit> void forEachOperand(Expr& expr, Visit&& visit) {
+    for (auto& child : expr.children)
+        forEachOperand(child, visit);
+    visit(expr.operand);
+    if (expr.right.operand)
+        visit(*expr.right.operand);
+    if (expr.preset.registerOperand)
+        visit(*expr.preset.registerOperand);
+}
+
+template <typename Visit> void forEachOperand(Statement& statement, Visit&& visit) {
+    visit(statement.target);
+    visit(statement.assignment.target);
+    for (Value* value : {&statement.assignment.left, &statement.assignment.right})
+        if (value->operand)
+            visit(*value->operand);
+    if (statement.condition)
+        forEachOperand(*statement.condition, visit);
+}
+
+} // namespace rs::lang
