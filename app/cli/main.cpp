@@ -2,6 +2,7 @@
 #include "BlocksVerbs.h"
 #include "Invocation.h"
 #include "LadderVerbs.h"
+#include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
 #include "TestVerb.h"
 #include "VarsVerbs.h"
@@ -90,6 +91,9 @@ const rs::cli::Verb kVerbs[] = {
     {"roundtrip",
      "roundtrip FILE.sps             every network to the ladder model and back; print the text",
      rs::cli::runRoundtrip},
+    {"signature",
+     "signature FILE.sps|FILE.hps    each unit's program signature, then the project's",
+     rs::cli::runSignature},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"

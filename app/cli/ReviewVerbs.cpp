@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ReviewVerbs.h"
+
+#include "Verbs.h"
+#include "compiler/ImageCodec.h"
+#include "compiler/Signature.h"
+#include "project/ProjectFile.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace rs::cli {
+
+namespace {
+
+int usage(const QString& message) {
+    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
+    return UsageOrIo;
+}
+
+compiler::CheckOptions checkOptions(const Invocation& invocation) {
+    compiler::CheckOptions options;
+    options.warnUnconfiguredIo = !invocation.options.isSet(QStringLiteral("no-io-warnings"));
+    return options;
+}
+
+void printSignatures(const std::vector<compiler::UnitSignature>& units, std::uint32_t project) {
+    for (const auto& unit : units)
+        std::printf("Pluto %02d %s\n", unit.station, compiler::signatureText(unit.value).c_str());
+    std::printf("project %s\n", compiler::signatureText(project).c_str());
+}
+
+int imageSignature(const QString& path) {
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        return UsageOrIo;
+    }
+    const compiler::HpsResult read = compiler::readHps(file.text);
+    if (const auto* error = std::get_if<compiler::ImageError>(&read)) {
+        // A fault in the bytes themselves has no place in the text: the
+        // file's start stands for it.
+        std::fprintf(stderr, "%s:%d:%d: error: %s\n", qPrintable(path), std::max(error->line, 1),
+                     std::max(error->column, 1), error->message.c_str());
+        return Failed;
+    }
+    const auto& images = std::get<std::vector<compiler::UnitImage>>(read);
+    std::vector<compiler::UnitSignature> units;
+    for (const auto& image : images)
+        units.push_back({image.station, compiler::unitSignature(image)});
+    // Units without code have no image; the project figure the compiler
+    // stored covers them too.
+    printSignatures(units, images.front().projectSignature);
+    return Ok;
+}
+
+} // namespace
+
+int runSignature(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("signature takes exactly one FILE.sps or FILE.hps"));
+    const QString path = invocation.arguments[0];
+    if (path.endsWith(QStringLiteral(".hps"), Qt::CaseInsensitive))
+        return imageSignature(path);
+    LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors())
+        return Failed;
+    printSignatures(result.signatures, result.projectSignature);
+    return Ok;
+}
+
+} // namespace rs::cli
