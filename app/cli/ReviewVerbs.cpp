@@ -5,6 +5,7 @@
 #include "compiler/ImageCodec.h"
 #include "compiler/Signature.h"
 #include "project/ProjectFile.h"
+#include "review/ProjectDiff.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -71,6 +72,41 @@ int runSignature(const Invocation& invocation) {
         return Failed;
     printSignatures(result.signatures, result.projectSignature);
     return Ok;
+}
+
+int runDiff(const Invocation& invocation) {
+    if (invocation.arguments.size() != 2)
+        return usage(QStringLiteral("diff takes OLD.sps and NEW.sps"));
+    const QString oldPath = invocation.arguments[0];
+    const QString newPath = invocation.arguments[1];
+    const LoadedProject before = loadProject(oldPath, libraryFiles(invocation));
+    if (before.status != Ok)
+        return before.status;
+    const LoadedProject after = loadProject(newPath, libraryFiles(invocation));
+    if (after.status != Ok)
+        return after.status;
+    const compiler::CompileResult oldCompiled = compiled(before, checkOptions(invocation));
+    const compiler::CompileResult newCompiled = compiled(after, checkOptions(invocation));
+    printDiagnostics(oldPath, oldCompiled.diagnostics);
+    printDiagnostics(newPath, newCompiled.diagnostics);
+    // Without both signatures nothing can be said about the behaviour, and a
+    // reviewer must not read silence as "no change".
+    bool errors = false;
+    for (const auto& [path, result] :
+         {std::pair{oldPath, oldCompiled.errors()}, std::pair{newPath, newCompiled.errors()}})
+        if (result) {
+            std::fprintf(stderr,
+                         "rungsmith-cli: %s has errors, so its behaviour cannot be compared\n",
+                         qPrintable(path));
+            errors = true;
+        }
+    if (errors)
+        return Failed;
+    const review::ProjectDiff diff =
+        review::diffProjects(before.project, oldCompiled, after.project, newCompiled);
+    for (const std::string& line : diff.lines())
+        std::printf("%s\n", line.c_str());
+    return diff.behaviourChanged() ? Failed : Ok;
 }
 
 } // namespace rs::cli

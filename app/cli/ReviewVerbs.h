@@ -14,4 +14,10 @@ namespace rs::cli {
 // can be matched with the source it came from.
 int runSignature(const Invocation& invocation);
 
+// `diff OLD.sps NEW.sps`: one line per difference of a unit and per added,
+// removed or changed network (review/ProjectDiff.h), then whether the
+// behaviour changed. Exit 0 when it did not, 1 when it did or a project has
+// errors, 2 for usage or a file that cannot be read.
+int runDiff(const Invocation& invocation);
+
 } // namespace rs::cli

@@ -94,6 +94,10 @@ const rs::cli::Verb kVerbs[] = {
     {"signature",
      "signature FILE.sps|FILE.hps    each unit's program signature, then the project's",
      rs::cli::runSignature},
+    {"diff",
+     "diff OLD.sps NEW.sps           what changed, unit by unit and network by network, and\n"
+     "                                 whether the behaviour did (exit 0 no, 1 yes)",
+     rs::cli::runDiff},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "Alignment.h"
+#include "project/Project.h"
+
+#include <string>
+#include <vector>
+
+namespace rs::review {
+
+// One network that a reviewer has to look at: added, removed or changed.
+struct NetworkDifference {
+    int station = 0;
+    lang::StepAddress step;
+    int number = 0; // in its step, from 1: in the new project, in the old one when removed
+    Pairing::Kind change = Pairing::Changed;
+
+    // "Pluto 00 S0.0_0 network 3: changed" (cli.md)
+    std::string describe() const;
+    friend bool operator==(const NetworkDifference&, const NetworkDifference&) = default;
+};
+
+// The networks that differ in what they do, unit by unit (by station), step
+// by step (the PLC code, then each sequence and step by number), in the
+// order of the step. Networks are matched by what they do and by their
+// order (Alignment.h): comments, layout, symbolic names and timer spellings
+// make no difference.
+std::vector<NetworkDifference> networkDifferences(const project::Project& before,
+                                                  const project::Project& after);
+
+} // namespace rs::review
