@@ -6,6 +6,9 @@
 #include "compiler/Signature.h"
 #include "project/ProjectFile.h"
 #include "review/ProjectDiff.h"
+#include "review/Validation.h"
+
+#include <QDate>
 
 #include <algorithm>
 #include <cstdio>
@@ -104,6 +107,70 @@ int runDiff(const Invocation& invocation) {
         return Failed;
     const review::ProjectDiff diff =
         review::diffProjects(before.project, oldCompiled, after.project, newCompiled);
+    for (const std::string& line : diff.lines())
+        std::printf("%s\n", line.c_str());
+    return diff.behaviourChanged() ? Failed : Ok;
+}
+
+int runValidate(const Invocation& invocation) {
+    const QString by = invocation.options.value(QStringLiteral("by"));
+    const QString output = invocation.options.value(QStringLiteral("output"));
+    if (invocation.arguments.size() != 1 || by.trimmed().isEmpty() || output.isEmpty())
+        return usage(QStringLiteral("validate takes FILE.sps, --by NAME and -o OUT.sps"));
+    QDate date = QDate::currentDate();
+    if (invocation.options.isSet(QStringLiteral("date"))) {
+        date = QDate::fromString(invocation.options.value(QStringLiteral("date")), Qt::ISODate);
+        if (!date.isValid())
+            return usage(QStringLiteral("--date takes a date as YYYY-MM-DD"));
+    }
+    const QString path = invocation.arguments[0];
+    const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors())
+        return Failed;
+    // The file keeps its block instances as written; the baseline is of the
+    // project they expand to, which is what `review` compares with.
+    project::ProjectReadResult written = project::readProject(loaded.text);
+    written.project.baseline = review::validatedBaseline(
+        loaded.project, result, date.toString(Qt::ISODate).toStdString(), by.toStdString(),
+        invocation.options.value(QStringLiteral("comment")).toStdString());
+    const QString error = project::writeTextFile(output, project::writeProject(written.project));
+    if (!error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+        return UsageOrIo;
+    }
+    return Ok;
+}
+
+int runReview(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("review takes exactly one FILE.sps"));
+    const QString path = invocation.arguments[0];
+    const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors()) {
+        std::fprintf(stderr, "rungsmith-cli: %s has errors, so its behaviour cannot be compared\n",
+                     qPrintable(path));
+        return Failed;
+    }
+    if (!loaded.project.baseline) {
+        std::fprintf(stderr,
+                     "rungsmith-cli: %s has not been validated (it has no ;@validated record); "
+                     "mark it with rungsmith-cli validate\n",
+                     qPrintable(path));
+        return Failed;
+    }
+    const project::Baseline& baseline = *loaded.project.baseline;
+    std::printf("validated on %s by %s%s%s\n", lang::visibleText(baseline.date).c_str(),
+                lang::visibleText(baseline.by).c_str(), baseline.comment.empty() ? "" : ": ",
+                lang::visibleText(baseline.comment).c_str());
+    const review::ProjectDiff diff = review::changesSinceValidation(loaded.project, result);
     for (const std::string& line : diff.lines())
         std::printf("%s\n", line.c_str());
     return diff.behaviourChanged() ? Failed : Ok;

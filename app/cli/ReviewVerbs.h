@@ -20,4 +20,15 @@ int runSignature(const Invocation& invocation);
 // errors, 2 for usage or a file that cannot be read.
 int runDiff(const Invocation& invocation);
 
+// `validate FILE.sps --by NAME [--comment TEXT] [--date YYYY-MM-DD] -o OUT.sps`:
+// the project with its current version recorded as validated (a ;@validated
+// baseline, project/Baseline.h). Exit 1 when it has errors.
+int runValidate(const Invocation& invocation);
+
+// `review FILE.sps`: the review report, what changed since the project was
+// validated: who validated it when, the lines of `diff` against that
+// version, and the verdict. Exit 0 when the behaviour did not change, 1 when
+// it did, the project has errors or was never validated.
+int runReview(const Invocation& invocation);
+
 } // namespace rs::cli

@@ -98,6 +98,14 @@ const rs::cli::Verb kVerbs[] = {
      "diff OLD.sps NEW.sps           what changed, unit by unit and network by network, and\n"
      "                                 whether the behaviour did (exit 0 no, 1 yes)",
      rs::cli::runDiff},
+    {"validate",
+     "validate FILE.sps --by NAME [--comment TEXT] [--date YYYY-MM-DD] -o OUT.sps\n"
+     "                                 record the project's current version as validated",
+     rs::cli::runValidate},
+    {"review",
+     "review FILE.sps                what changed since the project was validated (exit 0\n"
+     "                                 none in behaviour, 1 some)",
+     rs::cli::runReview},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -149,6 +157,15 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("blocks: the language of block descriptions: en (default), "
                                      "sv or de."),
                       QStringLiteral("LANG")});
+    parser.addOption({QStringLiteral("by"),
+                      QStringLiteral("validate: who reviewed and validated the project."),
+                      QStringLiteral("NAME")});
+    parser.addOption({QStringLiteral("comment"),
+                      QStringLiteral("validate: what the validation was (a report, a ticket)."),
+                      QStringLiteral("TEXT")});
+    parser.addOption({QStringLiteral("date"),
+                      QStringLiteral("validate: the date of the validation (default today)."),
+                      QStringLiteral("YYYY-MM-DD")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

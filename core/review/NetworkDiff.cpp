@@ -2,6 +2,8 @@
 #include "NetworkDiff.h"
 
 #include "NetworkMeaning.h"
+#include "compiler/ImageCodec.h"
+#include "compiler/Signature.h"
 
 #include <cstdio>
 #include <map>
@@ -10,26 +12,6 @@
 namespace rs::review {
 
 namespace {
-
-using StepKey = std::pair<int, int>; // sequence, step
-
-std::map<StepKey, const lang::Step*> stepsOf(const project::Project& project, int station) {
-    std::map<StepKey, const lang::Step*> steps;
-    for (const auto& unit : project.program.units)
-        if (unit.station() == station)
-            for (const auto& step : unit.steps)
-                steps.emplace(StepKey{step.address.sequence, step.address.step}, &step);
-    return steps;
-}
-
-std::vector<std::string> meanings(const project::Project& project, int station,
-                                  const lang::Step* step) {
-    std::vector<std::string> texts;
-    if (step)
-        for (const auto& network : project::networksOf(*step))
-            texts.push_back(networkMeaning(project.program, station, network));
-    return texts;
-}
 
 const char* changeWord(Pairing::Kind kind) {
     switch (kind) {
@@ -54,38 +36,57 @@ std::string NetworkDifference::describe() const {
            std::to_string(number) + ": " + changeWord(change);
 }
 
-std::vector<NetworkDifference> networkDifferences(const project::Project& before,
-                                                  const project::Project& after) {
-    std::set<int> stations;
-    for (const auto* project : {&before, &after})
-        for (const auto& unit : project->program.units)
-            stations.insert(unit.station());
+StepNetworks networksByStep(const project::Project& project) {
+    StepNetworks steps;
+    for (const auto& unit : project.program.units) {
+        const int station = unit.station();
+        for (const auto& step : unit.steps) {
+            auto& texts = steps[{station, step.address.sequence, step.address.step}];
+            for (const auto& network : project::networksOf(step))
+                texts.push_back(networkMeaning(project.program, station, network));
+        }
+    }
+    return steps;
+}
+
+StepNetworks fingerprints(const StepNetworks& networks) {
+    StepNetworks crcs;
+    for (const auto& [step, texts] : networks) {
+        auto& out = crcs[step];
+        for (const auto& text : texts)
+            out.push_back(compiler::signatureText(compiler::crc32(text)));
+    }
+    return crcs;
+}
+
+std::vector<NetworkDifference> networkDifferences(const StepNetworks& before,
+                                                  const StepNetworks& after) {
+    std::set<std::tuple<int, int, int>> steps;
+    for (const auto* side : {&before, &after})
+        for (const auto& entry : *side)
+            steps.insert(entry.first);
+    static const std::vector<std::string> kNone;
     std::vector<NetworkDifference> differences;
-    for (const int station : stations) {
-        const auto oldSteps = stepsOf(before, station);
-        const auto newSteps = stepsOf(after, station);
-        std::set<StepKey> keys;
-        for (const auto* steps : {&oldSteps, &newSteps})
-            for (const auto& entry : *steps)
-                keys.insert(entry.first);
-        for (const StepKey& key : keys) {
-            const auto oldStep = oldSteps.find(key);
-            const auto newStep = newSteps.find(key);
-            const lang::StepAddress address{station, key.first, key.second};
-            for (const Pairing& pairing :
-                 align(meanings(before, station,
-                                oldStep == oldSteps.end() ? nullptr : oldStep->second),
-                       meanings(after, station,
-                                newStep == newSteps.end() ? nullptr : newStep->second))) {
-                if (pairing.kind == Pairing::Same)
-                    continue;
-                const int index =
-                    pairing.kind == Pairing::Removed ? pairing.oldIndex : pairing.newIndex;
-                differences.push_back({station, address, index + 1, pairing.kind});
-            }
+    for (const auto& key : steps) {
+        const auto old = before.find(key);
+        const auto now = after.find(key);
+        const auto& [station, sequence, step] = key;
+        for (const Pairing& pairing : align(old == before.end() ? kNone : old->second,
+                                            now == after.end() ? kNone : now->second)) {
+            if (pairing.kind == Pairing::Same)
+                continue;
+            const int index =
+                pairing.kind == Pairing::Removed ? pairing.oldIndex : pairing.newIndex;
+            differences.push_back(
+                {station, lang::StepAddress{station, sequence, step}, index + 1, pairing.kind});
         }
     }
     return differences;
+}
+
+std::vector<NetworkDifference> networkDifferences(const project::Project& before,
+                                                  const project::Project& after) {
+    return networkDifferences(networksByStep(before), networksByStep(after));
 }
 
 } // namespace rs::review

@@ -4,7 +4,9 @@
 #include "Alignment.h"
 #include "project/Project.h"
 
+#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rs::review {
@@ -20,6 +22,19 @@ struct NetworkDifference {
     std::string describe() const;
     friend bool operator==(const NetworkDifference&, const NetworkDifference&) = default;
 };
+
+// Every step of every unit that has code, by (station, sequence, step): its
+// networks in order, each as text to compare (networkMeaning, or a CRC-32 of
+// it as a baseline keeps them).
+using StepNetworks = std::map<std::tuple<int, int, int>, std::vector<std::string>>;
+
+StepNetworks networksByStep(const project::Project& project);
+
+// Each network of `networks` by the CRC-32 of its text, as 8 hex digits.
+StepNetworks fingerprints(const StepNetworks& networks);
+
+std::vector<NetworkDifference> networkDifferences(const StepNetworks& before,
+                                                  const StepNetworks& after);
 
 // The networks that differ in what they do, unit by unit (by station), step
 // by step (the PLC code, then each sequence and step by number), in the
