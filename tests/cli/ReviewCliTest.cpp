@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramRun.h"
 #include <QDir>
+#include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
@@ -207,4 +208,60 @@ TEST(DiffCli, AProjectWithErrorsCannotBeCompared) {
 
     EXPECT_EQ(runCli({"diff", good, dir.filePath("missing.sps")}).exitCode, 2);
     EXPECT_EQ(runCli({"diff", good}).exitCode, 2);
+}
+
+TEST(ValidateCli, AValidatedProjectReviewsAsUnchangedUntilItChanges) {
+    QTemporaryDir dir;
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString validated = dir.filePath("validated.sps");
+    const ProgramRun validate =
+        runCli({"validate", "--no-io-warnings", project, "--by", "A. Reviewer", "--comment",
+                "Release 1, report R-17", "--date", "2026-12-01", "-o", validated});
+    ASSERT_EQ(validate.exitCode, 0) << validate.errText();
+    EXPECT_EQ(rs::test::readFile(project), kProject); // the input is not touched
+
+    const ProgramRun review = runCli({"review", "--no-io-warnings", validated});
+    EXPECT_EQ(review.exitCode, 0) << review.errText();
+    EXPECT_EQ(review.outText(), "validated on 2026-12-01 by A. Reviewer: Release 1, report R-17\n"
+                                "no change in behaviour\n");
+    // Validation changes no signature.
+    EXPECT_EQ(runCli({"signature", "--no-io-warnings", validated}).out,
+              runCli({"signature", "--no-io-warnings", project}).out);
+
+    QByteArray text = rs::test::readFile(validated);
+    const QString changed = rs::test::writeFile(
+        dir, "changed.sps", replaced(text, "M0.1 = I0.2 + /I0.3\n", "M0.1 = I0.2 + /I0.4\n"));
+    const ProgramRun after = runCli({"review", "--no-io-warnings", changed});
+    EXPECT_EQ(after.exitCode, 1);
+    const QStringList lines = after.outText().split('\n', Qt::SkipEmptyParts);
+    ASSERT_EQ(lines.size(), 3) << after.outText();
+    EXPECT_EQ(lines[1], "Pluto 00 S0.0_0 network 2: changed");
+    EXPECT_TRUE(lines[2].startsWith("behaviour changed in Pluto 00 (")) << lines[2];
+}
+
+TEST(ValidateCli, BadInputIsRefusedWithoutWriting) {
+    QTemporaryDir dir;
+    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString out = dir.filePath("out.sps");
+    EXPECT_EQ(runCli({"validate", project, "-o", out}).exitCode, 2);   // no --by
+    EXPECT_EQ(runCli({"validate", project, "--by", "X"}).exitCode, 2); // no -o
+    EXPECT_EQ(runCli({"validate", project, "--by", "X", "--date", "1.12.2026", "-o", out}).exitCode,
+              2);
+    const QString bad =
+        rs::test::writeFile(dir, "bad.sps", replaced(kProject, "I0.2 +", "I0.2 + +"));
+    const ProgramRun errors = runCli({"validate", bad, "--by", "X", "-o", out});
+    EXPECT_EQ(errors.exitCode, 1);
+    EXPECT_TRUE(errors.errText().startsWith(bad + ":12:")) << errors.errText();
+    EXPECT_FALSE(QFile::exists(out));
+
+    const ProgramRun never = runCli({"review", "--no-io-warnings", project});
+    EXPECT_EQ(never.exitCode, 1);
+    EXPECT_TRUE(never.errText().contains("has not been validated")) << never.errText();
+
+    const QString broken = rs::test::writeFile(
+        dir, "broken.sps",
+        replaced(kProject, "$name Review\n", "$name Review\n;@validated signature=\"1\"\n"));
+    const ProgramRun record = runCli({"review", broken});
+    EXPECT_EQ(record.exitCode, 1);
+    EXPECT_TRUE(record.errText().startsWith(broken + ":2:")) << record.errText();
 }
