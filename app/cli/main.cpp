@@ -95,8 +95,8 @@ const rs::cli::Verb kVerbs[] = {
      "signature FILE.sps|FILE.hps    each unit's program signature, then the project's",
      rs::cli::runSignature},
     {"diff",
-     "diff OLD.sps NEW.sps           what changed, unit by unit and network by network, and\n"
-     "                                 whether the behaviour did (exit 0 no, 1 yes)",
+     "diff OLD.sps NEW.sps [--pdf OUT.pdf]  what changed, unit by unit and network by\n"
+     "                                 network, and whether the behaviour did (exit 0 no, 1 yes)",
      rs::cli::runDiff},
     {"validate",
      "validate FILE.sps --by NAME [--comment TEXT] [--date YYYY-MM-DD] -o OUT.sps\n"
@@ -157,6 +157,10 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("blocks: the language of block descriptions: en (default), "
                                      "sv or de."),
                       QStringLiteral("LANG")});
+    parser.addOption({QStringLiteral("pdf"),
+                      QStringLiteral("diff: also draw each changed network old beside new, on "
+                                     "pages to sign."),
+                      QStringLiteral("OUT.pdf")});
     parser.addOption({QStringLiteral("by"),
                       QStringLiteral("validate: who reviewed and validated the project."),
                       QStringLiteral("NAME")});

@@ -102,13 +102,18 @@ void writeAddress(Writer& w, const lang::Address& address) {
     w.u16(static_cast<std::uint16_t>(address.index));
 }
 
-lang::Address readAddress(Reader& r) {
+// Nothing when the bytes are no address the encoder writes: an image must
+// read back to the bytes it was read from.
+std::optional<lang::Address> readAddress(Reader& r) {
     lang::Address address;
     address.kind = static_cast<lang::AddressKind>(r.u8());
     address.unit = r.u8();
     address.bit = static_cast<std::int8_t>(r.u8());
-    address.asiB = r.u8() != 0;
+    const std::uint8_t asiB = r.u8();
     address.index = r.u16();
+    if (asiB > 1)
+        return std::nullopt;
+    address.asiB = asiB != 0;
     return address;
 }
 
@@ -343,8 +348,12 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
             if (count > end / kAddressSize)
                 throw Truncated{};
             addresses->resize(count);
-            for (auto& address : *addresses)
-                address = readAddress(r);
+            for (auto& address : *addresses) {
+                const auto read = readAddress(r);
+                if (!read)
+                    return ImageError{0, 0, "an exported or remanent variable is damaged"};
+                address = *read;
+            }
         }
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();

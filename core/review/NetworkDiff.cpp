@@ -77,8 +77,8 @@ std::vector<NetworkDifference> networkDifferences(const StepNetworks& before,
                 continue;
             const int index =
                 pairing.kind == Pairing::Removed ? pairing.oldIndex : pairing.newIndex;
-            differences.push_back(
-                {station, lang::StepAddress{station, sequence, step}, index + 1, pairing.kind});
+            differences.push_back({station, lang::StepAddress{station, sequence, step}, index + 1,
+                                   pairing.oldIndex + 1, pairing.kind});
         }
     }
     return differences;

@@ -15,7 +15,8 @@ namespace rs::review {
 struct NetworkDifference {
     int station = 0;
     lang::StepAddress step;
-    int number = 0; // in its step, from 1: in the new project, in the old one when removed
+    int number = 0;    // in its step, from 1: in the new project, in the old one when removed
+    int oldNumber = 0; // in the old project, when changed or removed; 0 when added
     Pairing::Kind change = Pairing::Changed;
 
     // "Pluto 00 S0.0_0 network 3: changed" (cli.md)

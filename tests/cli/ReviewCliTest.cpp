@@ -265,3 +265,25 @@ TEST(ValidateCli, BadInputIsRefusedWithoutWriting) {
     EXPECT_EQ(record.exitCode, 1);
     EXPECT_TRUE(record.errText().startsWith(broken + ":2:")) << record.errText();
 }
+
+TEST(DiffCli, PdfDrawsTheReviewAndKeepsTheExitStatus) {
+    QTemporaryDir dir;
+    const QString before = rs::test::writeFile(dir, "old.sps", kProject);
+    const QString after = rs::test::writeFile(
+        dir, "new.sps", replaced(kProject, "S0.0_0\n", "S0.0_0\nM0.5 = I0.5\n"));
+    const QString pdf = dir.filePath("review.pdf");
+    const ProgramRun run = runCli({"diff", "--no-io-warnings", before, after, "--pdf", pdf});
+    EXPECT_EQ(run.exitCode, 1) << run.errText();
+    const QByteArray bytes = rs::test::readFile(pdf);
+    EXPECT_TRUE(bytes.startsWith("%PDF-")) << bytes.left(16).toStdString();
+    // A title page and one page for the one network.
+    EXPECT_EQ(bytes.count("/Type /Page\n") + bytes.count("/Type /Page "), 2)
+        << bytes.count("/Type /Page");
+
+    const QString nowhere = dir.filePath("missing/review.pdf");
+    const ProgramRun unwritable =
+        runCli({"diff", "--no-io-warnings", before, after, "--pdf", nowhere});
+    EXPECT_EQ(unwritable.exitCode, 2);
+    EXPECT_TRUE(unwritable.errText().contains("cannot write " + nowhere)) << unwritable.errText();
+    EXPECT_FALSE(QFile::exists(nowhere));
+}
