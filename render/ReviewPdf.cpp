@@ -2,6 +2,7 @@
 #include "ReviewPdf.h"
 
 #include "NetworkPainter.h"
+#include "review/Alignment.h"
 
 #include <QPageLayout>
 #include <QPageSize>
@@ -18,6 +19,41 @@ namespace {
 // Page coordinates are points (1/72 inch) on A4 landscape.
 constexpr int kResolution = 72;
 constexpr qreal kMargin = 36;
+
+// An element as a reviewer compares it: what it is and what it acts on, not
+// what it is called.
+std::string elementKey(const ladder::ElementLayout& element) {
+    return std::to_string(static_cast<int>(element.kind)) + (element.negated ? "/" : " ") +
+           element.address.toStdString() + ' ' + element.text.toStdString();
+}
+
+std::vector<std::string> elementKeys(const ladder::NetworkLayout& layout) {
+    std::vector<std::string> keys;
+    for (const auto& element : layout.elements)
+        keys.push_back(elementKey(element));
+    return keys;
+}
+
+// The cells of the elements that differ between the two versions of a
+// network, lined up as the networks themselves are (review/Alignment.h).
+struct Marks {
+    std::vector<QRectF> before;
+    std::vector<QRectF> after;
+};
+
+Marks changedElements(const ladder::NetworkLayout& before, const ladder::NetworkLayout& after) {
+    Marks marks;
+    for (const review::Pairing& pairing : review::align(elementKeys(before), elementKeys(after))) {
+        if (pairing.kind == review::Pairing::Same)
+            continue;
+        if (pairing.oldIndex >= 0)
+            marks.before.push_back(
+                before.elements[static_cast<std::size_t>(pairing.oldIndex)].cell);
+        if (pairing.newIndex >= 0)
+            marks.after.push_back(after.elements[static_cast<std::size_t>(pairing.newIndex)].cell);
+    }
+    return marks;
+}
 
 class ReviewPages {
 public:
@@ -88,7 +124,8 @@ private:
     }
 
     void networkSide(const QRectF& box, const QString& label,
-                     const std::optional<ladder::NetworkLayout>& layout, const QColor& mark) {
+                     const std::optional<ladder::NetworkLayout>& layout, const QColor& mark,
+                     const std::vector<QRectF>& changed) {
         m_painter.save();
         m_painter.setPen(QPen(mark, 2));
         m_painter.drawRect(box);
@@ -109,6 +146,12 @@ private:
             m_painter.translate(inner.topLeft());
             m_painter.scale(scale, scale);
             paintNetwork(m_painter, *layout, {});
+            // Over the drawing (it paints its own background), see-through so
+            // the element stays readable.
+            m_painter.setPen(QPen(QColor(0xE0, 0x90, 0x00), 1.5));
+            m_painter.setBrush(QColor(0xFF, 0xC0, 0x40, 0x50));
+            for (const QRectF& cell : changed)
+                m_painter.drawRect(cell);
         }
         m_painter.restore();
     }
@@ -123,14 +166,13 @@ private:
         const QColor changed(0xC0, 0x80, 0x00), added(0x20, 0x90, 0x30), removed(0xC0, 0x20, 0x20),
             absent(0xA0, 0xA0, 0xA0);
         const bool both = network.before && network.after;
-        networkSide(QRectF(0, y, width, height), QStringLiteral("Before"), network.before,
-                    both             ? changed
-                    : network.before ? removed
-                                     : absent);
+        const Marks marks = both ? changedElements(*network.before, *network.after) : Marks{};
+        const QColor before = both ? changed : network.before ? removed : absent;
+        const QColor after = both ? changed : network.after ? added : absent;
+        networkSide(QRectF(0, y, width, height), QStringLiteral("Before"), network.before, before,
+                    marks.before);
         networkSide(QRectF(width + gap, y, width, height), QStringLiteral("After"), network.after,
-                    both            ? changed
-                    : network.after ? added
-                                    : absent);
+                    after, marks.after);
         footer();
     }
 

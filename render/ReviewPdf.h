@@ -11,7 +11,8 @@
 
 // A review of a change as a PDF a reviewer can print and sign: a first page
 // with the projects, their signatures and the verdict and fields to sign,
-// then each changed network, the old one beside the new one.
+// then each changed network, the old one beside the new one, the elements
+// that differ marked.
 namespace rs::render {
 
 struct ReviewNetwork {
