@@ -170,3 +170,24 @@ TEST(Signature, FormatKeepsEveryImageAndSignature) {
     }
     EXPECT_GT(compiledProjects, 20);
 }
+
+TEST(Signature, AReaderRefusesADamagedVariableList) {
+    // Bytes the encoder never writes must not read as an image that encodes
+    // to other bytes: a B-slave flag of 2 in an exported variable, with the
+    // image's checksum made to match.
+    compiler::UnitImage image;
+    image.exported.push_back({lang::AddressKind::Memory, 0, 5, -1, false});
+    std::vector<std::uint8_t> bytes = compiler::encodeImage(image);
+    ASSERT_TRUE(std::holds_alternative<compiler::UnitImage>(compiler::decodeImage(bytes)));
+    const std::size_t flag = bytes.size() - 4 - 4 - 6 + 3; // before: remanent count, then CRC
+    bytes[flag] = 2;
+    const std::uint32_t crc = compiler::crc32(
+        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size() - 4));
+    for (int i = 0; i < 4; ++i)
+        bytes[bytes.size() - 4 + static_cast<std::size_t>(i)] =
+            static_cast<std::uint8_t>(crc >> (8 * i));
+    const auto read = compiler::decodeImage(bytes);
+    ASSERT_TRUE(std::holds_alternative<compiler::ImageError>(read));
+    EXPECT_EQ(std::get<compiler::ImageError>(read).message,
+              "an exported or remanent variable is damaged");
+}
