@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "NetworkDiff.h"
 
+#include "EditorNetworks.h"
 #include "NetworkMeaning.h"
 #include "compiler/ImageCodec.h"
 #include "compiler/Signature.h"
@@ -42,7 +43,7 @@ StepNetworks networksByStep(const project::Project& project) {
         const int station = unit.station();
         for (const auto& step : unit.steps) {
             auto& texts = steps[{station, step.address.sequence, step.address.step}];
-            for (const auto& network : project::networksOf(step))
+            for (const auto& network : editorNetworks(step))
                 texts.push_back(networkMeaning(project.program, station, network));
         }
     }

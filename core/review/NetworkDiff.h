@@ -25,7 +25,7 @@ struct NetworkDifference {
 };
 
 // Every step of every unit that has code, by (station, sequence, step): its
-// networks in order, each as text to compare (networkMeaning, or a CRC-32 of
+// networks in order (editorNetworks), each as text to compare (networkMeaning, or a CRC-32 of
 // it as a baseline keeps them).
 using StepNetworks = std::map<std::tuple<int, int, int>, std::vector<std::string>>;
 

@@ -3,6 +3,7 @@
 #include "RandomProgram.h"
 #include "lang/NameResolver.h"
 #include "project/ProjectFile.h"
+#include "review/EditorNetworks.h"
 #include "review/NetworkMeaning.h"
 
 #include <gtest/gtest.h>
@@ -176,4 +177,25 @@ TEST(NetworkDiff, CommentsLayoutNamesAndTimerSpellingsAreNoChange) {
           replaced(kPress, "* Start", "* I0.1"), replaced(kPress, "TON(2s10)", "T(2s10)"),
           replaced(kPress, "S0.0_0\n", "S0.0_0\n; a new comment\n\n")})
         EXPECT_TRUE(review::networkDifferences(before, read(text)).empty()) << text;
+}
+
+TEST(NetworkDiff, ABlockInstanceIsOneNetworkAsTheEditorDrawsIt) {
+    const std::string text = "$name Blocks\n"
+                             "! id_pluto:00=000000000000\n"
+                             "! type_pluto:00=A20,is3\n"
+                             "! pgm_pluto:00\n"
+                             "S0.0_0\n"
+                             "Q0.2 = I0.0\n"
+                             ";@block Latch In=\"I0.1\" Out=\"M0.1\" lib=\"Mine\" version=\"1.0\"\n"
+                             "M0.1 = I0.1 + M0.1\n"
+                             "M0.2 = M0.1\n"
+                             ";@end\n"
+                             "Q0.3 = I0.4\n";
+    const auto before = read(text);
+    EXPECT_EQ(review::editorNetworks(before.program.units[0].steps[0]).size(), 3u);
+    EXPECT_EQ(described(review::networkDifferences(
+                  before, read(replaced(text, "M0.2 = M0.1", "M0.2 = /M0.1")))),
+              std::vector<std::string>{"Pluto 00 S0.0_0 network 2: changed"});
+    EXPECT_EQ(described(review::networkDifferences(before, read(replaced(text, "I0.4", "I0.5")))),
+              std::vector<std::string>{"Pluto 00 S0.0_0 network 3: changed"});
 }
