@@ -216,7 +216,7 @@ int runRoundtrip(const Invocation& invocation) {
 
 std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
     const bool draws = std::any_of(argv + 1, argv + argc, [](const char* argument) {
-        return !std::strcmp(argument, "ladder");
+        return !std::strcmp(argument, "ladder") || !std::strncmp(argument, "--pdf", 5);
     });
     if (!draws)
         return std::make_unique<QCoreApplication>(argc, argv);

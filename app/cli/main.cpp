@@ -2,6 +2,7 @@
 #include "BlocksVerbs.h"
 #include "Invocation.h"
 #include "LadderVerbs.h"
+#include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
 #include "TestVerb.h"
 #include "VarsVerbs.h"
@@ -90,6 +91,21 @@ const rs::cli::Verb kVerbs[] = {
     {"roundtrip",
      "roundtrip FILE.sps             every network to the ladder model and back; print the text",
      rs::cli::runRoundtrip},
+    {"signature",
+     "signature FILE.sps|FILE.hps    each unit's program signature, then the project's",
+     rs::cli::runSignature},
+    {"diff",
+     "diff OLD.sps NEW.sps [--pdf OUT.pdf]  what changed, unit by unit and network by\n"
+     "                                 network, and whether the behaviour did (exit 0 no, 1 yes)",
+     rs::cli::runDiff},
+    {"validate",
+     "validate FILE.sps --by NAME [--comment TEXT] [--date YYYY-MM-DD] -o OUT.sps\n"
+     "                                 record the project's current version as validated",
+     rs::cli::runValidate},
+    {"review",
+     "review FILE.sps                what changed since the project was validated (exit 0\n"
+     "                                 none in behaviour, 1 some)",
+     rs::cli::runReview},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -141,6 +157,19 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("blocks: the language of block descriptions: en (default), "
                                      "sv or de."),
                       QStringLiteral("LANG")});
+    parser.addOption({QStringLiteral("pdf"),
+                      QStringLiteral("diff: also draw each changed network old beside new, on "
+                                     "pages to sign."),
+                      QStringLiteral("OUT.pdf")});
+    parser.addOption({QStringLiteral("by"),
+                      QStringLiteral("validate: who reviewed and validated the project."),
+                      QStringLiteral("NAME")});
+    parser.addOption({QStringLiteral("comment"),
+                      QStringLiteral("validate: what the validation was (a report, a ticket)."),
+                      QStringLiteral("TEXT")});
+    parser.addOption({QStringLiteral("date"),
+                      QStringLiteral("validate: the date of the validation (default today)."),
+                      QStringLiteral("YYYY-MM-DD")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

@@ -139,8 +139,11 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics, bool expanded,
                                        const compiler::CheckOptions& options) {
-    if (lang::errorCount(readDiagnostics) > 0)
-        return {readDiagnostics, {}};
+    if (lang::errorCount(readDiagnostics) > 0) {
+        compiler::CompileResult failed;
+        failed.diagnostics = readDiagnostics;
+        return failed;
+    }
     compiler::CompileResult result = compiler::compile(project, options);
     result.diagnostics.insert(result.diagnostics.begin(), readDiagnostics.begin(),
                               readDiagnostics.end());

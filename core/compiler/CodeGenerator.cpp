@@ -23,6 +23,8 @@ public:
         m_image.unitType = static_cast<std::uint8_t>(m_unit.type->type);
         m_image.instructionSet = static_cast<std::uint8_t>(m_unit.instructionSet);
 
+        if (!m_unit.program)
+            return std::move(m_image);
         // Code runs in step order; statements keep their file-order numbers.
         std::map<const Statement*, std::uint32_t> numbers;
         std::map<std::pair<int, int>, const lang::Step*> ordered;

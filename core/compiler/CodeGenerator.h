@@ -7,7 +7,8 @@
 namespace rs::compiler {
 
 // Translates one unit's checked code into instructions: the PLC code first,
-// then each sequence by number, each step by number.
+// then each sequence by number, each step by number. A unit without code
+// gives an image without steps.
 UnitImage generateCode(const UnitSetup& unit);
 
 } // namespace rs::compiler

@@ -4,6 +4,8 @@
 #include "CodeGenerator.h"
 #include "ExportCheck.h"
 #include "ImageCodec.h"
+#include "ImageSetup.h"
+#include "Signature.h"
 #include "project/ProjectFile.h"
 
 #include <algorithm>
@@ -24,10 +26,21 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         return result;
     const std::string canonical = project::writeProject(project);
     const std::uint32_t sourceCrc = crc32(canonical);
-    for (const auto& [station, unit] : units) {
+    // The code is generated from the canonical text read back, so the line
+    // and column each instruction keeps are places in that text: formatting
+    // cannot move them, and they are places in the source an image includes.
+    const project::ProjectReadResult reread = project::readProject(canonical);
+    const project::Project& source = reread.ok() ? reread.project : project;
+    lang::Diagnostics again; // the same as above: the checks passed
+    UnitSetups sourceUnits = collectUnits(source.program, again);
+    collectExports(source, sourceUnits, again);
+    collectSystemCalls(source.program, sourceUnits, again);
+    for (const auto& [station, unit] : sourceUnits) {
+        UnitImage image = generateCode(unit);
+        addSetup(image, unit, source);
+        result.signatures.push_back({station, unitSignature(image)});
         if (!unit.program)
             continue;
-        UnitImage image = generateCode(unit);
         image.projectName = project.name();
         image.sourceCrc = sourceCrc;
         if (project.includeSource)
@@ -37,7 +50,10 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         const std::size_t size =
             encodedSizeBound(image) > kMaxUnitImageBytes ? encodeImage(image).size() : 0;
         if (size > kMaxUnitImageBytes) {
-            const lang::SourceLocation at = unit.program->header.location;
+            const auto original = units.find(station);
+            const lang::SourceLocation at = original != units.end() && original->second.program
+                                                ? original->second.program->header.location
+                                                : lang::SourceLocation{};
             result.diagnostics.push_back({lang::Severity::Error, at.line, at.column,
                                           "program of unit " + std::to_string(station) + " is " +
                                               std::to_string(size) + " bytes; a Pluto " +
@@ -47,8 +63,13 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         }
         result.images.push_back(std::move(image));
     }
+    result.projectSignature = projectSignature(result.signatures);
+    for (auto& image : result.images)
+        image.projectSignature = result.projectSignature;
     if (result.errors()) {
         result.images.clear();
+        result.signatures.clear();
+        result.projectSignature = 0;
         lang::sortByPlace(result.diagnostics);
     }
     return result;
@@ -56,8 +77,11 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
 
 CompileResult compileText(std::string_view text, const CheckOptions& options) {
     project::ProjectReadResult read = project::readProject(text);
-    if (!read.ok())
-        return {std::move(read.diagnostics), {}};
+    if (!read.ok()) {
+        CompileResult failed;
+        failed.diagnostics = std::move(read.diagnostics);
+        return failed;
+    }
     CompileResult result = compile(read.project, options);
     result.diagnostics.insert(result.diagnostics.begin(), read.diagnostics.begin(),
                               read.diagnostics.end());

@@ -3,6 +3,7 @@
 
 #include "Image.h"
 #include "ProgramCheck.h"
+#include "Signature.h"
 #include "project/Project.h"
 
 #include <string_view>
@@ -12,6 +13,10 @@ namespace rs::compiler {
 struct CompileResult {
     lang::Diagnostics diagnostics; // sorted by line and column
     std::vector<UnitImage> images; // by station; empty when there are errors
+    // Every unit's, by station, those without code too, and the project's
+    // (Signature.h); none when there are errors.
+    std::vector<UnitSignature> signatures;
+    std::uint32_t projectSignature = 0;
 
     int errors() const { return lang::errorCount(diagnostics); }
 };

@@ -99,9 +99,25 @@ struct StepCode {
     friend bool operator==(const StepCode&, const StepCode&) = default;
 };
 
+// How a unit's declaration sets up one terminal ("! I0.5,c_pulse,non_inv"):
+// part of what the unit does, as its code is.
+struct TerminalSetup {
+    // Each has its own numbering: I, Q and IQ terminals; the safety outputs
+    // (Q2, Q3); the IA inputs.
+    enum Group : std::uint8_t { Terminal, SafetyOutput, Analogue } group = Terminal;
+    lang::AddressKind kind = lang::AddressKind::Input; // Input, Output, InputOutput, AnalogInput
+    std::uint16_t number = 0;
+    std::vector<std::string> options; // sorted: their order in the declaration means nothing
+
+    friend bool operator==(const TerminalSetup&, const TerminalSetup&) = default;
+};
+
 struct UnitImage {
+    // Descriptive: they name the source, and change with its text.
     std::string projectName;
-    std::uint32_t sourceCrc = 0; // CRC-32 of the project's canonical text
+    std::uint32_t sourceCrc = 0;        // CRC-32 of the project's canonical text
+    std::uint32_t projectSignature = 0; // of every unit of the project (Signature.h)
+    // What decides the behaviour, which the unit's signature covers.
     std::uint8_t station = 0;
     std::uint8_t unitType = 0; // target::UnitType
     std::uint8_t instructionSet = 2;
@@ -109,6 +125,10 @@ struct UnitImage {
     std::uint16_t edges = 0;
     std::vector<StepCode> steps; // the PLC code first, then sequences by number and steps by number
     std::vector<Instruction> code;
+    std::vector<TerminalSetup> terminals; // by group, then number
+    std::vector<lang::Address> exported;  // the manual's [E], in address order
+    std::vector<lang::Address> remanent;  // the manual's [R] of this unit, in address order
+    // Descriptive again.
     std::string source; // the canonical project text when "include source" is set, else empty
 
     friend bool operator==(const UnitImage&, const UnitImage&) = default;

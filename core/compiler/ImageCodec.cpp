@@ -14,8 +14,9 @@ namespace rs::compiler {
 namespace {
 
 constexpr char kMagic[4] = {'R', 'S', 'I', 'M'};
-constexpr std::uint16_t kVersion = 1;
+constexpr std::uint16_t kVersion = 2;
 constexpr std::size_t kInstructionSize = 28;
+constexpr std::size_t kAddressSize = 6;
 constexpr std::uint8_t kHasSource = 1;
 // The included source was a project file, which no reader takes above this;
 // a damaged length must not make the reader allocate gigabytes.
@@ -93,6 +94,86 @@ bool uncompress(const std::string& packed, std::uint32_t length, std::string& ou
            size == length;
 }
 
+void writeAddress(Writer& w, const lang::Address& address) {
+    w.u8(static_cast<std::uint8_t>(address.kind));
+    w.u8(static_cast<std::uint8_t>(address.unit));
+    w.u8(static_cast<std::uint8_t>(static_cast<std::int8_t>(address.bit)));
+    w.u8(address.asiB ? 1 : 0);
+    w.u16(static_cast<std::uint16_t>(address.index));
+}
+
+// Nothing when the bytes are no address the encoder writes: an image must
+// read back to the bytes it was read from.
+std::optional<lang::Address> readAddress(Reader& r) {
+    lang::Address address;
+    address.kind = static_cast<lang::AddressKind>(r.u8());
+    address.unit = r.u8();
+    address.bit = static_cast<std::int8_t>(r.u8());
+    const std::uint8_t asiB = r.u8();
+    address.index = r.u16();
+    if (asiB > 1)
+        return std::nullopt;
+    address.asiB = asiB != 0;
+    return address;
+}
+
+// The parts of an instruction that decide what it does; where it came from
+// follows them in the image.
+void writeInstructionAction(Writer& w, const Instruction& in) {
+    w.u8(static_cast<std::uint8_t>(in.op));
+    w.u8(in.flags);
+    w.u8(in.aux);
+    w.u8(static_cast<std::uint8_t>(in.operand.kind));
+    w.u8(static_cast<std::uint8_t>(in.operand.unit));
+    w.u8(static_cast<std::uint8_t>(static_cast<std::int8_t>(in.operand.bit)));
+    w.u8(in.operand.asiB ? 1 : 0);
+    w.u8(0);
+    w.u16(static_cast<std::uint16_t>(in.operand.index));
+    w.u16(in.slot);
+    w.u32(static_cast<std::uint32_t>(in.constant));
+}
+
+void writeCounts(Writer& w, const UnitImage& image) {
+    w.u16(image.timers);
+    w.u16(image.edges);
+    w.u16(static_cast<std::uint16_t>(image.steps.size()));
+    for (const auto& step : image.steps) {
+        w.u8(step.sequence);
+        w.u8(step.step);
+        w.u32(step.first);
+        w.u32(step.count);
+    }
+}
+
+void writeSetup(Writer& w, const UnitImage& image) {
+    w.u32(static_cast<std::uint32_t>(image.terminals.size()));
+    for (const auto& terminal : image.terminals) {
+        w.u8(terminal.group);
+        w.u8(static_cast<std::uint8_t>(terminal.kind));
+        w.u16(terminal.number);
+        w.u8(static_cast<std::uint8_t>(terminal.options.size()));
+        for (const auto& option : terminal.options) {
+            w.u16(static_cast<std::uint16_t>(option.size()));
+            w.bytes(option);
+        }
+    }
+    for (const auto* addresses : {&image.exported, &image.remanent}) {
+        w.u32(static_cast<std::uint32_t>(addresses->size()));
+        for (const auto& address : *addresses)
+            writeAddress(w, address);
+    }
+}
+
+std::size_t setupSize(const UnitImage& image) {
+    std::size_t size = 3 * 4 + (image.exported.size() + image.remanent.size()) * kAddressSize;
+    for (const auto& terminal : image.terminals) {
+        size += 5;
+        for (const auto& option : terminal.options)
+            size += 2 + option.size();
+    }
+    return size;
+}
+
 // The engine runs a system instruction on the Arguments after it, as its
 // table says: a damaged image must not make it read past the code or take a
 // bit for a word.
@@ -132,10 +213,10 @@ std::uint32_t crc32(std::string_view bytes) {
 }
 
 std::size_t encodedSizeBound(const UnitImage& image) {
-    constexpr std::size_t kFixed = 4 + 2 + 4 * 1 + 4 + 2 + 3 * 2 + 4 + 4; // header, counts, crc
+    constexpr std::size_t kFixed = 4 + 2 + 4 * 1 + 4 + 4 + 2 + 3 * 2 + 4 + 4; // header, counts, crc
     constexpr std::size_t kStepSize = 1 + 1 + 4 + 4;
     std::size_t size = kFixed + image.projectName.size() + image.steps.size() * kStepSize +
-                       image.code.size() * kInstructionSize;
+                       image.code.size() * kInstructionSize + setupSize(image);
     if (!image.source.empty())
         size += 4 + 4 + ::compressBound(static_cast<uLong>(image.source.size()));
     return size;
@@ -150,35 +231,19 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
     w.u8(image.instructionSet);
     w.u8(image.source.empty() ? 0 : kHasSource);
     w.u32(image.sourceCrc);
+    w.u32(image.projectSignature);
     w.u16(static_cast<std::uint16_t>(image.projectName.size()));
     w.bytes(image.projectName);
-    w.u16(image.timers);
-    w.u16(image.edges);
-    w.u16(static_cast<std::uint16_t>(image.steps.size()));
-    for (const auto& step : image.steps) {
-        w.u8(step.sequence);
-        w.u8(step.step);
-        w.u32(step.first);
-        w.u32(step.count);
-    }
+    writeCounts(w, image);
     w.u32(static_cast<std::uint32_t>(image.code.size()));
     for (const auto& in : image.code) {
-        w.u8(static_cast<std::uint8_t>(in.op));
-        w.u8(in.flags);
-        w.u8(in.aux);
-        w.u8(static_cast<std::uint8_t>(in.operand.kind));
-        w.u8(static_cast<std::uint8_t>(in.operand.unit));
-        w.u8(static_cast<std::uint8_t>(static_cast<std::int8_t>(in.operand.bit)));
-        w.u8(in.operand.asiB ? 1 : 0);
-        w.u8(0);
-        w.u16(static_cast<std::uint16_t>(in.operand.index));
-        w.u16(in.slot);
-        w.u32(static_cast<std::uint32_t>(in.constant));
+        writeInstructionAction(w, in);
         w.u32(in.line);
         w.u16(in.column);
         w.u16(in.element);
         w.u32(in.statement);
     }
+    writeSetup(w, image);
     if (!image.source.empty()) {
         const std::string packed = compress(image.source);
         w.u32(static_cast<std::uint32_t>(image.source.size()));
@@ -216,6 +281,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
         image.instructionSet = r.u8();
         const std::uint8_t flags = r.u8();
         image.sourceCrc = r.u32();
+        image.projectSignature = r.u32();
         image.projectName = r.bytes(r.u16());
         image.timers = r.u16();
         image.edges = r.u16();
@@ -262,6 +328,33 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
         for (const auto& step : image.steps)
             if (step.first > image.code.size() || step.count > image.code.size() - step.first)
                 return ImageError{0, 0, "a step's code lies outside the image"};
+        const std::uint32_t terminals = r.u32();
+        if (terminals > end)
+            throw Truncated{};
+        image.terminals.resize(terminals);
+        for (auto& terminal : image.terminals) {
+            const std::uint8_t group = r.u8();
+            if (group > TerminalSetup::Analogue)
+                return ImageError{0, 0, "unknown terminal group " + std::to_string(int(group))};
+            terminal.group = static_cast<TerminalSetup::Group>(group);
+            terminal.kind = static_cast<lang::AddressKind>(r.u8());
+            terminal.number = r.u16();
+            terminal.options.resize(r.u8());
+            for (auto& option : terminal.options)
+                option = r.bytes(r.u16());
+        }
+        for (auto* addresses : {&image.exported, &image.remanent}) {
+            const std::uint32_t count = r.u32();
+            if (count > end / kAddressSize)
+                throw Truncated{};
+            addresses->resize(count);
+            for (auto& address : *addresses) {
+                const auto read = readAddress(r);
+                if (!read)
+                    return ImageError{0, 0, "an exported or remanent variable is damaged"};
+                address = *read;
+            }
+        }
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();
             if (length > kMaxIncludedSourceBytes)
@@ -276,6 +369,20 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
         return ImageError{0, 0, "the image is truncated"};
     }
     return image;
+}
+
+std::string behaviourBytes(const UnitImage& image) {
+    Writer w;
+    w.u8(image.station);
+    w.u8(image.unitType);
+    w.u8(image.instructionSet);
+    writeCounts(w, image);
+    w.u32(static_cast<std::uint32_t>(image.code.size()));
+    for (const auto& in : image.code)
+        writeInstructionAction(w, in);
+    writeSetup(w, image);
+    const auto& bytes = w.data();
+    return std::string(bytes.begin(), bytes.end());
 }
 
 std::string writeHps(const std::vector<UnitImage>& images) {

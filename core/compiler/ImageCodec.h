@@ -16,6 +16,13 @@ namespace rs::compiler {
 // always gives the same bytes.
 std::vector<std::uint8_t> encodeImage(const UnitImage& image);
 
+// The parts of an image that decide what the unit does, in the image's own
+// encoding: station, type, instruction set, counts, steps, each instruction
+// without where it came from, and the I/O setup, exported and remanent
+// variables. Names, the project CRC, the included source and each
+// instruction's line, column, statement and element are left out.
+std::string behaviourBytes(const UnitImage& image);
+
 struct ImageError {
     int line = 0; // in the .hps text; 0 when the bytes themselves are wrong
     int column = 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "Baseline.h"
 #include "lang/Ast.h"
 
 #include <map>
@@ -28,6 +29,8 @@ struct Project {
     // the project's folder. None named: every library found is used
     // (docs/block-libraries.md).
     std::vector<std::string> libraries;
+    // The version last marked as validated, if any (Baseline.h).
+    std::optional<Baseline> baseline;
 
     // The project name from "$name", empty when the file has none.
     std::string name() const;

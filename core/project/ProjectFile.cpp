@@ -2,6 +2,7 @@
 #include "ProjectFile.h"
 
 #include "Annotation.h"
+#include "Baseline.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
 #include "lang/NameResolver.h"
@@ -142,6 +143,17 @@ private:
                 m_project.exportedVariables.insert(word.address);
             return true;
         }
+        if (kind == "validated") {
+            Baseline baseline = m_project.baseline.value_or(Baseline{});
+            try {
+                readBaselineRecord(*annotation, baseline);
+            } catch (const BaselineRecordError& problem) {
+                error(at, problem.message);
+                return false;
+            }
+            m_project.baseline = std::move(baseline);
+            return true;
+        }
         if (kind != "network")
             warn(at, "unknown record '@" + kind + "'; kept as a comment");
         return false;
@@ -238,8 +250,13 @@ std::string writeProject(const Project& project) {
             record.attributes.emplace_back("include_source", "yes");
         for (const auto& library : project.libraries)
             record.attributes.emplace_back("library", library);
-        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at), commentLine(record));
+        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++), commentLine(record));
     }
+    // The validated version's records after it.
+    if (project.baseline)
+        for (const Annotation& record : baselineRecords(*project.baseline))
+            preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
+                            commentLine(record));
 
     // Unit records after the unit's id declaration, else first in its code.
     std::set<int> stations;

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ReviewVerbs.h"
+
+#include "ProjectLadder.h"
+#include "ReviewPdf.h"
+#include "Verbs.h"
+#include "compiler/ImageCodec.h"
+#include "compiler/Signature.h"
+#include "project/ProjectFile.h"
+#include "review/ProjectDiff.h"
+#include "review/Validation.h"
+
+#include <QDate>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace rs::cli {
+
+namespace {
+
+int usage(const QString& message) {
+    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
+    return UsageOrIo;
+}
+
+compiler::CheckOptions checkOptions(const Invocation& invocation) {
+    compiler::CheckOptions options;
+    options.warnUnconfiguredIo = !invocation.options.isSet(QStringLiteral("no-io-warnings"));
+    return options;
+}
+
+void printSignatures(const std::vector<compiler::UnitSignature>& units, std::uint32_t project) {
+    for (const auto& unit : units)
+        std::printf("Pluto %02d %s\n", unit.station, compiler::signatureText(unit.value).c_str());
+    std::printf("project %s\n", compiler::signatureText(project).c_str());
+}
+
+int imageSignature(const QString& path) {
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        return UsageOrIo;
+    }
+    const compiler::HpsResult read = compiler::readHps(file.text);
+    if (const auto* error = std::get_if<compiler::ImageError>(&read)) {
+        // A fault in the bytes themselves has no place in the text: the
+        // file's start stands for it.
+        std::fprintf(stderr, "%s:%d:%d: error: %s\n", qPrintable(path), std::max(error->line, 1),
+                     std::max(error->column, 1), error->message.c_str());
+        return Failed;
+    }
+    const auto& images = std::get<std::vector<compiler::UnitImage>>(read);
+    std::vector<compiler::UnitSignature> units;
+    for (const auto& image : images)
+        units.push_back({image.station, compiler::unitSignature(image)});
+    // Units without code have no image; the project figure the compiler
+    // stored covers them too.
+    printSignatures(units, images.front().projectSignature);
+    return Ok;
+}
+
+// The review of `diff` as pages to print and sign: the projects, their
+// signatures, the date, every line of the diff, then each network old beside
+// new.
+render::Review reviewPages(const QString& oldPath, const LoadedProject& before,
+                           const compiler::CompileResult& oldCompiled, const QString& newPath,
+                           const LoadedProject& after, const compiler::CompileResult& newCompiled,
+                           const review::ProjectDiff& diff) {
+    render::Review review;
+    review.title = QStringLiteral("Review of %1").arg(QFileInfo(newPath).fileName());
+    const auto signature = [](std::uint32_t value) {
+        return QString::fromStdString(compiler::signatureText(value));
+    };
+    review.summary << QStringLiteral("Old: %1, project signature %2")
+                          .arg(oldPath, signature(oldCompiled.projectSignature))
+                   << QStringLiteral("New: %1, project signature %2")
+                          .arg(newPath, signature(newCompiled.projectSignature));
+    std::map<int, std::pair<QString, QString>> units;
+    for (const auto& unit : oldCompiled.signatures)
+        units[unit.station].first = signature(unit.value);
+    for (const auto& unit : newCompiled.signatures)
+        units[unit.station].second = signature(unit.value);
+    for (const auto& [station, figures] : units)
+        review.summary << QStringLiteral("Pluto %1: %2 → %3")
+                              .arg(station, 2, 10, QLatin1Char('0'))
+                              .arg(figures.first.isEmpty() ? QStringLiteral("none") : figures.first,
+                                   figures.second.isEmpty() ? QStringLiteral("none")
+                                                            : figures.second);
+    review.summary << QStringLiteral("Compared on %1 by rungsmith-cli")
+                          .arg(QDate::currentDate().toString(Qt::ISODate));
+    for (const std::string& line : diff.lines())
+        review.changes << QString::fromStdString(line);
+    const ProjectLadder oldLadder(before);
+    const ProjectLadder newLadder(after);
+    for (const auto& network : diff.networks)
+        review.networks.push_back(
+            {QString::fromStdString(network.describe()),
+             network.oldNumber ? oldLadder.layout(network.step, network.oldNumber) : std::nullopt,
+             network.change == review::Pairing::Removed
+                 ? std::nullopt
+                 : newLadder.layout(network.step, network.number)});
+    return review;
+}
+
+} // namespace
+
+int runSignature(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("signature takes exactly one FILE.sps or FILE.hps"));
+    const QString path = invocation.arguments[0];
+    if (path.endsWith(QStringLiteral(".hps"), Qt::CaseInsensitive))
+        return imageSignature(path);
+    LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors())
+        return Failed;
+    printSignatures(result.signatures, result.projectSignature);
+    return Ok;
+}
+
+int runDiff(const Invocation& invocation) {
+    if (invocation.arguments.size() != 2)
+        return usage(QStringLiteral("diff takes OLD.sps and NEW.sps"));
+    const QString oldPath = invocation.arguments[0];
+    const QString newPath = invocation.arguments[1];
+    const LoadedProject before = loadProject(oldPath, libraryFiles(invocation));
+    if (before.status != Ok)
+        return before.status;
+    const LoadedProject after = loadProject(newPath, libraryFiles(invocation));
+    if (after.status != Ok)
+        return after.status;
+    const compiler::CompileResult oldCompiled = compiled(before, checkOptions(invocation));
+    const compiler::CompileResult newCompiled = compiled(after, checkOptions(invocation));
+    printDiagnostics(oldPath, oldCompiled.diagnostics);
+    printDiagnostics(newPath, newCompiled.diagnostics);
+    // Without both signatures nothing can be said about the behaviour, and a
+    // reviewer must not read silence as "no change".
+    bool errors = false;
+    for (const auto& [path, result] :
+         {std::pair{oldPath, oldCompiled.errors()}, std::pair{newPath, newCompiled.errors()}})
+        if (result) {
+            std::fprintf(stderr,
+                         "rungsmith-cli: %s has errors, so its behaviour cannot be compared\n",
+                         qPrintable(path));
+            errors = true;
+        }
+    if (errors)
+        return Failed;
+    const review::ProjectDiff diff =
+        review::diffProjects(before.project, oldCompiled, after.project, newCompiled);
+    for (const std::string& line : diff.lines())
+        std::printf("%s\n", line.c_str());
+    if (const QString pdf = invocation.options.value(QStringLiteral("pdf")); !pdf.isEmpty()) {
+        const QString error = render::writeReviewPdf(
+            pdf, reviewPages(oldPath, before, oldCompiled, newPath, after, newCompiled, diff));
+        if (!error.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+            return UsageOrIo;
+        }
+    }
+    return diff.behaviourChanged() ? Failed : Ok;
+}
+
+int runValidate(const Invocation& invocation) {
+    const QString by = invocation.options.value(QStringLiteral("by"));
+    const QString output = invocation.options.value(QStringLiteral("output"));
+    if (invocation.arguments.size() != 1 || by.trimmed().isEmpty() || output.isEmpty())
+        return usage(QStringLiteral("validate takes FILE.sps, --by NAME and -o OUT.sps"));
+    QDate date = QDate::currentDate();
+    if (invocation.options.isSet(QStringLiteral("date"))) {
+        date = QDate::fromString(invocation.options.value(QStringLiteral("date")), Qt::ISODate);
+        if (!date.isValid())
+            return usage(QStringLiteral("--date takes a date as YYYY-MM-DD"));
+    }
+    const QString path = invocation.arguments[0];
+    const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors())
+        return Failed;
+    // The file keeps its block instances as written; the baseline is of the
+    // project they expand to, which is what `review` compares with.
+    project::ProjectReadResult written = project::readProject(loaded.text);
+    written.project.baseline = review::validatedBaseline(
+        loaded.project, result, date.toString(Qt::ISODate).toStdString(), by.toStdString(),
+        invocation.options.value(QStringLiteral("comment")).toStdString());
+    const QString error = project::writeTextFile(output, project::writeProject(written.project));
+    if (!error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+        return UsageOrIo;
+    }
+    return Ok;
+}
+
+int runReview(const Invocation& invocation) {
+    if (invocation.arguments.size() != 1)
+        return usage(QStringLiteral("review takes exactly one FILE.sps"));
+    const QString path = invocation.arguments[0];
+    const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    if (loaded.status != Ok)
+        return loaded.status;
+    const compiler::CompileResult result = compiled(loaded, checkOptions(invocation));
+    printDiagnostics(path, result.diagnostics);
+    if (result.errors()) {
+        std::fprintf(stderr, "rungsmith-cli: %s has errors, so its behaviour cannot be compared\n",
+                     qPrintable(path));
+        return Failed;
+    }
+    if (!loaded.project.baseline) {
+        std::fprintf(stderr,
+                     "rungsmith-cli: %s has not been validated (it has no ;@validated record); "
+                     "mark it with rungsmith-cli validate\n",
+                     qPrintable(path));
+        return Failed;
+    }
+    const project::Baseline& baseline = *loaded.project.baseline;
+    std::printf("validated on %s by %s%s%s\n", lang::visibleText(baseline.date).c_str(),
+                lang::visibleText(baseline.by).c_str(), baseline.comment.empty() ? "" : ": ",
+                lang::visibleText(baseline.comment).c_str());
+    const review::ProjectDiff diff = review::changesSinceValidation(loaded.project, result);
+    for (const std::string& line : diff.lines())
+        std::printf("%s\n", line.c_str());
+    return diff.behaviourChanged() ? Failed : Ok;
+}
+
+} // namespace rs::cli
