@@ -19,7 +19,7 @@ namespace rs::render {
 PowerSnapshot powerSnapshot(const sim::UnitEngine& unit);
 
 // Keeps the power picture of one unit up to date scan after scan, reading
-// again only the statements whose conduction changed: a unit of thousands of
+// again only the statements whose conduction or element states changed: a unit of thousands of
 // statements costs little when little changes.
 class LivePower {
 public:
@@ -39,6 +39,7 @@ private:
 
     const sim::UnitEngine* m_unit = nullptr;
     std::vector<std::uint8_t> m_conduction; // as of the last update
+    std::vector<std::uint8_t> m_states;     // the elements' own states, likewise
     std::vector<Statement> m_statements;
 };
 

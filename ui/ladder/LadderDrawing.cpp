@@ -14,10 +14,12 @@ LadderDrawing drawingFor(const QPalette& palette) {
     if (dark) {
         style.powered = QColor(70, 210, 110);
         style.poweredFill = QColor(30, 80, 45);
+        style.closedFill = style.powered;
         style.nameInk = QColor(140, 180, 255);
         style.addressInk = QColor(190, 190, 190);
         style.commentInk = QColor(170, 170, 170);
     }
+    style.closedInk = style.background;
     drawing.selection = palette.color(QPalette::Highlight);
     drawing.markedNetwork = palette.color(QPalette::Highlight);
     drawing.markedNetwork.setAlpha(60);
