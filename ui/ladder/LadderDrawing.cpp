@@ -25,6 +25,7 @@ LadderDrawing drawingFor(const QPalette& palette) {
     drawing.markedNetwork.setAlpha(60);
     drawing.problem = dark ? QColor(255, 90, 90) : QColor(210, 0, 0);
     drawing.editing = dark ? QColor(255, 170, 60) : QColor(220, 120, 0);
+    drawing.explained = dark ? QColor(255, 120, 220) : QColor(190, 0, 140);
     return drawing;
 }
 

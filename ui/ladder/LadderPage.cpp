@@ -318,6 +318,7 @@ void LadderPage::setLiveState(const LadderLiveState* state) {
         updateTitle();
         placeItems();
     }
+    explainOutput(); // each scan may change the answer
     repaintItems();
 }
 
@@ -348,6 +349,8 @@ void LadderPage::setCursor(const LadderCursor& cursor) {
                 text = whole->second;
     }
     setMessage(text);
+    if (m_drawing.live)
+        explainOutput();
     ensureCursorVisible();
     repaintItems();
 }

@@ -259,6 +259,14 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
         }
         if (!drawing.live)
             continue;
+        // Why the selected output is off: the first element that blocks each
+        // path (dashed); why it is on: the path that holds it (dotted).
+        const bool blocking = drawing.blocking.count(key) > 0;
+        if (blocking || drawing.holding.count(key) > 0) {
+            painter.setPen(QPen(drawing.explained, 3, blocking ? Qt::DashLine : Qt::DotLine));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRoundedRect(cell.adjusted(3, 2, -3, -2), 5, 5);
+        }
         if (const auto note = drawing.live->annotations.find(key);
             note != drawing.live->annotations.end()) {
             // The value takes the place of the address or preset it tells
