@@ -154,6 +154,7 @@ void LadderPage::changeEvent(QEvent* event) {
     m_drawing.markedNetwork = colours.markedNetwork;
     m_drawing.problem = colours.problem;
     m_drawing.editing = colours.editing;
+    m_drawing.explained = colours.explained;
     m_view->setBackgroundBrush(m_drawing.style.background);
     drawElementIcons();
     repaintItems();

@@ -5,11 +5,14 @@
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
+#include "shell/Theme.h"
 #include "sim/SimulationMode.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QImage>
 #include <QLabel>
+#include <QScrollBar>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -177,4 +180,33 @@ TEST_F(LiveViewTest, AForcedOutputSaysSoAndWhatItsRungDoes) {
     EXPECT_TRUE(ladder()->outputExplanation().isEmpty());
     EXPECT_TRUE(ladder()->holdingElements().empty());
     EXPECT_TRUE(status().isEmpty());
+}
+
+// The pictures of docs/simulation.md, "Every element's own state": written
+// only when RUNGSMITH_PICTURES names a folder (light and dark; the greyscale
+// ones are made from them with ImageMagick's convert -colorspace Gray).
+TEST_F(LiveViewTest, PicturesForTheDocumentation) {
+    const QString folder = qEnvironmentVariable("RUNGSMITH_PICTURES");
+    if (folder.isEmpty())
+        GTEST_SKIP() << "set RUNGSMITH_PICTURES to a folder to write them";
+    // I0.2 closed with no power (P(I0.14) before it is open), I0.13 and M0.0
+    // open with power at their left, Q0.3 forced on with its rung off, and
+    // why Q0.2 is off.
+    set("I0.12", 1);
+    set("I0.2", 1);
+    session()->force(addressOf("Q0.3"), 1);
+    singleScan();
+    clickOutput("Q0.2");
+    window.resize(1000, 1040);
+    for (const auto& [theme, name] : {std::pair{ui::Preferences::Theme::Light, "light"},
+                                      std::pair{ui::Preferences::Theme::Dark, "dark"}}) {
+        ui::applyTheme(theme);
+        QApplication::processEvents();
+        ladder()->view()->verticalScrollBar()->setValue(0);
+        ladder()->view()->horizontalScrollBar()->setValue(0);
+        QApplication::processEvents();
+        const QString path = folder + QStringLiteral("/sim-states-%1.png").arg(QLatin1String(name));
+        EXPECT_TRUE(ladder()->grab().save(path)) << path.toStdString();
+    }
+    ui::applyTheme(ui::Preferences::Theme::Light);
 }
