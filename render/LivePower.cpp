@@ -67,6 +67,14 @@ void LivePower::rebuild(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
         ++m_statements.back().count;
     }
     snapshot = powerSnapshot(unit);
+    m_snapshot = &snapshot;
+    for (Statement& statement : m_statements) {
+        const auto found = snapshot.statements.find(statement.number);
+        statement.power =
+            statement.number == compiler::kNoStatement || found == snapshot.statements.end()
+                ? nullptr
+                : &found->second;
+    }
     const auto& conduction = unit.conduction();
     m_conduction.resize(conduction.size());
     std::memcpy(m_conduction.data(), conduction.data(), conduction.size());
@@ -74,7 +82,8 @@ void LivePower::rebuild(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
 }
 
 void LivePower::update(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
-    if (&unit != m_unit || m_conduction.size() != unit.conduction().size()) {
+    if (&unit != m_unit || &snapshot != m_snapshot ||
+        m_conduction.size() != unit.conduction().size()) {
         rebuild(snapshot, unit);
         return;
     }
@@ -91,21 +100,33 @@ void LivePower::update(PowerSnapshot& snapshot, const sim::UnitEngine& unit) {
     };
     std::size_t marks = nextDifference(before, now, 0);
     std::size_t states = nextDifference(beforeStates, nowStates, 0);
+    // Differences come in the order of the code, so the statement they are in
+    // is found walking on from the previous one.
+    auto statement = m_statements.begin();
     while (true) {
         const std::size_t differs = std::min(marks, states);
         if (differs == size)
             break;
-        const auto statement = std::prev(std::upper_bound(
-            m_statements.begin(), m_statements.end(), differs,
-            [](std::size_t index, const Statement& s) { return index < s.first; }));
+        while (std::next(statement) != m_statements.end() && std::next(statement)->first <= differs)
+            ++statement;
         std::memcpy(before + statement->first, now + statement->first, statement->count);
         std::memcpy(beforeStates + statement->first, nowStates + statement->first,
                     statement->count);
-        StatementPower power;
-        if (statementPower(unit, statement->first, statement->count, power))
-            snapshot.statements[statement->number] = std::move(power);
-        else
+        // A statement runs whole or not at all. One that ran is brought up to
+        // date in place: every element's last instruction sets it again, and
+        // nothing is allocated unless what conducts changed.
+        if (now[statement->first] != static_cast<std::uint8_t>(sim::Conduction::NotRun)) {
+            StatementPower* power = statement->power;
+            if (!power) {
+                power = &snapshot.statements[statement->number];
+                if (statement->number != compiler::kNoStatement)
+                    statement->power = power;
+            }
+            statementPower(unit, statement->first, statement->count, *power);
+        } else {
             snapshot.statements.erase(statement->number);
+            statement->power = nullptr;
+        }
         const std::size_t at = statement->first + statement->count;
         if (marks < at)
             marks = nextDifference(before, now, at);
