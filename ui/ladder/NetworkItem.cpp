@@ -203,9 +203,18 @@ void NetworkItem::paintSketch(QPainter& painter) const {
             painter.setPen(QPen(powered ? style.powered : style.ink, wire.rail ? 3 : 0));
             painter.drawLine(wire.line);
         }
+        // Live, an element that is open (or an output that is 0) is only
+        // outlined, as it is hollow at full size.
         for (const auto& element : m_layout.elements) {
             const bool powered = power && power->conducts(element.statement, element.element);
-            painter.fillRect(element.symbolRect, powered ? style.powered : style.ink);
+            const QColor& colour = powered ? style.powered : style.ink;
+            if (!power || power->closed(element.statement, element.element)) {
+                painter.fillRect(element.symbolRect, colour);
+            } else {
+                painter.setPen(QPen(colour, 0));
+                painter.setBrush(Qt::NoBrush);
+                painter.drawRect(element.symbolRect);
+            }
         }
     }
     painter.restore();
