@@ -210,3 +210,27 @@ TEST_F(LiveViewTest, PicturesForTheDocumentation) {
     }
     ui::applyTheme(ui::Preferences::Theme::Light);
 }
+
+// A timer and a comparison that block their rungs are named as such.
+TEST_F(LiveViewTest, ATimerOrComparisonThatBlocksSaysSo) {
+    action("simulateAction")->trigger(); // leave the example's simulation
+    const QString path =
+        writeFile(QStringLiteral("boxes.sps"),
+                  "! id_pluto:00=000000000000\n! type_pluto:00=A20,is3\n! pgm_pluto:00\nS0.0_0\n"
+                  "Q0.10 = I0.2 * TON(5s10)\nM0.0 = I0.0 * (R0.1 > 4)\n");
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    window.simulation()->session()->setUpdateInterval(1);
+    action("simulateAction")->trigger();
+    ASSERT_TRUE(ladder()->isLive());
+    set("I0.2", 1);
+    set("I0.0", 1);
+    singleScan();
+    clickOutput("Q0.10");
+    EXPECT_EQ(ladder()->outputExplanation(), QStringLiteral("Q0.10 is off: TON 5s10 is off"));
+    clickOutput("M0.0");
+    EXPECT_EQ(ladder()->outputExplanation(), QStringLiteral("M0.0 is off: R0.1 > 4 is false"));
+    set("R0.1", 5); // a register: forced
+    singleScan();
+    EXPECT_EQ(ladder()->outputExplanation(), QStringLiteral("M0.0 is on through I0.0, R0.1 > 4"));
+}
