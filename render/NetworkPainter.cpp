@@ -2,6 +2,7 @@
 #include "NetworkPainter.h"
 
 #include "ladder/ElementVocabulary.h"
+#include "sim/Conduction.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -20,6 +21,7 @@ using ladder::infoOf;
 using ladder::Shape;
 
 constexpr qreal kBubbleRadius = 4; // the circle that negates a box's output
+constexpr qreal kCountingBar = 5;  // along the foot of a timer that is counting
 
 // A font with its metrics, made once per network rather than once per label.
 struct TextFont {
@@ -72,28 +74,35 @@ private:
         m_painter.drawLine(wire.line);
     }
 
+    // The symbol's outline says whether power leaves it (the wire's colour
+    // and weight); its fill says the element's own state, whatever power
+    // reaches it: a closed contact, a true comparison or timer, an output
+    // whose variable is 1 is filled; a counting timer has a bar along its
+    // foot.
     void drawElement(const ElementLayout& e) {
         const bool powered = m_power && m_power->conducts(e.statement, e.element);
-        QPen pen = m_style.wirePen(powered);
-        m_painter.setPen(pen);
-        m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
+        const std::uint8_t state = m_power ? m_power->state(e.statement, e.element) : 0;
+        const bool closed = (state & sim::ElementState::Closed) != 0;
+        m_painter.setPen(m_style.wirePen(powered));
+        m_painter.setBrush(closed ? QBrush(m_style.closedFill) : QBrush(m_style.background));
         const QRectF& r = e.symbolRect;
         const ElementKindInfo& info = infoOf(e.kind);
         const QString mark = QString::fromUtf8(info.mark.data(), qsizetype(info.mark.size()));
+        const QColor& ink = closed ? m_style.closedInk : m_style.ink;
         switch (info.shape) {
         case Shape::Contact:
             // An inverted edge is written as the text writes it, "/P": a slash
             // through the letter would hide it.
             if (mark == QLatin1String("/"))
-                contact(r, {}, true);
+                contact(r, {}, true, ink);
             else
-                contact(r, mark, false);
+                contact(r, mark, false, ink);
             break;
         case Shape::Coil:
-            coil(r, mark);
+            coil(r, mark, ink);
             break;
         case Shape::Box:
-            box(r, e.text, e.negated);
+            box(r, e.text, e.negated, ink, (state & sim::ElementState::Running) != 0);
             break;
         }
         label(e.nameRect, e.name, m_style.nameInk, m_nameFont);
@@ -133,7 +142,7 @@ private:
         if (pin.power && !pin.contactRect.isEmpty()) {
             m_painter.setPen(m_style.wirePen(powered));
             m_painter.setBrush(powered ? QBrush(m_style.poweredFill) : QBrush(m_style.background));
-            contact(pin.contactRect, {}, false);
+            contact(pin.contactRect, {}, false, m_style.ink);
         }
         m_painter.setPen(m_style.ink);
         drawText(m_addressFont, pin.pinRect,
@@ -151,8 +160,9 @@ private:
                  operand, Qt::ElideMiddle);
     }
 
-    // -| |-, with a slash when normally closed, or the edge's letter.
-    void contact(const QRectF& r, const QString& letter, bool slashed) {
+    // -| |-, with a slash when normally closed, or the edge's letter; the
+    // painter's brush fills it, the letter and slash are in `ink`.
+    void contact(const QRectF& r, const QString& letter, bool slashed, const QColor& ink) {
         const QPen pen = m_painter.pen();
         m_painter.setPen(Qt::NoPen);
         m_painter.drawRect(r);
@@ -160,14 +170,18 @@ private:
         m_painter.drawLine(r.topLeft(), r.bottomLeft());
         m_painter.drawLine(r.topRight(), r.bottomRight());
         if (!letter.isEmpty())
-            symbolText(r, letter);
-        if (slashed)
+            symbolText(r, letter, ink);
+        if (slashed) {
+            QPen slash = pen;
+            slash.setColor(ink == m_style.ink ? pen.color() : ink);
+            m_painter.setPen(slash);
             m_painter.drawLine(QPointF(r.left() + 2, r.bottom() - 2),
                                QPointF(r.right() - 2, r.top() + 2));
+        }
     }
 
     // -( )-, with the letter of what the coil does.
-    void coil(const QRectF& r, const QString& letter) {
+    void coil(const QRectF& r, const QString& letter, const QColor& ink) {
         const QPen pen = m_painter.pen();
         m_painter.setPen(Qt::NoPen);
         m_painter.drawEllipse(r);
@@ -175,19 +189,27 @@ private:
         m_painter.drawArc(r, 120 * 16, 120 * 16);
         m_painter.drawArc(r, -60 * 16, 120 * 16);
         if (!letter.isEmpty())
-            symbolText(r, letter);
+            symbolText(r, letter, ink);
     }
 
-    void box(const QRectF& r, const QString& text, bool negated) {
+    void box(const QRectF& r, const QString& text, bool negated, const QColor& ink, bool counting) {
         m_painter.drawRect(r);
-        if (negated)
+        if (counting) {
+            const qreal width = m_painter.pen().widthF();
+            m_painter.fillRect(QRectF(r.left() + width / 2, r.bottom() - width / 2 - kCountingBar,
+                                      r.width() - width, kCountingBar),
+                               m_style.closedFill);
+        }
+        if (negated) {
+            m_painter.setBrush(m_style.background); // the bubble negates what the box says
             m_painter.drawEllipse(QPointF(r.right() + kBubbleRadius, r.center().y()), kBubbleRadius,
                                   kBubbleRadius);
-        symbolText(r.adjusted(3, 0, -3, 0), text);
+        }
+        symbolText(r.adjusted(3, 0, -3, 0), text, ink);
     }
 
-    void symbolText(const QRectF& r, const QString& text) {
-        m_painter.setPen(m_style.ink);
+    void symbolText(const QRectF& r, const QString& text, const QColor& ink) {
+        m_painter.setPen(ink);
         drawText(m_symbolFont, r, Qt::AlignCenter, text, Qt::ElideRight);
     }
 

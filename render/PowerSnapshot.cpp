@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "PowerSnapshot.h"
 
+#include "sim/Conduction.h"
+
 #include <algorithm>
 
 namespace rs::render {
@@ -16,6 +18,21 @@ bool PowerSnapshot::conducts(std::uint32_t statement, std::uint16_t element) con
     if (element == 0)
         return found->second.energised;
     return found->second.conducting.count(element) != 0;
+}
+
+std::uint8_t PowerSnapshot::state(std::uint32_t statement, std::uint16_t element) const {
+    auto found = statements.find(statement);
+    if (found == statements.end() || element >= found->second.states.size())
+        return 0;
+    return found->second.states[element];
+}
+
+bool PowerSnapshot::closed(std::uint32_t statement, std::uint16_t element) const {
+    return (state(statement, element) & sim::ElementState::Closed) != 0;
+}
+
+bool PowerSnapshot::running(std::uint32_t statement, std::uint16_t element) const {
+    return (state(statement, element) & sim::ElementState::Running) != 0;
 }
 
 bool PowerSnapshot::powers(const ladder::PowerFeed& feed) const {

@@ -104,6 +104,10 @@ struct UnitEngine::Tiers {
     engine::FastInterpreter fast;
     std::unique_ptr<engine::ScanMachineCode> machineCode; // or null: the fast interpreter
     std::vector<Conduction> conduction;
+    std::vector<std::uint8_t> states; // ElementState bits, with the conduction
+    // The bit outputs (=, S, R, T) by instruction, each with its variable as
+    // the program reads it (a forced one's value, not the sink its writes go to).
+    std::vector<std::pair<std::uint32_t, BitRef>> outputBits;
     ScanState scanStart;    // the state the last scan's steps started from
     bool replayDue = false; // conduction is not yet that of the last scan
     bool eagerConduction = false;
@@ -126,6 +130,14 @@ UnitEngine::UnitEngine(compiler::UnitImage image, const Bus& published)
     t.unit.edges.resize(t.image.edges);
     t.unit.timers.resize(t.image.timers);
     t.conduction.assign(t.image.code.size(), Conduction::NotRun);
+    t.states.assign(t.image.code.size(), 0);
+    for (std::size_t i = 0; i < t.image.code.size(); ++i) {
+        const compiler::Op op = t.image.code[i].op;
+        if (op == compiler::Op::Coil || op == compiler::Op::Set || op == compiler::Op::Reset ||
+            op == compiler::Op::Toggle)
+            t.outputBits.emplace_back(static_cast<std::uint32_t>(i),
+                                      bitRef(t.unit.memory, t.image.code[i].operand, false));
+    }
     t.present[t.image.station % 32] = true;
     decode();
     powerOn();
@@ -192,6 +204,7 @@ void UnitEngine::powerOn(const std::vector<lang::Address>& keep) {
     std::fill(t.unit.edges.begin(), t.unit.edges.end(), engine::EdgeState{});
     std::fill(t.unit.timers.begin(), t.unit.timers.end(), Timer{});
     std::fill(t.conduction.begin(), t.conduction.end(), Conduction::NotRun);
+    std::fill(t.states.begin(), t.states.end(), std::uint8_t{0});
     t.ranSteps.clear();
     t.replayDue = false;
     t.unit.scan = 0;
@@ -279,6 +292,7 @@ void UnitEngine::runSteps(bool marking, int cycleMs) {
         for (int index : t.ranSteps) {
             const engine::StepRun& step = unit.steps[static_cast<std::size_t>(index)];
             std::fill_n(t.conduction.begin() + step.first, step.count, Conduction::NotRun);
+            std::fill_n(t.states.begin() + step.first, step.count, std::uint8_t{0});
         }
         t.ranSteps.clear();
     }
@@ -299,7 +313,8 @@ void UnitEngine::runSteps(bool marking, int cycleMs) {
         sequence.stepNew = false;
         const int stepIndex = sequence.stepIndex[static_cast<std::size_t>(sequence.active)];
         if (marking) {
-            engine::runMarking(unit, stepIndex, pendingJump, cycleMs, t.conduction.data());
+            engine::runMarking(unit, stepIndex, pendingJump, cycleMs, t.conduction.data(),
+                               t.states.data());
             t.ranSteps.push_back(stepIndex);
         } else if (t.machineCode) {
             engine::FastContext context = engine::startContext(unit, pendingJump, cycleMs);
@@ -313,6 +328,10 @@ void UnitEngine::runSteps(bool marking, int cycleMs) {
             sequence.stepNew = true;
         }
     }
+    if (marking) // a bit output shows its variable as the scan left it
+        for (const auto& [index, bit] : t.outputBits)
+            if (t.conduction[index] != Conduction::NotRun)
+                t.states[index] = bit.read() ? ElementState::Closed : 0;
 }
 
 // The engine is deterministic, so running the last scan's steps again from the
@@ -333,6 +352,11 @@ const std::vector<Conduction>& UnitEngine::conduction() const {
     if (m_tiers->replayDue) // engines are only ever created non-const (Simulation owns them)
         const_cast<UnitEngine*>(this)->replay();
     return m_tiers->conduction;
+}
+
+const std::vector<std::uint8_t>& UnitEngine::elementStates() const {
+    conduction(); // marks both
+    return m_tiers->states;
 }
 
 void UnitEngine::setEagerConduction(bool eager) {

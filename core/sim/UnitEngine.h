@@ -45,6 +45,12 @@ public:
     // the state the scan started with (docs/simulator.md, "What a scan
     // reports"), so, like scan(), it must not run alongside another call.
     const std::vector<Conduction>& conduction() const;
+    // The state of each instruction's element on its own in the last scan,
+    // whatever power reached it (ElementState bits, indexed like the code): a
+    // contact closed, a comparison true, a timer's output on or counting, a
+    // bit output's variable 1 after the scan. Marked with the conduction, so
+    // the same rules apply.
+    const std::vector<std::uint8_t>& elementStates() const;
     // Marks conduction while scanning instead, for callers that read it after
     // every scan.
     void setEagerConduction(bool eager);

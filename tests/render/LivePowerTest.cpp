@@ -42,6 +42,27 @@ TEST(LivePower, TheSnapshotSaysWhatTheScanConducted) {
     EXPECT_TRUE(after.conducts(0, 0)); // Q0.1 driven
 }
 
+TEST(LivePower, TheSnapshotSaysEachElementsOwnState) {
+    sim::Simulation simulation = twoSteps();
+    simulation.set(addressOf("I0.3"), 1);
+    simulation.scan();
+    render::PowerSnapshot snapshot = render::powerSnapshot(*simulation.unit(0));
+    EXPECT_FALSE(snapshot.closed(0, 2)); // I0.2 is 0
+    EXPECT_FALSE(snapshot.closed(0, 3)); // /I0.3 with I0.3 1: open
+    simulation.set(addressOf("I0.3"), 0);
+    simulation.scan();
+    snapshot = render::powerSnapshot(*simulation.unit(0));
+    EXPECT_TRUE(snapshot.closed(0, 3)) << "closed, though I0.2 before it lets no power through";
+    EXPECT_FALSE(snapshot.conducts(0, 3));
+
+    simulation.force(addressOf("Q0.1"), 1);
+    simulation.scan();
+    snapshot = render::powerSnapshot(*simulation.unit(0));
+    EXPECT_TRUE(snapshot.closed(0, 0)) << "forced on";
+    EXPECT_FALSE(snapshot.conducts(0, 0)) << "its rung is off";
+    EXPECT_FALSE(snapshot.closed(3, 0)) << "a statement that did not run has no state";
+}
+
 TEST(LivePower, AStatementOfAStepThatIsNotActiveDidNotRun) {
     sim::Simulation simulation = twoSteps();
     simulation.scan();
@@ -57,7 +78,8 @@ TEST(LivePower, KeptUpToDateEqualsOneTakenAfresh) {
     render::PowerSnapshot kept;
     simulation.scan();
     live.update(kept, *simulation.unit(0));
-    for (const char* input : {"I0.2", "I0.4", "I0.3", "I0.5", "I0.2", "I0.4"}) {
+    // I0.3 alone changes only the state of /I0.3: no power reaches it.
+    for (const char* input : {"I0.3", "I0.3", "I0.2", "I0.4", "I0.3", "I0.5", "I0.2", "I0.4"}) {
         const lang::Address address = addressOf(input);
         simulation.set(address, 1 - simulation.value(address));
         simulation.scan();
@@ -68,6 +90,7 @@ TEST(LivePower, KeptUpToDateEqualsOneTakenAfresh) {
             ASSERT_TRUE(kept.ran(statement)) << input << " " << statement;
             EXPECT_EQ(kept.statements.at(statement).conducting, power.conducting) << input;
             EXPECT_EQ(kept.statements.at(statement).energised, power.energised) << input;
+            EXPECT_EQ(kept.statements.at(statement).states, power.states) << input;
         }
     }
     EXPECT_EQ(simulation.unit(0)->activeStep(1), 1); // the run went through both steps

@@ -3,6 +3,7 @@
 #include "NetworkPicture.h"
 #include "StepText.h"
 #include "ladder/UnitLadder.h"
+#include "sim/Conduction.h"
 
 #include <QFontMetricsF>
 #include <QSvgRenderer>
@@ -108,15 +109,122 @@ TEST_F(Conduction, AnEnergisedOutputIsDrawnPoweredAndAStatementThatDidNotRunIsNo
     const ElementLayout& coil = element(layout, 0);
     const int x = static_cast<int>(coil.symbolRect.left()) + 1;
     PowerSnapshot energised;
-    energised.statements[0] = {{2, 3}, true};
+    energised.statements[0] = {{2, 3}, true, {}};
     EXPECT_TRUE(isPoweredColour(
         strokeAt(rs::render::networkImage(layout, style, &energised), x, wireY, true).colour));
 
     PowerSnapshot otherStatement; // statement 0 did not run: its step was not active
-    otherStatement.statements[1] = {{1, 2, 3}, true};
+    otherStatement.statements[1] = {{1, 2, 3}, true, {}};
     const QImage idle = rs::render::networkImage(layout, style, &otherStatement);
     EXPECT_TRUE(isInk(strokeAt(idle, before(2), wireY).colour));
     EXPECT_TRUE(isInk(strokeAt(idle, x, wireY, true).colour));
+}
+
+// Each element shows its own state apart from the power: filled when closed
+// (a contact), true (a box) or 1 (an output's variable), whatever reaches it.
+class ElementStates : public Conduction {
+protected:
+    static constexpr std::uint8_t kClosed = rs::sim::ElementState::Closed;
+
+    // The fill at the middle of an element's symbol, between its bars.
+    QColor fillOf(const QImage& image, std::uint16_t number) const {
+        const QPointF c = element(layout, number).symbolRect.center();
+        return image.pixelColor(static_cast<int>(c.x()), static_cast<int>(c.y()) + 4);
+    }
+    bool filled(const QImage& image, std::uint16_t number) const {
+        return fillOf(image, number) == style.closedFill;
+    }
+};
+
+TEST_F(ElementStates, AClosedContactWithNoPowerArrivingIsDrawnClosed) {
+    PowerSnapshot power; // I0.0 open, I0.1 closed: no power reaches I0.1
+    power.statements[0].states = {0, 0, 0, kClosed};
+    const QImage live = rs::render::networkImage(layout, style, &power);
+    EXPECT_FALSE(filled(live, 2));
+    EXPECT_TRUE(filled(live, 3)) << "closed though no power reaches it";
+    const Stroke left = strokeAt(live, before(3), wireY);
+    EXPECT_TRUE(isInk(left.colour)) << "no power on its left wire";
+    EXPECT_EQ(left.thickness,
+              strokeAt(rs::render::networkImage(layout, style), before(3), wireY).thickness);
+    EXPECT_TRUE(isInk(strokeAt(live, after(3), wireY).colour));
+}
+
+TEST_F(ElementStates, AnOpenContactReceivingPowerIsDrawnOpenWithPowerOnItsLeft) {
+    PowerSnapshot power; // I0.0 closed and conducting, I0.1 open
+    power.statements[0].conducting = {2};
+    power.statements[0].states = {0, 0, kClosed, 0};
+    const QImage live = rs::render::networkImage(layout, style, &power);
+    EXPECT_TRUE(filled(live, 2));
+    EXPECT_EQ(fillOf(live, 3), style.background) << "open: hollow";
+    const Stroke left = strokeAt(live, before(3), wireY);
+    EXPECT_TRUE(isPoweredColour(left.colour));
+    EXPECT_GE(left.thickness, 4) << "power on its left, heavy";
+    EXPECT_TRUE(isInk(strokeAt(live, after(3), wireY).colour));
+}
+
+TEST_F(ElementStates, AnOutputWhoseVariableIsOneIsDrawnOnWithItsRungOff) {
+    PowerSnapshot power; // Q0.1 forced to 1 (or set elsewhere); nothing conducts
+    power.statements[0].states = {kClosed, 0, 0, 0};
+    const QImage live = rs::render::networkImage(layout, style, &power);
+    EXPECT_TRUE(filled(live, 0));
+    const ElementLayout& coil = element(layout, 0);
+    EXPECT_TRUE(isInk(strokeAt(live, static_cast<int>(coil.symbolRect.left()) - 6, wireY).colour))
+        << "the rung is off";
+
+    PowerSnapshot off; // driven, but forced to 0: power, and the coil hollow
+    off.statements[0] = {{1, 2, 3}, true, {0, 0, kClosed, kClosed}};
+    const QImage forcedOff = rs::render::networkImage(layout, style, &off);
+    EXPECT_EQ(fillOf(forcedOff, 0), style.background);
+    EXPECT_TRUE(isPoweredColour(
+        strokeAt(forcedOff, static_cast<int>(coil.symbolRect.left()) - 6, wireY).colour));
+}
+
+// In greyscale a filled symbol stands apart from a hollow one, and a powered
+// wire from an unpowered one by its weight; in the dark theme's colours too.
+TEST_F(ElementStates, StatesReadInGreyscale) {
+    for (const bool dark : {false, true}) {
+        LadderStyle look = style;
+        if (dark) {
+            look.background = QColor(30, 30, 30);
+            look.ink = QColor(220, 220, 220);
+            look.powered = QColor(70, 210, 110);
+            look.closedFill = look.powered;
+            look.closedInk = look.background;
+        }
+        PowerSnapshot power;
+        power.statements[0].conducting = {2};
+        power.statements[0].states = {0, 0, kClosed, 0};
+        QImage grey = rs::render::networkImage(layout, look, &power)
+                          .convertToFormat(QImage::Format_Grayscale8);
+        const auto greyAt = [&](QPointF p) {
+            return qGray(grey.pixel(static_cast<int>(p.x()), static_cast<int>(p.y()) + 4));
+        };
+        const int closedGrey = greyAt(element(layout, 2).symbolRect.center());
+        const int openGrey = greyAt(element(layout, 3).symbolRect.center());
+        EXPECT_GE(std::abs(closedGrey - openGrey), 80) << "dark " << dark;
+    }
+}
+
+TEST(ElementStatesOfBoxes, ATrueComparisonIsFilledAndACountingTimerHasABar) {
+    const NetworkLayout layout = layOut("Q0.1 = (R0.1 > 4) * TON(2s00)\n");
+    const LadderStyle style{};
+    PowerSnapshot power;
+    power.statements[0].states = {0, 0, rs::sim::ElementState::Closed,
+                                  rs::sim::ElementState::Running};
+    const QImage live = rs::render::networkImage(layout, style, &power);
+    const QRectF comparison = element(layout, 2).symbolRect;
+    const QRectF timer = element(layout, 3).symbolRect;
+    EXPECT_EQ(live.pixelColor(static_cast<int>(comparison.left()) + 4,
+                              static_cast<int>(comparison.top()) + 4),
+              style.closedFill);
+    EXPECT_EQ(
+        live.pixelColor(static_cast<int>(timer.left()) + 4, static_cast<int>(timer.top()) + 4),
+        style.background)
+        << "the timer's output is off";
+    EXPECT_EQ(
+        live.pixelColor(static_cast<int>(timer.center().x()), static_cast<int>(timer.bottom()) - 4),
+        style.closedFill)
+        << "it counts";
 }
 
 TEST(ConductionJoin, AParallelCircuitConductsWhenAnyBranchDoes) {
@@ -137,7 +245,7 @@ TEST(ConductionJoin, AParallelCircuitConductsWhenAnyBranchDoes) {
 TEST(Svg, IsAValidDocumentWithNamesAddressesAndThePoweredStyle) {
     const NetworkLayout layout = layOut("Q0.1 = EStop * TON(2s50)\n");
     PowerSnapshot power;
-    power.statements[0] = {{1, 2}, false};
+    power.statements[0] = {{1, 2}, false, {}};
     const QByteArray svg = rs::render::networkSvg(layout, LadderStyle{}, &power, "net");
     QSvgRenderer renderer(svg);
     ASSERT_TRUE(renderer.isValid());

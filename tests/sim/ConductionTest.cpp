@@ -81,6 +81,7 @@ void expectSameUnits(const Simulated& eager, const Simulated& onDemand, int scan
             << "unit " << unit << ", scan " << scan;
         ASSERT_EQ(a->activeStep(1), b->activeStep(1)) << "scan " << scan;
         ASSERT_EQ(a->conduction(), b->conduction()) << "unit " << unit << ", scan " << scan;
+        ASSERT_EQ(a->elementStates(), b->elementStates()) << "unit " << unit << ", scan " << scan;
     }
 }
 

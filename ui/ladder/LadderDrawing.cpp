@@ -14,15 +14,18 @@ LadderDrawing drawingFor(const QPalette& palette) {
     if (dark) {
         style.powered = QColor(70, 210, 110);
         style.poweredFill = QColor(30, 80, 45);
+        style.closedFill = style.powered;
         style.nameInk = QColor(140, 180, 255);
         style.addressInk = QColor(190, 190, 190);
         style.commentInk = QColor(170, 170, 170);
     }
+    style.closedInk = style.background;
     drawing.selection = palette.color(QPalette::Highlight);
     drawing.markedNetwork = palette.color(QPalette::Highlight);
     drawing.markedNetwork.setAlpha(60);
     drawing.problem = dark ? QColor(255, 90, 90) : QColor(210, 0, 0);
     drawing.editing = dark ? QColor(255, 170, 60) : QColor(220, 120, 0);
+    drawing.explained = dark ? QColor(255, 120, 220) : QColor(190, 0, 140);
     return drawing;
 }
 

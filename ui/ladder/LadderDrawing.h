@@ -25,10 +25,15 @@ struct LadderDrawing {
     QColor markedNetwork; // behind the title of a network chosen for Cut or Copy
     QColor problem;       // the frame around an element a diagnostic concerns
     QColor editing;       // the frame of the network in edit mode
+    QColor explained;     // the frames of why an output is on or off
     const LadderLiveState* live = nullptr;
     LadderCursor cursor;
     std::set<std::pair<int, int>> marked; // (step, network) chosen for Cut, Copy, Delete
     std::optional<std::pair<int, int>> editingNetwork;
+    // While live, of the selected output: the elements that block its rung's
+    // paths (when no path conducts), or those of the path that holds it.
+    std::set<std::pair<std::uint32_t, std::uint16_t>> blocking;
+    std::set<std::pair<std::uint32_t, std::uint16_t>> holding;
     // Diagnostics by (statement in unit, element), element 0 for the statement as a whole.
     std::map<std::pair<std::uint32_t, std::uint16_t>, QString> problems;
 };

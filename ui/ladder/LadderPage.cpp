@@ -154,6 +154,7 @@ void LadderPage::changeEvent(QEvent* event) {
     m_drawing.markedNetwork = colours.markedNetwork;
     m_drawing.problem = colours.problem;
     m_drawing.editing = colours.editing;
+    m_drawing.explained = colours.explained;
     m_view->setBackgroundBrush(m_drawing.style.background);
     drawElementIcons();
     repaintItems();
@@ -318,6 +319,7 @@ void LadderPage::setLiveState(const LadderLiveState* state) {
         updateTitle();
         placeItems();
     }
+    explainOutput(); // each scan may change the answer
     repaintItems();
 }
 
@@ -348,6 +350,8 @@ void LadderPage::setCursor(const LadderCursor& cursor) {
                 text = whole->second;
     }
     setMessage(text);
+    if (m_drawing.live)
+        explainOutput();
     ensureCursorVisible();
     repaintItems();
 }

@@ -83,11 +83,25 @@ public:
     // pointer repaints without laying anything out.
     void setLiveState(const LadderLiveState* state);
     bool isLive() const { return m_drawing.live != nullptr; }
+    const LadderLiveState* liveState() const { return m_drawing.live; }
+    // What every network is drawn with: colours, live state, selection, marks.
+    const LadderDrawing& drawing() const { return m_drawing; }
     // The variables bound to the pins of the page's block networks, whose
     // values the live state is to carry (render::PowerSnapshot::values).
     std::set<lang::Address> pinVariables() const;
     // The colour the element is drawn with now: powered, or not.
     QColor elementColor(std::uint32_t statement, std::uint16_t element) const;
+    // While live with an output selected: why it is on or off, as the page's
+    // status line says it ("Q0.2 is off: I0.13 is open, M0.0 is open"), and
+    // the elements marked for it (the first that blocks each path of its
+    // rung, or the path that holds it). Empty when no output is selected.
+    QString outputExplanation() const { return m_explanation; }
+    const std::set<std::pair<std::uint32_t, std::uint16_t>>& blockingElements() const {
+        return m_drawing.blocking;
+    }
+    const std::set<std::pair<std::uint32_t, std::uint16_t>>& holdingElements() const {
+        return m_drawing.holding;
+    }
 
     // Diagnostics of the unit's text (lines and columns of its code as the
     // text page shows it), drawn on the elements they concern.
@@ -209,6 +223,8 @@ private:
     void dragElement(const QPointF& from);
     void dropElement(const QPointF& scenePosition, const QByteArray& payload);
     void pointAt(const QPointF& scenePosition);
+    // Explains the selected output from the live state (outputExplanation()).
+    void explainOutput();
     void reportOperand();
     void reportOperandMenu(std::optional<QPoint> globalPosition = std::nullopt);
 
@@ -238,6 +254,7 @@ private:
     QGraphicsScene* m_scene;
     LadderView* m_view;
     QLabel* m_status;
+    QString m_explanation;
     QString m_editingHint; // what an empty page says while editing
     QGraphicsSimpleTextItem* m_emptyHint = nullptr;
     QPointer<ProjectDocument> m_document;

@@ -161,6 +161,7 @@ void LadderPage::dropElement(const QPointF& scenePosition, const QByteArray& pay
 
 void LadderPage::pointAt(const QPointF& scenePosition) {
     m_drawing.cursor = cursorAt(scenePosition);
+    explainOutput();
     repaintItems();
 }
 

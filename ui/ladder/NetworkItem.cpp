@@ -203,9 +203,18 @@ void NetworkItem::paintSketch(QPainter& painter) const {
             painter.setPen(QPen(powered ? style.powered : style.ink, wire.rail ? 3 : 0));
             painter.drawLine(wire.line);
         }
+        // Live, an element that is open (or an output that is 0) is only
+        // outlined, as it is hollow at full size.
         for (const auto& element : m_layout.elements) {
             const bool powered = power && power->conducts(element.statement, element.element);
-            painter.fillRect(element.symbolRect, powered ? style.powered : style.ink);
+            const QColor& colour = powered ? style.powered : style.ink;
+            if (!power || power->closed(element.statement, element.element)) {
+                painter.fillRect(element.symbolRect, colour);
+            } else {
+                painter.setPen(QPen(colour, 0));
+                painter.setBrush(Qt::NoBrush);
+                painter.drawRect(element.symbolRect);
+            }
         }
     }
     painter.restore();
@@ -259,6 +268,14 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
         }
         if (!drawing.live)
             continue;
+        // Why the selected output is off: the first element that blocks each
+        // path (dashed); why it is on: the path that holds it (dotted).
+        const bool blocking = drawing.blocking.count(key) > 0;
+        if (blocking || drawing.holding.count(key) > 0) {
+            painter.setPen(QPen(drawing.explained, 3, blocking ? Qt::DashLine : Qt::DotLine));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRoundedRect(cell.adjusted(3, 2, -3, -2), 5, 5);
+        }
         if (const auto note = drawing.live->annotations.find(key);
             note != drawing.live->annotations.end()) {
             // The value takes the place of the address or preset it tells

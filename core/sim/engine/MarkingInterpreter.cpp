@@ -10,11 +10,25 @@ namespace rs::sim::engine {
 
 using compiler::Op;
 
+namespace {
+
+// A timer's ElementState after it ran with `input`: its output (before a
+// negation), and whether it is counting.
+std::uint8_t timerState(const Timer& timer, int kind, bool input) {
+    const bool counting = kind == 0   ? input && !timer.output
+                          : kind == 1 ? timer.running
+                                      : timer.running && !input;
+    return static_cast<std::uint8_t>((timer.output ? Closed : 0) | (counting ? Running : 0));
+}
+
+} // namespace
+
 // Threaded dispatch (GCC's labels as values): each handler jumps straight to
 // the next one, so the processor predicts each transition on its own.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
-void runMarking(UnitState& unit, int index, int& pendingJump, int cycleMs, Conduction* marks) {
+void runMarking(UnitState& unit, int index, int& pendingJump, int cycleMs, Conduction* marks,
+                std::uint8_t* states) {
     const StepRun& step = unit.steps[static_cast<std::size_t>(index)];
     if (step.count == 0)
         return;
@@ -31,6 +45,7 @@ void runMarking(UnitState& unit, int index, int& pendingJump, int cycleMs, Condu
     const DecodedInstruction* in = unit.code.data() + step.first;
     const DecodedInstruction* const end = in + step.count;
     Conduction* mark = marks + step.first;
+    std::uint8_t* state = states + step.first; // only elements with a state of their own write it
     static_assert(compiler::Negated == 1);
 
     static const void* const handlers[] = {
@@ -43,30 +58,48 @@ void runMarking(UnitState& unit, int index, int& pendingJump, int cycleMs, Condu
 #define RS_NEXT()                                                                                  \
     do {                                                                                           \
         *mark++ = static_cast<Conduction>(1 + power);                                              \
+        ++state;                                                                                   \
         if (++in == end)                                                                           \
             return;                                                                                \
         goto* handlers[in->handler];                                                               \
     } while (false)
 #define RS_NEGATED (in->flags & compiler::Negated)
 #define RS_BYTE (*static_cast<std::uint8_t*>(in->ref))
-#define RS_COMPARE(op) power &= static_cast<unsigned>(compares(op, a, b)) ^ RS_NEGATED
+#define RS_COMPARE(op)                                                                             \
+    do {                                                                                           \
+        const unsigned holds = static_cast<unsigned>(compares(op, a, b));                          \
+        *state = static_cast<std::uint8_t>(holds);                                                 \
+        power &= holds ^ RS_NEGATED;                                                               \
+    } while (false)
 
     goto* handlers[in->handler];
 rung:
     power = 1;
     RS_NEXT();
-contactByte:
-    power &= static_cast<unsigned>(RS_BYTE != 0) ^ RS_NEGATED;
+contactByte : {
+    const unsigned closed = static_cast<unsigned>(RS_BYTE != 0) ^ RS_NEGATED;
+    *state = static_cast<std::uint8_t>(closed);
+    power &= closed;
     RS_NEXT();
-contact:
-    power &= static_cast<unsigned>(in->readBit()) ^ RS_NEGATED;
+}
+contact : {
+    const unsigned closed = static_cast<unsigned>(in->readBit()) ^ RS_NEGATED;
+    *state = static_cast<std::uint8_t>(closed);
+    power &= closed;
     RS_NEXT();
-edge:
-    power &= unit.edge(*in);
+}
+edge : {
+    const unsigned closed = unit.edge(*in);
+    *state = static_cast<std::uint8_t>(closed);
+    power &= closed;
     RS_NEXT();
-timer:
-    power = unit.timer(*in, power != 0, cycleMs);
+}
+timer : {
+    const bool input = power != 0;
+    power = unit.timer(*in, input, cycleMs);
+    *state = timerState(unit.timers[in->slot], in->aux, input);
     RS_NEXT();
+}
 loadA:
     a = (in->flags & compiler::ConstantOperand) ? in->constant : in->readWord();
     RS_NEXT();
@@ -130,14 +163,17 @@ toggle:
     sm[kDitto] = static_cast<std::uint8_t>(power);
     RS_NEXT();
 jump:
+    *state = static_cast<std::uint8_t>(power);
     if (power)
         pendingJump = in->slot; // the last jump taken in the step wins
     RS_NEXT();
 sequenceReset:
+    *state = static_cast<std::uint8_t>(power);
     if (power && in->slot < 10)
         unit.sequences[in->slot].resetRequested = true;
     RS_NEXT();
 arith:
+    *state = static_cast<std::uint8_t>(power);
     if (power)
         unit.arithmetic(*in, a, b);
     RS_NEXT();
