@@ -90,8 +90,8 @@ struct BlockDefinition {
     // How many timers (TON, TPS, TOF occurrences) the body holds; each
     // instance counts them against its unit's 50.
     int timers = 0;
-    std::string systemInstruction; // System blocks only
-    std::vector<std::string> body; // lines, placeholders unsubstituted
+    std::string systemInstruction;    // System blocks only
+    std::vector<std::string> body;    // lines, placeholders unsubstituted
     std::vector<StateMeaning> states; // in the library's order; empty for a block without states
 
     // Pin names are matched without regard to case (blocks.md).
