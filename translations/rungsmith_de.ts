@@ -1201,6 +1201,62 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Select a block network whose block a library of the project has.</source>
         <translation>Wählen Sie ein Bausteinnetzwerk, dessen Baustein eine Bibliothek des Projekts enthält.</translation>
     </message>
+    <message>
+        <source>%1 did not run: its step is not active</source>
+        <translation>%1 lief nicht: sein Schritt ist nicht aktiv</translation>
+    </message>
+    <message>
+        <source>%1 is true</source>
+        <translation>%1 ist wahr</translation>
+    </message>
+    <message>
+        <source>%1 is false</source>
+        <translation>%1 ist falsch</translation>
+    </message>
+    <message>
+        <source>%1 is on</source>
+        <translation>%1 ist ein</translation>
+    </message>
+    <message>
+        <source>%1 is off</source>
+        <translation>%1 ist aus</translation>
+    </message>
+    <message>
+        <source>%1 is open</source>
+        <translation>%1 ist offen</translation>
+    </message>
+    <message>
+        <source>%1 is on through %2</source>
+        <translation>%1 ist ein über %2</translation>
+    </message>
+    <message>
+        <source>%1 is off: %2</source>
+        <translation>%1 ist aus: %2</translation>
+    </message>
+    <message>
+        <source>%1 is forced on; its rung is off: %2</source>
+        <translation>%1 ist auf Ein forciert; sein Strompfad ist aus: %2</translation>
+    </message>
+    <message>
+        <source>%1 is on; its rung is off: %2</source>
+        <translation>%1 ist ein; sein Strompfad ist aus: %2</translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on</source>
+        <translation>%1 ist auf Aus forciert; sein Strompfad ist ein</translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on</source>
+        <translation>%1 ist aus; sein Strompfad ist ein</translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on through %2</source>
+        <translation>%1 ist auf Aus forciert; sein Strompfad ist ein über %2</translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on through %2</source>
+        <translation>%1 ist aus; sein Strompfad ist ein über %2</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>

@@ -1201,6 +1201,62 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Select a block network whose block a library of the project has.</source>
         <translation>Välj ett blocknätverk vars block finns i ett av projektets bibliotek.</translation>
     </message>
+    <message>
+        <source>%1 did not run: its step is not active</source>
+        <translation>%1 kördes inte: dess steg är inte aktivt</translation>
+    </message>
+    <message>
+        <source>%1 is true</source>
+        <translation>%1 är sant</translation>
+    </message>
+    <message>
+        <source>%1 is false</source>
+        <translation>%1 är falskt</translation>
+    </message>
+    <message>
+        <source>%1 is on</source>
+        <translation>%1 är till</translation>
+    </message>
+    <message>
+        <source>%1 is off</source>
+        <translation>%1 är från</translation>
+    </message>
+    <message>
+        <source>%1 is open</source>
+        <translation>%1 är öppen</translation>
+    </message>
+    <message>
+        <source>%1 is on through %2</source>
+        <translation>%1 är till genom %2</translation>
+    </message>
+    <message>
+        <source>%1 is off: %2</source>
+        <translation>%1 är från: %2</translation>
+    </message>
+    <message>
+        <source>%1 is forced on; its rung is off: %2</source>
+        <translation>%1 är forcerad till; dess strömväg är från: %2</translation>
+    </message>
+    <message>
+        <source>%1 is on; its rung is off: %2</source>
+        <translation>%1 är till; dess strömväg är från: %2</translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on</source>
+        <translation>%1 är forcerad från; dess strömväg är till</translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on</source>
+        <translation>%1 är från; dess strömväg är till</translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on through %2</source>
+        <translation>%1 är forcerad från; dess strömväg är till genom %2</translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on through %2</source>
+        <translation>%1 är från; dess strömväg är till genom %2</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
