@@ -4,6 +4,8 @@
 #include "compiler/ImageCodec.h"
 #include "project/ProjectFile.h"
 
+#include "TextEdit.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,6 +15,8 @@
 using namespace rs;
 
 namespace {
+
+using rs::test::replaced;
 
 const char* kTwoUnits = "$name Two units\n"
                         "! id_pluto:00=000000000000\n"
@@ -35,14 +39,6 @@ compiler::CompileResult compiled(const std::string& text) {
     EXPECT_EQ(result.errors(), 0) << (result.diagnostics.empty() ? ""
                                                                  : result.diagnostics[0].message);
     return result;
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos)
-        text.replace(at, from.size(), to);
-    return text;
 }
 
 std::string readFile(const std::filesystem::path& path) {

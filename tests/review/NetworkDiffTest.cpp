@@ -6,6 +6,8 @@
 #include "review/EditorNetworks.h"
 #include "review/NetworkMeaning.h"
 
+#include "TextEdit.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -17,6 +19,8 @@ using review::NetworkDifference;
 using review::Pairing;
 
 namespace {
+
+using rs::test::replaced;
 
 project::Project randomProject(unsigned seed) {
     project::Project project;
@@ -60,14 +64,6 @@ const char* kPress = "$name Press\n"
                      "J(1) = I0.5\n"
                      "S0.1_1\n"
                      "Q0.3 = I0.6\n";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos)
-        text.replace(at, from.size(), to);
-    return text;
-}
 
 } // namespace
 

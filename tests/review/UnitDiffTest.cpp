@@ -2,11 +2,15 @@
 #include "review/UnitDiff.h"
 #include "project/ProjectFile.h"
 
+#include "TextEdit.h"
+
 #include <gtest/gtest.h>
 
 using namespace rs;
 
 namespace {
+
+using rs::test::replaced;
 
 const char* kTwoUnits = "$name Two units\n"
                         "! id_pluto:00=000000000000\n"
@@ -27,14 +31,6 @@ project::Project read(const std::string& text) {
     project::ProjectReadResult result = project::readProject(text);
     EXPECT_TRUE(result.ok()) << text;
     return std::move(result.project);
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos)
-        text.replace(at, from.size(), to);
-    return text;
 }
 
 std::vector<std::string> differences(const std::string& after) {

@@ -3,11 +3,15 @@
 #include "compiler/Compiler.h"
 #include "project/ProjectFile.h"
 
+#include "TextEdit.h"
+
 #include <gtest/gtest.h>
 
 using namespace rs;
 
 namespace {
+
+using rs::test::replaced;
 
 const char* kProject = "$name Validated\n"
                        "! id_pluto:00=000000000000\n"
@@ -22,14 +26,6 @@ const char* kProject = "$name Validated\n"
                        "! pgm_pluto:01\n"
                        "S1.0_0\n"
                        "Q1.2 = I1.0 * I1.1\n";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos)
-        text.replace(at, from.size(), to);
-    return text;
-}
 
 // The text validated, as `validate` writes it.
 std::string validated(const std::string& text) {
