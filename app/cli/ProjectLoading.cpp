@@ -47,7 +47,6 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
         return loaded;
     loaded.project = std::move(read.read.project);
     loaded.diagnostics = std::move(read.read.diagnostics);
-    loaded.expanded = read.expanded;
     loaded.text = std::move(file.text);
     return loaded;
 }

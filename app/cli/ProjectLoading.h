@@ -27,7 +27,6 @@ struct LoadedProject {
     std::string text;              // as read
     lang::Diagnostics diagnostics; // of the text and its block instances, by place
     int status = 0;                // UsageOrIo when the project or a library cannot be read
-    bool expanded = false;         // block instances were written in: the project is not the text
     blocks::LibraryPlaces places;  // where its libraries were found
 
     bool ok() const { return status == 0 && lang::errorCount(diagnostics) == 0; }

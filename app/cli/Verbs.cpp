@@ -66,7 +66,7 @@ int runFormat(const QString& path, const QStringList& libraryFiles, Streams stre
 
 compiler::CompileResult compiled(const LoadedProject& loaded,
                                  const compiler::CheckOptions& options) {
-    return blocks::compileProject(loaded.project, loaded.diagnostics, loaded.expanded, options);
+    return blocks::compileProject(loaded.project, loaded.diagnostics, options);
 }
 
 } // namespace rs::cli

@@ -94,7 +94,7 @@ TimingExample runTimingExample(const blocks::LoadedLibrary& library,
         return example;
     }
     const compiler::CompileResult compiled =
-        blocks::compileProject(read.read.project, read.read.diagnostics, read.expanded);
+        blocks::compileProject(read.read.project, read.read.diagnostics);
     if (const lang::Diagnostic* error = firstError(compiled.diagnostics)) {
         example.problem = placed(files.project, *error);
         return example;

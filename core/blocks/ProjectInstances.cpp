@@ -137,7 +137,7 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 }
 
 compiler::CompileResult compileProject(const project::Project& project,
-                                       const lang::Diagnostics& readDiagnostics, bool expanded,
+                                       const lang::Diagnostics& readDiagnostics,
                                        const compiler::CheckOptions& options) {
     if (lang::errorCount(readDiagnostics) > 0) {
         compiler::CompileResult failed;
@@ -148,8 +148,6 @@ compiler::CompileResult compileProject(const project::Project& project,
     result.diagnostics.insert(result.diagnostics.begin(), readDiagnostics.begin(),
                               readDiagnostics.end());
     lang::sortByPlace(result.diagnostics);
-    if (expanded && !result.errors())
-        result.images = compiler::compileText(project::writeProject(project), options).images;
     return result;
 }
 

@@ -64,12 +64,11 @@ const LoadedLibrary* libraryOfEntry(const LibrarySet& set, const LibraryPlaces& 
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibraryPlaces& places);
 
 // Compiles a project read with its instances: the reading's diagnostics
-// first, then the compiler's, by place. An image records the lines of the
-// text it was made from and holds the canonical text; once expansions were
-// written in, the images are made from the canonical text, so the file as
-// `format` writes it compiles to the same image.
+// first, then the compiler's, by place. The compiler makes the images from
+// the canonical text, expansions included, so the file as `format` writes it
+// compiles to the same image.
 compiler::CompileResult compileProject(const project::Project& project,
-                                       const lang::Diagnostics& readDiagnostics, bool expanded,
+                                       const lang::Diagnostics& readDiagnostics,
                                        const compiler::CheckOptions& options = {});
 
 } // namespace rs::blocks

@@ -56,7 +56,7 @@ sim::ScenarioReport run(const std::string& text, const std::string& scenario) {
     const auto read = blocks::readProjectWithInstances(text, analog01());
     EXPECT_TRUE(read.read.ok()) << messages(read.read.diagnostics);
     const compiler::CompileResult compiled =
-        blocks::compileProject(read.read.project, read.read.diagnostics, read.expanded);
+        blocks::compileProject(read.read.project, read.read.diagnostics);
     EXPECT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
     sim::Simulation simulation(compiled.images);
     return sim::runScenario(
@@ -107,7 +107,7 @@ TEST(Analog01, AnInstanceIsSavedAsItsCallAndReadsBackWithoutTheLibrary) {
               std::string::npos)
         << text;
     const compiler::CompileResult compiled =
-        blocks::compileProject(result.read.project, result.read.diagnostics, result.expanded);
+        blocks::compileProject(result.read.project, result.read.diagnostics);
     ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
     EXPECT_EQ(compiler::compileText(text).images, compiled.images);
     const auto again = blocks::readProjectWithInstances(text, blocks::LibrarySet{});
@@ -211,7 +211,7 @@ TEST(Analog01, AWrongInstanceIsAnErrorAtItsRecord) {
         lang::Diagnostics all = read.read.diagnostics;
         if (read.read.ok()) {
             const compiler::CompileResult compiled =
-                blocks::compileProject(read.read.project, read.read.diagnostics, read.expanded);
+                blocks::compileProject(read.read.project, read.read.diagnostics);
             all = compiled.diagnostics;
         }
         lang::Diagnostics errors;

@@ -60,7 +60,7 @@ sim::ScenarioReport run(const std::string& text, const std::string& scenario) {
     const auto read = blocks::readProjectWithInstances(text, speedLibrary());
     EXPECT_TRUE(read.read.ok()) << messages(read.read.diagnostics);
     const compiler::CompileResult compiled =
-        blocks::compileProject(read.read.project, read.read.diagnostics, read.expanded);
+        blocks::compileProject(read.read.project, read.read.diagnostics);
     EXPECT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
     sim::Simulation simulation(compiled.images);
     return sim::runScenario(
@@ -273,7 +273,7 @@ TEST(Rungsmith_Speed, AWrongInstanceIsAnErrorAtItsRecord) {
         lang::Diagnostics all = read.read.diagnostics;
         if (read.read.ok()) {
             const compiler::CompileResult compiled =
-                blocks::compileProject(read.read.project, read.read.diagnostics, read.expanded);
+                blocks::compileProject(read.read.project, read.read.diagnostics);
             all = compiled.diagnostics;
         }
         lang::Diagnostics errors;

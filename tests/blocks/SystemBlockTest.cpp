@@ -90,7 +90,7 @@ TEST(SystemBlock, ABodylessRegisterValidIsExpandedCompiledAndSimulated) {
         << text;
 
     const compiler::CompileResult compiled =
-        blocks::compileProject(result.read.project, result.read.diagnostics, result.expanded);
+        blocks::compileProject(result.read.project, result.read.diagnostics);
     ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
     const sim::ScenarioReport report =
         simulate(result, compiled.images,
@@ -172,8 +172,8 @@ TEST(SystemBlock, ABodyFollowsTheCall) {
                         ";@end\n"),
               std::string::npos)
         << text;
-    const compiler::CompileResult compiled = blocks::compileProject(
-        result.read.project, result.read.diagnostics, result.expanded, {false});
+    const compiler::CompileResult compiled =
+        blocks::compileProject(result.read.project, result.read.diagnostics, {false});
     ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
     const sim::ScenarioReport report =
         simulate(result, compiled.images, "scans 2\nexpect M1.1 1\nexpect Q1.10 0\n");

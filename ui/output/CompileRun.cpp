@@ -79,10 +79,8 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
                                             projectPath = document->path()] {
         const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
             text, blocks::LibraryPlaces{QCoreApplication::applicationDirPath(), projectPath, {}});
-        Compiled compiled{blocks::compileProject(read.read.project, read.read.diagnostics,
-                                                 read.expanded, options),
-                          {},
-                          {}};
+        Compiled compiled{
+            blocks::compileProject(read.read.project, read.read.diagnostics, options), {}, {}};
         if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
             try {
                 compiled.imageError =
