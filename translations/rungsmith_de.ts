@@ -535,6 +535,10 @@
         <source>Compiled without errors. Save the project to write the compiled file.</source>
         <translation>Fehlerfrei kompiliert. Speichern Sie das Projekt, um die kompilierte Datei zu schreiben.</translation>
     </message>
+    <message>
+        <source>Checked without errors. The compiled file is not written, as the project has unsaved changes.</source>
+        <translation>Ohne Fehler geprüft. Die kompilierte Datei wird nicht geschrieben, da das Projekt ungespeicherte Änderungen hat.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ConfigOptionDialog</name>
@@ -1096,14 +1100,6 @@
         <translation>Fügen Sie den Ausgang des Netzwerks vor seinem Kommentar ein.</translation>
     </message>
     <message>
-        <source>Network Comment</source>
-        <translation>Netzwerkkommentar</translation>
-    </message>
-    <message>
-        <source>Comment of network %1:</source>
-        <translation>Kommentar zu Netzwerk %1:</translation>
-    </message>
-    <message>
         <source>Comment Network %1</source>
         <translation>Netzwerk %1 kommentieren</translation>
     </message>
@@ -1256,6 +1252,26 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>%1 is off; its rung is on through %2</source>
         <translation>%1 ist aus; sein Strompfad ist ein über %2</translation>
+    </message>
+    <message>
+        <source>&amp;Comment of network %1:</source>
+        <translation>&amp;Kommentar zu Netzwerk %1:</translation>
+    </message>
+    <message>
+        <source>Not copied: %1</source>
+        <translation>Nicht kopiert: %1</translation>
+    </message>
+    <message>
+        <source>Copy Element</source>
+        <translation>Element kopieren</translation>
+    </message>
+    <message>
+        <source>Moving: drop it before or after an element. Release Shift to copy.</source>
+        <translation>Verschieben: vor oder nach einem Element ablegen. Umschalt loslassen zum Kopieren.</translation>
+    </message>
+    <message>
+        <source>Copying: drop it before or after an element. Hold Shift to move.</source>
+        <translation>Kopieren: vor oder nach einem Element ablegen. Umschalt halten zum Verschieben.</translation>
     </message>
 </context>
 <context>
@@ -1472,6 +1488,26 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilieren</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved.</source>
+        <translation>%1 hat Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <source>The compiled file (.hps) is written beside the project and must come from the saved file. Save first, or only check the changes without writing the compiled file.</source>
+        <translation>Die kompilierte Datei (.hps) wird neben das Projekt geschrieben und muss aus der gespeicherten Datei stammen. Speichern Sie zuerst, oder prüfen Sie nur die Änderungen, ohne die kompilierte Datei zu schreiben.</translation>
+    </message>
+    <message>
+        <source>&amp;Save and Compile</source>
+        <translation>&amp;Speichern und kompilieren</translation>
+    </message>
+    <message>
+        <source>C&amp;heck Only</source>
+        <translation>Nur &amp;prüfen</translation>
     </message>
 </context>
 <context>
@@ -2306,6 +2342,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Edit Code of Pluto %1</source>
         <translation>Code von Pluto %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Ladder</source>
+        <translation>Kontaktplan</translation>
+    </message>
+    <message>
+        <source>Show this code as ladder networks</source>
+        <translation>Diesen Code als Kontaktplan-Netzwerke zeigen</translation>
     </message>
 </context>
 <context>
@@ -3178,6 +3222,17 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>step %1</source>
         <translation>Schritt %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation>Netzwerkkommentar</translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation>Eingabe beginnt eine neue Zeile; Strg+Eingabe bestätigt.</translation>
     </message>
 </context>
 </TS>

@@ -364,6 +364,30 @@
         <source>New Se&amp;quence...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Function...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new network holding a function block of the libraries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Update Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Make Block...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Block Documentation...</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -540,6 +564,10 @@
     </message>
     <message>
         <source>Compiled without errors. Save the project to write the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checked without errors. The compiled file is not written, as the project has unsaved changes.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1047,14 +1075,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Network Comment</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Comment of network %1:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Comment Network %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1145,6 +1165,142 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Keys: %1 insert the toolbar&apos;s elements; %2 %3 %4 before, after, parallel; %5 properties; %6 delete; %7 new network; %8 edit mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Made by %1 version %2; the library has version %3 (Update Block).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert Block %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No library of the project has this block: add its library on the project page to bind its pins.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Block Pins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a block made by another version of its block to update it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update Block %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a block network whose block a library of the project has.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make Block takes networks of one step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A block cannot hold a block: leave block networks out of the selection.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the project first: its blocks go to a library beside it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The block could not be written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The library %1 is not among the project&apos;s libraries.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make Block %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block %1 is in %2; the F list offers it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Comment of network %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not copied: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 did not run: its step is not active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is true</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is false</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is on through %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is off: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is forced on; its rung is off: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is on; its rung is off: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is forced off; its rung is on through %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is off; its rung is on through %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving: drop it before or after an element. Release Shift to copy.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copying: drop it before or after an element. Hold Shift to move.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1361,6 +1517,26 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The compiled file (.hps) is written beside the project and must come from the saved file. Save first, or only check the changes without writing the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save and Compile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;heck Only</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2166,6 +2342,14 @@ Its text page (F6) shows and edits it.</source>
         <source>Edit Code of Pluto %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Ladder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this code as ladder networks</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::UnitCommands</name>
@@ -2692,6 +2876,10 @@ Its text page (F6) shows and edits it.</source>
         <source>&lt;h2&gt;No project is open&lt;/h2&gt;&lt;p&gt;Start a new project, open one, or look at the example from the manual.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>BlockDocumentation</name>
@@ -2708,6 +2896,342 @@ Its text page (F6) shows and edits it.</source>
             <numerusform>%n expectation of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
             <numerusform>%n expectations of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Yes to &amp;All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>Insert Function Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>Make Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

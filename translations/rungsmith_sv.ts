@@ -535,6 +535,10 @@
         <source>Compiled without errors. Save the project to write the compiled file.</source>
         <translation>Kompilerat utan fel. Spara projektet för att skriva den kompilerade filen.</translation>
     </message>
+    <message>
+        <source>Checked without errors. The compiled file is not written, as the project has unsaved changes.</source>
+        <translation>Kontrollerat utan fel. Den kompilerade filen skrivs inte, eftersom projektet har osparade ändringar.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ConfigOptionDialog</name>
@@ -1096,14 +1100,6 @@
         <translation>Infoga nätverkets utgång före dess kommentar.</translation>
     </message>
     <message>
-        <source>Network Comment</source>
-        <translation>Nätverkskommentar</translation>
-    </message>
-    <message>
-        <source>Comment of network %1:</source>
-        <translation>Kommentar till nätverk %1:</translation>
-    </message>
-    <message>
         <source>Comment Network %1</source>
         <translation>Kommentera nätverk %1</translation>
     </message>
@@ -1256,6 +1252,26 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>%1 is off; its rung is on through %2</source>
         <translation>%1 är från; dess strömväg är till genom %2</translation>
+    </message>
+    <message>
+        <source>&amp;Comment of network %1:</source>
+        <translation>&amp;Kommentar till nätverk %1:</translation>
+    </message>
+    <message>
+        <source>Not copied: %1</source>
+        <translation>Inte kopierat: %1</translation>
+    </message>
+    <message>
+        <source>Copy Element</source>
+        <translation>Kopiera element</translation>
+    </message>
+    <message>
+        <source>Moving: drop it before or after an element. Release Shift to copy.</source>
+        <translation>Flyttar: släpp det före eller efter ett element. Släpp Skift för att kopiera.</translation>
+    </message>
+    <message>
+        <source>Copying: drop it before or after an element. Hold Shift to move.</source>
+        <translation>Kopierar: släpp det före eller efter ett element. Håll ned Skift för att flytta.</translation>
     </message>
 </context>
 <context>
@@ -1472,6 +1488,26 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&amp;Quit</source>
         <translation>&amp;Avsluta</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Kompilera</translation>
+    </message>
+    <message>
+        <source>%1 has changes that are not saved.</source>
+        <translation>%1 har ändringar som inte är sparade.</translation>
+    </message>
+    <message>
+        <source>The compiled file (.hps) is written beside the project and must come from the saved file. Save first, or only check the changes without writing the compiled file.</source>
+        <translation>Den kompilerade filen (.hps) skrivs bredvid projektet och måste komma från den sparade filen. Spara först, eller kontrollera bara ändringarna utan att skriva den kompilerade filen.</translation>
+    </message>
+    <message>
+        <source>&amp;Save and Compile</source>
+        <translation>&amp;Spara och kompilera</translation>
+    </message>
+    <message>
+        <source>C&amp;heck Only</source>
+        <translation>&amp;Kontrollera bara</translation>
     </message>
 </context>
 <context>
@@ -2306,6 +2342,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Edit Code of Pluto %1</source>
         <translation>Redigera koden för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Ladder</source>
+        <translation>Stegdiagram</translation>
+    </message>
+    <message>
+        <source>Show this code as ladder networks</source>
+        <translation>Visa koden som stegdiagramnätverk</translation>
     </message>
 </context>
 <context>
@@ -3178,6 +3222,17 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>step %1</source>
         <translation>steg %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation>Nätverkskommentar</translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation>Retur börjar en ny rad; Ctrl+Retur bekräftar.</translation>
     </message>
 </context>
 </TS>

@@ -225,6 +225,24 @@ EditResult moveNode(Network& from, const ElementPath& node, Network& to, const E
     return {};
 }
 
+EditResult copyNode(const Network& from, const ElementPath& node, Network& to,
+                    const ElementPath& target, Side side) {
+    Network source = from;
+    Rung* sourceRung = rungAt(source, node.item);
+    if (!sourceRung)
+        return {kNoRung};
+    const Circuit* copied = nodeAt(*sourceRung, node.node);
+    if (!copied)
+        return {kNoNode};
+    Circuit part = *copied;
+    return edit(to, [&](Network& copy) -> EditResult {
+        Rung* targetRung = rungAt(copy, target.item);
+        if (!targetRung)
+            return {kNoRung};
+        return insertRaw(*targetRung, target.node, std::move(part), side);
+    });
+}
+
 EditResult insertRung(Network& network, std::size_t item, Rung rung) {
     return edit(network, [&](Network& copy) -> EditResult {
         if (item > copy.items.size())

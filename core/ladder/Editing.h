@@ -51,6 +51,11 @@ EditResult replaceElement(Network& network, const ElementPath& at, Element eleme
 EditResult moveNode(Network& from, const ElementPath& node, Network& to, const ElementPath& target,
                     Side side);
 
+// Puts a copy of a node next to another, in series before or after it, in
+// the same network (next to itself too) or another; `from` stays as it is.
+EditResult copyNode(const Network& from, const ElementPath& node, Network& to,
+                    const ElementPath& target, Side side);
+
 EditResult insertRung(Network& network, std::size_t item, Rung rung);
 EditResult removeItem(Network& network, std::size_t item);
 

@@ -51,22 +51,32 @@ TextPlace placeOfLine(const Project& project, int line) {
 }
 
 TextPlace placeOfLine(std::string_view text, int line) {
-    const std::vector<std::string_view> lines = linesOf(text);
+    return TextPlaces(text).of(line);
+}
+
+TextPlaces::TextPlaces(std::string_view canonicalText) : m_lines(linesOf(canonicalText)) {
+    m_codeHeader.reserve(m_lines.size());
+    int header = -1;
+    for (std::size_t i = 0; i < m_lines.size(); ++i) {
+        if (m_lines[i].starts_with("! pgm_pluto:"))
+            header = static_cast<int>(i);
+        m_codeHeader.push_back(header);
+    }
+}
+
+TextPlace TextPlaces::of(int line) const {
     TextPlace place;
-    if (line < 1 || line > static_cast<int>(lines.size()))
+    if (line < 1 || line > static_cast<int>(m_lines.size()))
         return place;
-    constexpr std::string_view header = "! pgm_pluto:";
-    for (int i = line; i >= 1; --i) {
-        const std::string_view at = lines[static_cast<std::size_t>(i - 1)];
-        if (at.starts_with(header)) {
-            place.kind = TextPlace::Kind::UnitCode;
-            place.station = stationAfterColon(at);
-            place.line = line - i + 1;
-            return place;
-        }
+    const std::size_t index = static_cast<std::size_t>(line - 1);
+    if (const int header = m_codeHeader[index]; header >= 0) {
+        place.kind = TextPlace::Kind::UnitCode;
+        place.station = stationAfterColon(m_lines[static_cast<std::size_t>(header)]);
+        place.line = line - header;
+        return place;
     }
     // Before the first unit's code: the declarations and records of the pages.
-    const std::string_view at = lines[static_cast<std::size_t>(line - 1)];
+    const std::string_view at = m_lines[index];
     if (at.starts_with("! id_pluto") || at.starts_with("! type_pluto") ||
         at.starts_with(";@unit ")) {
         place.kind = TextPlace::Kind::Unit;

@@ -4,6 +4,7 @@
 #include "Project.h"
 
 #include <string_view>
+#include <vector>
 
 namespace rs::project {
 
@@ -23,5 +24,18 @@ struct TextPlace {
 TextPlace placeOfLine(const Project& project, int line);
 // The same for a project's canonical text (writeProject), read once by the caller.
 TextPlace placeOfLine(std::string_view canonicalText, int line);
+
+// The places of the lines of one canonical text, which is read once: for the
+// many diagnostics of a large project, where placeOfLine would read the text
+// again for each. The text must outlive it.
+class TextPlaces {
+public:
+    explicit TextPlaces(std::string_view canonicalText);
+    TextPlace of(int line) const;
+
+private:
+    std::vector<std::string_view> m_lines;
+    std::vector<int> m_codeHeader; // by line index: the index of its unit's "! pgm_pluto:", or -1
+};
 
 } // namespace rs::project

@@ -59,7 +59,7 @@ public:
 
     EditResult edit(Network& n, Network& other) {
         const Side side = m_random.chance(50) ? Side::Before : Side::After;
-        switch (m_random.uniform(0, 9)) {
+        switch (m_random.uniform(0, 11)) {
         case 0:
         case 1:
             return insertInSeries(n, path(n), element(), side);
@@ -78,6 +78,10 @@ public:
             return addOutput(n, path(n).item, output());
         case 8:
             return removeOutput(n, path(n).item, static_cast<std::size_t>(m_random.uniform(0, 1)));
+        case 9:
+            return copyNode(n, path(n), n, path(n), side);
+        case 10:
+            return copyNode(other, path(other), n, path(n), side);
         default:
             return insertRung(n, path(n).item, std::get<Rung>(network().items[0]));
         }

@@ -120,6 +120,20 @@ TEST(Editing, MoveRefusesToPutAGroupIntoItself) {
     EXPECT_EQ(n, before);
 }
 
+TEST(Editing, CopyLeavesTheSourceAndMayGoNextToItselfOrIntoItsOwnGroup) {
+    Network n = networkOf("Q0.1 = I0.1 * (I0.2 + I0.3)\n");
+    ASSERT_TRUE(copyNode(n, {0, {0}}, n, {0, {0}}, Side::After).done());
+    EXPECT_EQ(textOf(n), "Q0.1 = I0.1 * I0.1 * (I0.2 + I0.3)\n");
+    Network group = networkOf("Q0.1 = I0.1 * (I0.2 + I0.3)\n");
+    ASSERT_TRUE(copyNode(group, {0, {1}}, group, {0, {1, 0}}, Side::After).done());
+    EXPECT_EQ(textOf(group), "Q0.1 = I0.1 * (I0.2 * (I0.2 + I0.3) + I0.3)\n");
+    const Network from = networkOf("Q0.1 = I0.1 * I0.2\n");
+    Network to = networkOf("Q0.2 = I0.5\n");
+    ASSERT_TRUE(copyNode(from, {0, {1}}, to, {0, {}}, Side::Before).done());
+    EXPECT_EQ(textOf(to), "Q0.2 = I0.2 * I0.5\n");
+    EXPECT_EQ(textOf(from), "Q0.1 = I0.1 * I0.2\n");
+}
+
 TEST(Editing, MoveBetweenNetworks) {
     Network from = networkOf("Q0.1 = I0.1 * I0.2\n");
     Network to = networkOf("Q0.2\n");

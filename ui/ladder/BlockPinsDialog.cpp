@@ -6,6 +6,7 @@
 #include "blocks/InstanceStanding.h"
 #include "document/ProjectDocument.h"
 #include "project/VariableTable.h"
+#include "shell/CompleterKeys.h"
 
 #include <QCompleter>
 #include <QDialogButtonBox>
@@ -59,6 +60,7 @@ BlockPinsDialog::BlockPinsDialog(ProjectDocument* document, int station,
         completer->setCaseSensitivity(Qt::CaseInsensitive);
         completer->setFilterMode(Qt::MatchContains);
         field->setCompleter(completer);
+        finishCompletionInOneKey(completer);
         auto* label = new QLabel(QStringLiteral("%1 <small>(%2)</small>:")
                                      .arg(fromUtf8(pin.name).toHtmlEscaped(),
                                           BlockText::pinSummary(pin).toHtmlEscaped()),

@@ -15,10 +15,6 @@ void DragTool::run(const QPointF& from, LadderTool& resume) {
     m_resume = nullptr;
 }
 
-void DragTool::dropped(const QPointF& at, const QByteArray& payload) {
-    m_page.dropElement(at, payload);
-}
-
 const EditSession* DragTool::editSession() const {
     return m_resume ? m_resume->editSession() : nullptr;
 }

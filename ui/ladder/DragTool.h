@@ -5,8 +5,9 @@
 
 namespace rs::ui {
 
-// An element being dragged: a drop on an element of the page moves it next
-// to that element (before or after it, by which half the drop hit). The
+// An element being dragged: a drop on an element of the page copies it (with
+// Shift moves it) next to that element, before or after it by which half the
+// drop hit (LadderTool::dropped). The
 // drag runs to its end within run(); then the state the drag began in
 // resumes (an edit session the drop ended resumes as idle).
 class DragTool : public LadderTool {
@@ -20,7 +21,6 @@ public:
     void doubleClicked(const QPointF&) override {}
     void menuRequested(const QPointF&, const QPoint&) override {}
     void dragStarted(const QPointF&) override {}
-    void dropped(const QPointF& at, const QByteArray& payload) override;
     void toggle() override {}
     const EditSession* editSession() const override;
     void endEditSession() override;

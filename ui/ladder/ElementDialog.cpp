@@ -5,6 +5,7 @@
 #include "ladder/ElementText.h"
 #include "ladder/SymbolTable.h"
 #include "project/VariableTable.h"
+#include "shell/CompleterKeys.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -73,6 +74,7 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
     completer->setCaseSensitivity(Qt::CaseInsensitive);
     completer->setFilterMode(Qt::MatchContains);
     m_operand->setCompleter(completer);
+    finishCompletionInOneKey(completer);
     fillCompletion();
 
     connect(buttons, &QDialogButtonBox::accepted, this, &ElementDialog::accept);

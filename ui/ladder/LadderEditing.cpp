@@ -9,6 +9,7 @@
 #include "ElementDialog.h"
 #include "LadderActions.h"
 #include "LadderTool.h"
+#include "NetworkCommentDialog.h"
 #include "NetworkEditTool.h"
 #include "NetworkItem.h"
 #include "blocks/ProjectInstances.h"
@@ -381,11 +382,12 @@ void LadderPage::editNetworkComment() {
         setMessage(tr("Insert the network's output before its comment."));
         return;
     }
-    bool ok = false;
-    const QString comment = QInputDialog::getMultiLineText(
-        this, tr("Network Comment"), tr("Comment of network %1:").arg(cursor.network + 1),
-        QString::fromStdString(network.comment), &ok);
-    if (!ok || comment.toStdString() == network.comment)
+    NetworkCommentDialog dialog(tr("&Comment of network %1:").arg(cursor.network + 1),
+                                QString::fromStdString(network.comment), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const QString comment = dialog.text();
+    if (comment.toStdString() == network.comment)
         return;
     editNetwork(tr("Comment Network %1").arg(cursor.network + 1), cursor.step, cursor.network,
                 [&](ladder::Network& n) {
@@ -445,6 +447,15 @@ void LadderPage::newStep() {
 }
 
 bool LadderPage::moveElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side) {
+    return transferElement(from, to, side, Transfer::Move);
+}
+
+bool LadderPage::copyElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side) {
+    return transferElement(from, to, side, Transfer::Copy);
+}
+
+bool LadderPage::transferElement(const LadderCursor& from, const LadderCursor& to,
+                                 ladder::Side side, Transfer transfer) {
     auto exists = [this](const LadderCursor& c) {
         return c.node && c.step >= 0 && c.step < stepCount() && c.network >= 0 &&
                c.network < networkCount(c.step);
@@ -456,10 +467,15 @@ bool LadderPage::moveElement(const LadderCursor& from, const LadderCursor& to, l
     ladder::StepLadder source = m_steps[from.step].ladder;
     ladder::StepLadder target = sameStep ? ladder::StepLadder{} : m_steps[to.step].ladder;
     ladder::StepLadder& into = sameStep ? source : target;
-    const ladder::EditResult result = ladder::moveNode(source.networks[from.network], *from.node,
-                                                       into.networks[to.network], *to.node, side);
+    const bool move = transfer == Transfer::Move;
+    const ladder::EditResult result =
+        move ? ladder::moveNode(source.networks[from.network], *from.node,
+                                into.networks[to.network], *to.node, side)
+             : ladder::copyNode(source.networks[from.network], *from.node,
+                                into.networks[to.network], *to.node, side);
     if (!result.done()) {
-        setMessage(tr("Not moved: %1").arg(QString::fromStdString(result.refusal)));
+        const QString refusal = QString::fromStdString(result.refusal);
+        setMessage(move ? tr("Not moved: %1").arg(refusal) : tr("Not copied: %1").arg(refusal));
         return false;
     }
     setMessage({});
@@ -467,7 +483,7 @@ bool LadderPage::moveElement(const LadderCursor& from, const LadderCursor& to, l
     steps.emplace_back(from.step, std::move(source));
     if (!sameStep)
         steps.emplace_back(to.step, std::move(target));
-    commitSteps(tr("Move Element"), std::move(steps));
+    commitSteps(move ? tr("Move Element") : tr("Copy Element"), std::move(steps));
     setCursor(
         {to.step, std::min(to.network, networkCount(to.step) - 1), std::nullopt, std::nullopt, -1});
     return true;

@@ -77,8 +77,12 @@ LadderPage::LadderPage(QWidget* parent)
             [this](const QPointF& at, const QPoint& global) { m_tool->menuRequested(at, global); });
     connect(m_view, &LadderView::dragStarted, this,
             [this](const QPointF& from) { m_tool->dragStarted(from); });
+    connect(m_view, &LadderView::dragHovered, this, &LadderPage::showDropPlace);
+    connect(m_view, &LadderView::dragLeft, this, &LadderPage::hideDropPlace);
     connect(m_view, &LadderView::dropped, this,
-            [this](const QPointF& at, const QByteArray& payload) { m_tool->dropped(at, payload); });
+            [this](const QPointF& at, const QByteArray& payload, bool move) {
+                m_tool->dropped(at, payload, move);
+            });
     connect(m_view, &LadderView::cutRequested, this, &LadderPage::cutNetworks);
     connect(m_view, &LadderView::copyRequested, this, &LadderPage::copyNetworks);
     connect(m_view, &LadderView::pasteRequested, this, &LadderPage::pasteNetworks);

@@ -25,9 +25,11 @@
 #include <vector>
 
 class QAction;
+class QGraphicsRectItem;
 class QGraphicsScene;
 class QGraphicsSimpleTextItem;
 class QLabel;
+class QMimeData;
 class QPagedPaintDevice;
 class QToolBar;
 
@@ -129,9 +131,18 @@ public:
     void insertElement(ElementKind kind);
     void editProperties();
     void deleteSelection();
-    // Moves an element or group next to another, within a network, between
-    // networks or between steps (what dragging does). False when refused.
+    // Moves, or copies, an element or group next to another, within a
+    // network, between networks or between steps (what dragging does). False
+    // when refused.
     bool moveElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side);
+    bool copyElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side);
+    // What dragging the element at `from` carries; null where there is none.
+    QMimeData* elementDragData(const QPointF& from) const;
+    // A drag over the page: where its drop would put the element, drawn.
+    void showDropPlace(const QPointF& scenePosition, const QByteArray& payload, bool move);
+    void hideDropPlace();
+    bool isDropPlaceShown() const;
+    void dropElement(const QPointF& scenePosition, const QByteArray& payload, bool move);
     void newNetwork();
     // Inserts a network holding an instance of a library block (New Network →
     // Function…): the block chosen from the project's libraries, then its pins.
@@ -221,7 +232,19 @@ private:
     void showEditMenu(const QPoint& globalPosition);
     void dragFrom(const QPointF& from, LadderTool& resume);
     void dragElement(const QPointF& from);
-    void dropElement(const QPointF& scenePosition, const QByteArray& payload);
+    // Where a drop of the payload at the position would put its element, and
+    // the mark drawn there while dragging.
+    struct DropPlace {
+        LadderCursor from;
+        LadderCursor to;
+        ladder::Side side;
+        QRectF mark;
+    };
+    std::optional<DropPlace> dropPlaceAt(const QPointF& scenePosition,
+                                         const QByteArray& payload) const;
+    enum class Transfer { Move, Copy };
+    bool transferElement(const LadderCursor& from, const LadderCursor& to, ladder::Side side,
+                         Transfer transfer);
     void pointAt(const QPointF& scenePosition);
     // Explains the selected output from the live state (outputExplanation()).
     void explainOutput();
@@ -257,6 +280,7 @@ private:
     QString m_explanation;
     QString m_editingHint; // what an empty page says while editing
     QGraphicsSimpleTextItem* m_emptyHint = nullptr;
+    QGraphicsRectItem* m_dropPlace = nullptr; // where a dragged element would go
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
     int m_sequence = 0;

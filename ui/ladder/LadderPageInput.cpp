@@ -12,6 +12,8 @@
 #include "document/ProjectDocument.h"
 
 #include <QDrag>
+#include <QGraphicsRectItem>
+#include <QGraphicsScene>
 #include <QMenu>
 #include <QMimeData>
 
@@ -114,47 +116,121 @@ void LadderPage::dragFrom(const QPointF& from, LadderTool& resume) {
     m_dragTool->run(from, resume);
 }
 
-void LadderPage::dragElement(const QPointF& from) {
-    const LadderCursor at = cursorAt(from);
-    const QByteArray payload = QStringLiteral("%1 %2 %3 %4")
-                                   .arg(reinterpret_cast<quintptr>(this))
-                                   .arg(at.step)
-                                   .arg(at.network)
-                                   .arg(static_cast<qulonglong>(at.node->item))
-                                   .toUtf8() +
-                               [&] {
-                                   QByteArray path;
-                                   for (std::size_t i : at.node->node)
-                                       path += ' ' + QByteArray::number(static_cast<qulonglong>(i));
-                                   return path;
-                               }();
-    auto* data = new QMimeData;
-    data->setData(QLatin1String(kElementMimeType), payload);
-    auto* drag = new QDrag(m_view);
-    drag->setMimeData(data);
-    drag->exec(Qt::MoveAction);
+namespace {
+
+// Where a dragged element comes from: the page it belongs to and its place.
+struct DragSource {
+    quintptr page = 0;
+    int step = 0;
+    int network = 0;
+    ladder::ElementPath node;
+};
+
+std::optional<DragSource> readDragSource(const QByteArray& payload) {
+    const QList<QByteArray> words = payload.split(' ');
+    if (words.size() < 4)
+        return std::nullopt;
+    DragSource source{static_cast<quintptr>(words[0].toULongLong()), words[1].toInt(),
+                      words[2].toInt(), ladder::ElementPath{}};
+    source.node.item = static_cast<std::size_t>(words[3].toULongLong());
+    for (int i = 4; i < words.size(); ++i)
+        source.node.node.push_back(static_cast<std::size_t>(words[i].toULongLong()));
+    return source;
 }
 
-void LadderPage::dropElement(const QPointF& scenePosition, const QByteArray& payload) {
-    const QList<QByteArray> words = payload.split(' ');
-    if (words.size() < 4 || words[0].toULongLong() != reinterpret_cast<quintptr>(this))
+constexpr qreal kDropPlaceWidth = 4;
+
+} // namespace
+
+QMimeData* LadderPage::elementDragData(const QPointF& from) const {
+    const LadderCursor at = cursorAt(from);
+    if (!at.node)
+        return nullptr;
+    QByteArray payload = QStringLiteral("%1 %2 %3 %4")
+                             .arg(reinterpret_cast<quintptr>(this))
+                             .arg(at.step)
+                             .arg(at.network)
+                             .arg(static_cast<qulonglong>(at.node->item))
+                             .toUtf8();
+    for (std::size_t i : at.node->node)
+        payload += ' ' + QByteArray::number(static_cast<qulonglong>(i));
+    auto* data = new QMimeData;
+    data->setData(QLatin1String(kElementMimeType), payload);
+    return data;
+}
+
+void LadderPage::dragElement(const QPointF& from) {
+    QMimeData* data = elementDragData(from);
+    if (!data)
         return;
-    const int step = words[1].toInt();
-    const int network = words[2].toInt();
-    ladder::ElementPath node{static_cast<std::size_t>(words[3].toULongLong()), {}};
-    for (int i = 4; i < words.size(); ++i)
-        node.node.push_back(static_cast<std::size_t>(words[i].toULongLong()));
+    auto* drag = new QDrag(m_view);
+    drag->setMimeData(data);
+    drag->exec(Qt::CopyAction | Qt::MoveAction, Qt::CopyAction);
+    hideDropPlace();
+}
+
+std::optional<LadderPage::DropPlace> LadderPage::dropPlaceAt(const QPointF& scenePosition,
+                                                             const QByteArray& payload) const {
+    const std::optional<DragSource> source = readDragSource(payload);
+    if (!source || source->page != reinterpret_cast<quintptr>(this) || !m_tool->edits() ||
+        !editable())
+        return std::nullopt;
     const LadderCursor target = cursorAt(scenePosition);
     if (!target.node)
-        return;
+        return std::nullopt;
     NetworkItem* item = networkItem(target.step, target.network);
-    const int index = item->elementAt(item->mapFromScene(scenePosition));
+    const QPointF local = item->mapFromScene(scenePosition);
+    const int index = item->elementAt(local);
+    QRectF element = index >= 0 ? item->elementRect(item->layout().elements[index]) : QRectF();
     const ladder::Side side =
-        index >= 0 && item->mapFromScene(scenePosition).x() <
-                          item->elementRect(item->layout().elements[index]).center().x()
-            ? ladder::Side::Before
-            : ladder::Side::After;
-    moveElement({step, network, node, std::nullopt, -1}, target, side);
+        index >= 0 && local.x() < element.center().x() ? ladder::Side::Before : ladder::Side::After;
+    const qreal x = side == ladder::Side::Before ? element.left() : element.right();
+    const QRectF mark = index >= 0 ? QRectF(x - kDropPlaceWidth / 2, element.top(), kDropPlaceWidth,
+                                            element.height())
+                                   : QRectF();
+    return DropPlace{{source->step, source->network, source->node, std::nullopt, -1},
+                     target,
+                     side,
+                     item->mapRectToScene(mark)};
+}
+
+void LadderPage::showDropPlace(const QPointF& scenePosition, const QByteArray& payload, bool move) {
+    const std::optional<DropPlace> place = dropPlaceAt(scenePosition, payload);
+    if (!place) {
+        hideDropPlace();
+        return;
+    }
+    if (!m_dropPlace) {
+        m_dropPlace = m_scene->addRect(QRectF(), Qt::NoPen);
+        m_dropPlace->setZValue(1000); // above every network
+    }
+    m_dropPlace->setBrush(palette().color(QPalette::Highlight));
+    m_dropPlace->setRect(place->mark);
+    m_dropPlace->setVisible(!place->mark.isEmpty());
+    setMessage(move ? tr("Moving: drop it before or after an element. Release Shift to copy.")
+                    : tr("Copying: drop it before or after an element. Hold Shift to move."));
+}
+
+void LadderPage::hideDropPlace() {
+    if (m_dropPlace && m_dropPlace->isVisible()) {
+        m_dropPlace->hide();
+        setMessage({});
+    }
+}
+
+bool LadderPage::isDropPlaceShown() const {
+    return m_dropPlace && m_dropPlace->isVisible();
+}
+
+void LadderPage::dropElement(const QPointF& scenePosition, const QByteArray& payload, bool move) {
+    hideDropPlace();
+    const std::optional<DropPlace> place = dropPlaceAt(scenePosition, payload);
+    if (!place)
+        return;
+    if (move)
+        moveElement(place->from, place->to, place->side);
+    else
+        copyElement(place->from, place->to, place->side);
 }
 
 // ----- live

@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "LadderTool.h"
 
+#include "LadderPage.h"
+
+#include "document/ProjectDocument.h"
+
 namespace rs::ui {
 
-// Only an element dragged from this page drops on it, and only while it drags.
-void LadderTool::dropped(const QPointF&, const QByteArray&) {}
+void LadderTool::dropped(const QPointF& at, const QByteArray& payload, bool move) {
+    if (edits())
+        m_page.dropElement(at, payload, move);
+}
 
 } // namespace rs::ui

@@ -34,7 +34,9 @@ public:
     virtual void doubleClicked(const QPointF& at) = 0;
     virtual void menuRequested(const QPointF& at, const QPoint& globalPosition) = 0;
     virtual void dragStarted(const QPointF& from) = 0;
-    virtual void dropped(const QPointF& at, const QByteArray& payload);
+    // Only an element dragged from this page drops on it (the payload names
+    // the page), and only where the page edits.
+    virtual void dropped(const QPointF& at, const QByteArray& payload, bool move);
 
     // Keys: Space, Enter, and the menu key.
     virtual void toggle() = 0;

@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QContextMenuEvent>
 #include <QMimeData>
+#include <QPainter>
 #include <QScrollBar>
 #include <QWheelEvent>
 
@@ -18,12 +19,15 @@ namespace {
 constexpr qreal kZoomStep = 1.25;
 constexpr int kPixelsPerNotch = 120;
 constexpr int kGlideMs = 120;
+constexpr int kFocusBand = 2; // pixels around the viewport, outside what scrolls
 
 } // namespace
 
 LadderView::LadderView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(scene, parent) {
     setAlignment(Qt::AlignLeft | Qt::AlignTop);
     setFocusPolicy(Qt::StrongFocus);
+    setFrameShape(QFrame::NoFrame);
+    setViewportMargins(kFocusBand, kFocusBand, kFocusBand, kFocusBand);
     setAcceptDrops(true);
     // Items paint opaque backgrounds and restore the painter themselves.
     setOptimizationFlags(QGraphicsView::DontSavePainterState);
@@ -33,6 +37,33 @@ LadderView::LadderView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(s
     m_glide.setEasingCurve(QEasingCurve::OutCubic);
     connect(&m_glide, &QVariantAnimation::valueChanged, this,
             [this](const QVariant& value) { verticalScrollBar()->setValue(value.toInt()); });
+}
+
+bool LadderView::event(QEvent* event) {
+    const bool handled = QGraphicsView::event(event);
+    if (event->type() == QEvent::Paint) {
+        // The band is the view's own, not the viewport's: scrolling never moves it.
+        QPainter painter(this);
+        painter.setClipRegion(QRegion(rect()).subtracted(viewport()->geometry()));
+        if (hasFocus()) {
+            painter.fillRect(rect(), palette().color(QPalette::Highlight));
+        } else {
+            painter.fillRect(rect(), palette().color(QPalette::Base));
+            painter.setPen(palette().color(QPalette::Mid));
+            painter.drawRect(rect().adjusted(0, 0, -1, -1));
+        }
+    }
+    return handled;
+}
+
+void LadderView::focusInEvent(QFocusEvent* event) {
+    QGraphicsView::focusInEvent(event);
+    update();
+}
+
+void LadderView::focusOutEvent(QFocusEvent* event) {
+    QGraphicsView::focusOutEvent(event);
+    update();
 }
 
 void LadderView::setZoom(qreal zoom) {
@@ -140,22 +171,45 @@ void LadderView::contextMenuEvent(QContextMenuEvent* event) {
     event->accept();
 }
 
+namespace {
+
+// The manual's drag and drop copies (11.5); Shift moves.
+bool movesElement(const QDropEvent& event) {
+    return event.modifiers() & Qt::ShiftModifier;
+}
+
+} // namespace
+
 void LadderView::dragEnterEvent(QDragEnterEvent* event) {
-    if (event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
-        event->acceptProposedAction();
+    dragMoveEvent(event);
 }
 
 void LadderView::dragMoveEvent(QDragMoveEvent* event) {
-    if (event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
-        event->acceptProposedAction();
+    if (!event->mimeData()->hasFormat(QLatin1String(kElementMimeType))) {
+        event->ignore();
+        return;
+    }
+    const bool move = movesElement(*event);
+    event->setDropAction(move ? Qt::MoveAction : Qt::CopyAction);
+    event->accept();
+    emit dragHovered(mapToScene(event->position().toPoint()),
+                     event->mimeData()->data(QLatin1String(kElementMimeType)), move);
+}
+
+void LadderView::dragLeaveEvent(QDragLeaveEvent* event) {
+    QGraphicsView::dragLeaveEvent(event);
+    emit dragLeft();
 }
 
 void LadderView::dropEvent(QDropEvent* event) {
     if (!event->mimeData()->hasFormat(QLatin1String(kElementMimeType)))
         return;
+    const bool move = movesElement(*event);
+    event->setDropAction(move ? Qt::MoveAction : Qt::CopyAction);
+    event->accept();
+    emit dragLeft();
     emit dropped(mapToScene(event->position().toPoint()),
-                 event->mimeData()->data(QLatin1String(kElementMimeType)));
-    event->acceptProposedAction();
+                 event->mimeData()->data(QLatin1String(kElementMimeType)), move);
 }
 
 } // namespace rs::ui

@@ -11,7 +11,8 @@ class QAction;
 
 namespace rs::ui {
 
-// The scrolling view of a ladder page's scene. It zooms with Ctrl+wheel and
+// The scrolling view of a ladder page's scene, in a band that takes the
+// highlight colour while the view has the keyboard focus. It zooms with Ctrl+wheel and
 // hands clicks, double clicks, context menus and drags to the page, which
 // knows what the items stand for. A key pressed in the view triggers the
 // page's action with that shortcut.
@@ -43,13 +44,19 @@ signals:
     void menuRequested(const QPointF& scenePosition, const QPoint& globalPosition);
     // The left button went down at `from` and the mouse moved far enough to drag.
     void dragStarted(const QPointF& from);
-    void dropped(const QPointF& scenePosition, const QByteArray& payload);
+    // An element's drag is over the view: plain copies, with Shift it moves.
+    void dragHovered(const QPointF& scenePosition, const QByteArray& payload, bool move);
+    void dragLeft();
+    void dropped(const QPointF& scenePosition, const QByteArray& payload, bool move);
     void zoomChanged(qreal zoom);
     void cutRequested();
     void copyRequested();
     void pasteRequested();
 
 protected:
+    bool event(QEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -59,6 +66,7 @@ protected:
     void contextMenuEvent(QContextMenuEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dragMoveEvent(QDragMoveEvent* event) override;
+    void dragLeaveEvent(QDragLeaveEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
 private:

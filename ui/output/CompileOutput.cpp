@@ -76,9 +76,10 @@ void CompileOutput::showResult(const QString& projectName, std::string_view cano
     const QIcon warningIcon(QStringLiteral(":/icons/warning.svg"));
     auto* start = new QTreeWidgetItem(this);
     start->setText(MessageColumn, tr("Compiling %1").arg(projectName));
+    const project::TextPlaces places(canonicalText);
     for (const auto& diagnostic : result.diagnostics) {
         const bool error = diagnostic.severity == lang::Severity::Error;
-        const project::TextPlace place = project::placeOfLine(canonicalText, diagnostic.line);
+        const project::TextPlace place = places.of(diagnostic.line);
         auto* item = new QTreeWidgetItem(this);
         item->setIcon(PlaceColumn, error ? errorIcon : warningIcon);
         item->setText(PlaceColumn, placeText(place, diagnostic.column));

@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "output/CompileRun.h"
 
-#include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
 #include "compiler/ImageCodec.h"
 #include "document/ProjectDocument.h"
 #include "document/ProjectPaths.h"
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
+#include "output/ProjectCompile.h"
 #include "project/ProjectFile.h"
-#include "project/TextPlace.h"
 #include "text/TextPage.h"
 
 #include <QCoreApplication>
@@ -54,7 +53,16 @@ ProjectDocument* CompileRun::document() const {
     return m_document;
 }
 
-void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& options) {
+void CompileRun::forget(const ProjectDocument* document) {
+    if (m_document != document)
+        return;
+    m_document = nullptr;
+    m_output->clear();
+    m_outputDock->hide();
+}
+
+void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& options,
+                       Image image) {
     if (!document || isRunning())
         return;
     if (m_textPage->document() == document)
@@ -71,16 +79,15 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
     // The image goes beside a project that has a file of its own; it is made
     // and written on the worker too, as a large one takes a while.
     QString imagePath;
-    if (hasOwnFile(*document)) {
+    m_checkOnly = image == Image::CheckOnly;
+    if (hasOwnFile(*document) && !m_checkOnly) {
         const QFileInfo info(document->path());
         imagePath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".hps"));
     }
     m_watcher->setFuture(QtConcurrent::run([text = m_compiledText, options, imagePath,
+                                            executableDir = QCoreApplication::applicationDirPath(),
                                             projectPath = document->path()] {
-        const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
-            text, blocks::LibraryPlaces{QCoreApplication::applicationDirPath(), projectPath, {}});
-        Compiled compiled{
-            blocks::compileProject(read.read.project, read.read.diagnostics, options), {}, {}};
+        Compiled compiled{compileProjectText(text, executableDir, projectPath, options), {}, {}};
         if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
             try {
                 compiled.imageError =
@@ -103,25 +110,26 @@ void CompileRun::finish() {
     const Compiled compiled = m_watcher->result();
     const compiler::CompileResult& result = compiled.result;
     ProjectDocument* document = m_document;
+    if (!document) {
+        // Closed while compiling: its result belongs to no open project.
+        m_output->clear();
+        emit runningChanged();
+        return;
+    }
     const QString written = QDir::toNativeSeparators(compiled.imagePath);
-    m_output->showResult(document ? document->displayName() : QString(), m_compiledText, result,
-                         written, compiled.imageError);
+    m_output->showResult(document->displayName(), m_compiledText, result, written,
+                         compiled.imageError);
     if (!compiled.imageError.isEmpty())
         QMessageBox::warning(m_window, tr("Compile"), compiled.imageError);
-    if (document && m_ladderPage->document() == document) {
+    if (m_ladderPage->document() == document) {
         // The ladder marks the elements the diagnostics of its unit concern.
-        lang::Diagnostics onLadder;
-        for (lang::Diagnostic diagnostic : result.diagnostics) {
-            const project::TextPlace place = project::placeOfLine(m_compiledText, diagnostic.line);
-            if (place.kind != project::TextPlace::Kind::UnitCode ||
-                place.station != m_ladderPage->station())
-                continue;
-            diagnostic.line = place.line;
-            onLadder.push_back(diagnostic);
-        }
-        m_ladderPage->setDiagnostics(onLadder);
+        m_ladderPage->setDiagnostics(
+            unitCodeDiagnostics(m_compiledText, result.diagnostics, m_ladderPage->station()));
     }
-    if (document && result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
+    if (result.errors() == 0 && m_checkOnly)
+        emit message(tr("Checked without errors. The compiled file is not written, as the "
+                        "project has unsaved changes."));
+    else if (result.errors() == 0 && written.isEmpty() && compiled.imageError.isEmpty())
         emit message(tr("Compiled without errors. Save the project to write the compiled file."));
     else
         emit message(m_output->closingLine());

@@ -37,12 +37,20 @@ public:
     // Waits for a compile still running.
     ~CompileRun() override;
 
+    // What becomes of the image of a compile without errors.
+    enum class Image {
+        Write,    // written beside a project that has a file of its own
+        CheckOnly // not written: the project's file is older than what is compiled
+    };
     // Starts compiling the project; nothing while a compile runs.
-    void start(ProjectDocument* document, const compiler::CheckOptions& options);
+    void start(ProjectDocument* document, const compiler::CheckOptions& options,
+               Image image = Image::Write);
     // From start until the result is shown.
     bool isRunning() const { return m_running; }
     // The project compiled last, whose places the Output dock lists; null once closed.
     ProjectDocument* document() const;
+    // The project is closing: its result leaves the Output dock, which goes too.
+    void forget(const ProjectDocument* document);
     // The status bar's busy bar, shown while a compile runs.
     QProgressBar* progressBar() const { return m_progress; }
 
@@ -65,6 +73,7 @@ private:
     std::unique_ptr<QFutureWatcher<Compiled>> m_watcher;
     QPointer<ProjectDocument> m_document;
     bool m_running = false;
+    bool m_checkOnly = false;
     std::string m_compiledText;
 };
 

@@ -6,11 +6,15 @@
 #include "shell/StatusColors.h"
 
 #include <QAbstractProxyModel>
+#include <QKeyEvent>
 #include <QLineEdit>
 
 namespace rs::ui {
 
 namespace {
+
+// Why the editor's name is refused, kept on the editor as it is typed.
+constexpr const char* kRefusalProperty = "refusal";
 
 const VariableTableModel* sourceModel(const QAbstractItemModel* model) {
     while (auto* proxy = qobject_cast<const QAbstractProxyModel*>(model))
@@ -44,10 +48,26 @@ QWidget* SymbolicNameDelegate::createEditor(QWidget* parent, const QStyleOptionV
                 if (problem)
                     palette.setColor(QPalette::Text, errorTextColor(normal));
                 editor->setPalette(palette);
-                editor->setToolTip(problem ? QString::fromStdString(*problem) : QString());
-                emit problemChanged(problem ? QString::fromStdString(*problem) : QString());
+                const QString refusal = problem ? QString::fromStdString(*problem) : QString();
+                editor->setToolTip(refusal);
+                editor->setProperty(kRefusalProperty, refusal);
+                emit problemChanged(refusal);
             });
     return editor;
+}
+
+bool SymbolicNameDelegate::eventFilter(QObject* object, QEvent* event) {
+    if (event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        const bool leaving = key == Qt::Key_Return || key == Qt::Key_Enter || key == Qt::Key_Tab ||
+                             key == Qt::Key_Backtab;
+        const QString refusal = object->property(kRefusalProperty).toString();
+        if (leaving && !refusal.isEmpty()) {
+            emit problemChanged(refusal);
+            return true;
+        }
+    }
+    return QStyledItemDelegate::eventFilter(object, event);
 }
 
 } // namespace rs::ui

@@ -8,7 +8,9 @@ namespace rs::ui {
 class VariableTableModel;
 
 // Edits a symbolic name and checks it as it is typed: the editor turns red
-// and says why while the name breaks the manual's rules or is taken.
+// and says why while the name breaks the manual's rules or is taken. Return
+// or Tab on a refused name keeps the editor open with what was typed, so it
+// can be mended; Escape gives it up.
 class SymbolicNameDelegate : public QStyledItemDelegate {
     Q_OBJECT
 public:
@@ -16,6 +18,9 @@ public:
 
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
                           const QModelIndex& index) const override;
+
+protected:
+    bool eventFilter(QObject* object, QEvent* event) override;
 
 signals:
     // Why the typed name is refused; empty once it is fine.

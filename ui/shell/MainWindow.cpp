@@ -3,6 +3,7 @@
 
 #include "compiler/ProgramCheck.h"
 #include "document/ProjectDocument.h"
+#include "document/ProjectPaths.h"
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
@@ -79,6 +80,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     createStatusBar();
     m_simulation = new SimulationMode(this);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
+    m_textPage->setWarnUnconfiguredIo(m_preferences.warnUnconfiguredIo);
 
     const OpenProjects::Actions& projectActions = m_projects->actions();
     m_welcomePage->offer({projectActions.newProject, projectActions.open, projectActions.example});
@@ -99,6 +101,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     connect(m_ladderPage, &LadderPage::textRequested, this, [this] {
         showPage({PageRef::Kind::Code, m_ladderPage->document(), m_ladderPage->station(),
                   m_ladderPage->sequence()});
+    });
+    connect(m_textPage, &TextPage::ladderRequested, this, [this] {
+        showPage({PageRef::Kind::Ladder, m_textPage->document(), m_textPage->station(),
+                  m_current.kind == PageRef::Kind::Code ? m_current.sequence : 0});
     });
     connect(m_ladderPage, &LadderPage::newSequenceRequested, this,
             [this] { m_units->newSequence(m_ladderPage->document(), m_ladderPage->station()); });
@@ -402,6 +408,7 @@ void MainWindow::documentAdded(ProjectDocument* document) {
 
 void MainWindow::documentRemoved(ProjectDocument* document) {
     m_undoGroup.removeStack(document->undoStack());
+    m_compileRun->forget(document);
     if (m_current.document == document) {
         m_current = {};
         m_textPage->showUnit(nullptr, 0);
@@ -618,6 +625,7 @@ void MainWindow::editPreferences() {
         applyTheme(m_preferences.theme);
     m_projects->setAutosaveInterval(m_preferences.autosaveMinutes);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
+    m_textPage->setWarnUnconfiguredIo(m_preferences.warnUnconfiguredIo);
 }
 
 void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition) {
@@ -669,9 +677,41 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
 // ----- compiling
 
 void MainWindow::compile() {
+    ProjectDocument* document = currentDocument();
+    if (!document || isCompiling())
+        return;
+    if (m_textPage->document() == document)
+        m_textPage->applyNow();
+    // The image written beside a project must come from that file as saved, or
+    // it would match no source a reviewer can read (the image's project CRC
+    // names the text it came from).
+    CompileRun::Image image = CompileRun::Image::Write;
+    if (hasOwnFile(*document) && document->isModified()) {
+        QMessageBox box(QMessageBox::Question, tr("Compile"),
+                        tr("%1 has changes that are not saved.").arg(document->displayName()),
+                        QMessageBox::Save | QMessageBox::Ignore | QMessageBox::Cancel, this);
+        box.setInformativeText(
+            tr("The compiled file (.hps) is written beside the project and must come from the "
+               "saved file. Save first, or only check the changes without writing the "
+               "compiled file."));
+        box.button(QMessageBox::Save)->setText(tr("&Save and Compile"));
+        box.button(QMessageBox::Ignore)->setText(tr("C&heck Only"));
+        box.setDefaultButton(QMessageBox::Save);
+        switch (box.exec()) {
+        case QMessageBox::Save:
+            if (!m_projects->save(document))
+                return;
+            break;
+        case QMessageBox::Ignore:
+            image = CompileRun::Image::CheckOnly;
+            break;
+        default:
+            return;
+        }
+    }
     compiler::CheckOptions options;
     options.warnUnconfiguredIo = m_preferences.warnUnconfiguredIo;
-    m_compileRun->start(currentDocument(), options);
+    m_compileRun->start(document, options, image);
 }
 
 void MainWindow::showCompilePlace(const project::TextPlace& place, int column) {

@@ -28,6 +28,8 @@ ForcesView::ForcesView(SimulationSession* session, QWidget* parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->verticalHeader()->hide();
+    // Columns as wide as their heading or longest entry, in any language.
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_release->setObjectName(QStringLiteral("releaseForceButton"));
     m_releaseAll->setObjectName(QStringLiteral("releaseAllForcesButton"));

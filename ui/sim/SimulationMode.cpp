@@ -29,6 +29,7 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QTreeWidget>
 
 #include <algorithm>
 
@@ -38,7 +39,8 @@ namespace {
 
 constexpr int kMessageMs = 4000;
 constexpr int kBottomDockHeight = 230;
-constexpr int kErrorCodeRegister = 11; // SR_ErrorCode
+constexpr double kMostBottomDockShare = 0.3; // of the window's height: the page keeps the rest
+constexpr int kErrorCodeRegister = 11;       // SR_ErrorCode
 constexpr int kProgressSteps = 1000;
 
 // The operand as the ladder page spells it ("/I0.2" for P(/I0.2)).
@@ -116,6 +118,10 @@ SimulationMode::SimulationMode(MainWindow* window)
             });
     connect(&m_session, &SimulationSession::scenarioFinished, this,
             &SimulationMode::scenarioFinished);
+    connect(&m_session, &SimulationSession::projectChanged, this, [this] {
+        m_scenarios->tree()->clear();
+        m_scenariosDock->hide();
+    });
 
     connect(m_controls, &SimulationControls::simulateToggled, this, [this](bool on) {
         if (!on) {
@@ -185,14 +191,35 @@ QString SimulationMode::begin() {
 }
 
 void SimulationMode::showSimulationDocks(const ProjectDocument* document) {
-    for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock})
-        dock->show();
-    if (document->project().stations().size() > 1)
-        m_busDock->show();
+    if (m_lastSimulationDocks) {
+        for (QDockWidget* dock : *m_lastSimulationDocks)
+            dock->show();
+    } else {
+        for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock})
+            dock->show();
+        if (document->project().stations().size() > 1)
+            m_busDock->show();
+    }
+    if (!m_simulationDocksShown)
+        showBottomDocks();
+    m_simulationDocksShown = true;
     m_forcesDock->raise();
-    showBottomDocks();
     message(
         tr("Simulating %1. Editing the project ends the simulation.").arg(document->displayName()));
+}
+
+void SimulationMode::hideSimulationDocks() {
+    if (!m_simulationDocksShown)
+        return;
+    m_simulationDocksShown = false;
+    std::vector<QDockWidget*> shown;
+    for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock, m_busDock})
+        if (dock->isVisible()) {
+            shown.push_back(dock);
+            dock->hide();
+        }
+    if (!shown.empty())
+        m_lastSimulationDocks = std::move(shown);
 }
 
 void SimulationMode::end() {
@@ -226,7 +253,8 @@ void SimulationMode::scenarioFinished(const SimulationSession::ScenarioResult& r
 
 void SimulationMode::showBottomDocks() {
     // Room for a few traces and list rows; the page keeps the rest.
-    const int height = std::max(m_waveformDock->height(), kBottomDockHeight);
+    const int height = std::min(std::max(m_waveformDock->height(), kBottomDockHeight),
+                                static_cast<int>(m_window->height() * kMostBottomDockShare));
     m_window->resizeDocks({m_waveformDock}, {height}, Qt::Vertical);
     m_window->resizeDocks({m_waveformDock}, {m_window->width() * 3 / 5}, Qt::Horizontal);
 }
@@ -244,6 +272,8 @@ void SimulationMode::stateChanged() {
         m_liveLadder = nullptr;
     }
     m_unitCode->setVisible(simulation != nullptr);
+    if (!simulation)
+        hideSimulationDocks();
     refresh();
 }
 

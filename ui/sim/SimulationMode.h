@@ -10,6 +10,9 @@
 #include <QObject>
 #include <QPointer>
 
+#include <optional>
+#include <vector>
+
 class QDockWidget;
 class QLabel;
 class QProgressBar;
@@ -78,6 +81,8 @@ private:
     void scenarioFinished(const SimulationSession::ScenarioResult& result);
     // The docks of a running simulation, and the status bar's word that it runs.
     void showSimulationDocks(const ProjectDocument* document);
+    // Back to editing: the simulation's docks go, remembered for the next time.
+    void hideSimulationDocks();
     void showBottomDocks();
     void message(const QString& text);
 
@@ -98,6 +103,9 @@ private:
     QDockWidget* m_busDock = nullptr;
     QDockWidget* m_waveformDock = nullptr;
     QDockWidget* m_scenariosDock = nullptr;
+    bool m_simulationDocksShown = false;
+    // Which simulation docks the user had open when the last simulation ended.
+    std::optional<std::vector<QDockWidget*>> m_lastSimulationDocks;
     LadderLiveState m_live;
     LiveLadderBuilder m_builder;
     QPointer<LadderPage> m_liveLadder; // the page showing m_live, if any

@@ -109,6 +109,18 @@ QString SimulationSession::begin(ProjectDocument* document) {
     if (QString error = compile(document); !error.isEmpty())
         return error;
     m_simulation = powerOn(m_images, document->project());
+    if (document != m_lastSimulated) {
+        m_lastSimulated = document;
+        connect(document, &QObject::destroyed, this, [this](QObject* gone) {
+            if (gone != m_lastSimulated)
+                return;
+            m_lastSimulated = nullptr;
+            m_recorder.removeAll();
+            emit projectChanged();
+        });
+        m_recorder.removeAll();
+        emit projectChanged();
+    }
     m_recorder.clear();
     m_recorder.sample(*m_simulation);
     emit stateChanged();

@@ -133,6 +133,10 @@ signals:
     // Virtual time reached of the most the scenario can run.
     void scenarioProgress(qint64 reachedMs, qint64 totalMs);
     void scenarioFinished(const rs::ui::SimulationSession::ScenarioResult& result);
+    // The simulation began on another project than the last one, or the last
+    // one closed: what was chosen for it (traces, watched variables, scenario
+    // results) goes.
+    void projectChanged();
 
 private:
     struct ScenarioJob;
@@ -145,6 +149,8 @@ private:
     std::int64_t wallMs() const { return m_wall.elapsed(); }
 
     QPointer<ProjectDocument> m_document;
+    // The project simulated last, compared only; it stays after the end, until it closes.
+    const QObject* m_lastSimulated = nullptr;
     std::vector<compiler::UnitImage> m_images;
     std::unique_ptr<sim::Simulation> m_simulation;
     sim::RealTimePacer m_pacer;

@@ -4,6 +4,7 @@
 #include "SimulationSession.h"
 #include "document/ProjectDocument.h"
 #include "project/VariableTable.h"
+#include "shell/CompleterKeys.h"
 #include "shell/StatusColors.h"
 
 #include <QCompleter>
@@ -31,6 +32,7 @@ WatchView::WatchView(SimulationSession* session, QWidget* parent)
     m_completer->setFilterMode(Qt::MatchContains);
     m_completer->setModel(new QStringListModel(m_completer));
     m_input->setCompleter(m_completer);
+    finishCompletionInOneKey(m_completer);
     auto* addButton = new QPushButton(tr("&Watch"), this);
     m_message->setObjectName(QStringLiteral("watchMessage"));
     markAsError(m_message);
@@ -41,6 +43,9 @@ WatchView::WatchView(SimulationSession* session, QWidget* parent)
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setContextMenuPolicy(Qt::CustomContextMenu);
     m_table->verticalHeader()->hide();
+    // Variable and name as wide as their heading or longest entry, in any language.
+    for (const int column : {VariableColumn, NameColumn})
+        m_table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setToolTip(tr("Type a value to set an input or force any other variable"));
 
@@ -65,6 +70,10 @@ WatchView::WatchView(SimulationSession* session, QWidget* parent)
     connect(m_table, &QTableWidget::itemChanged, this, &WatchView::valueEdited);
     connect(m_table, &QWidget::customContextMenuRequested, this, &WatchView::showMenu);
     connect(m_session, &SimulationSession::updated, this, &WatchView::refresh);
+    connect(m_session, &SimulationSession::projectChanged, this, [this] {
+        m_variables.clear();
+        rebuild();
+    });
     connect(m_session, &SimulationSession::stateChanged, this, [this] {
         static_cast<QStringListModel*>(m_completer->model())
             ->setStringList(m_session->operandWords());

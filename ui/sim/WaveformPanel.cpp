@@ -6,6 +6,7 @@
 #include "document/ProjectDocument.h"
 #include "project/ProjectFile.h"
 #include "project/VariableTable.h"
+#include "shell/CompleterKeys.h"
 #include "shell/StatusColors.h"
 
 #include <QCompleter>
@@ -31,6 +32,7 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
     m_completer->setFilterMode(Qt::MatchContains);
     m_completer->setModel(new QStringListModel(m_completer));
     m_input->setCompleter(m_completer);
+    finishCompletionInOneKey(m_completer);
     markAsError(m_message);
     m_message->hide();
 
@@ -98,6 +100,10 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
                    : QString();
     });
     connect(m_session, &SimulationSession::updated, m_view, &WaveformView::recordingChanged);
+    connect(m_session, &SimulationSession::projectChanged, this, [this] {
+        m_view->recordingChanged();
+        m_remove->setEnabled(false);
+    });
     connect(m_session, &SimulationSession::stateChanged, this, [this] {
         static_cast<QStringListModel*>(m_completer->model())
             ->setStringList(m_session->operandWords());

@@ -6,10 +6,15 @@
 #include "project/UnitText.h"
 #include "shell/PageTitle.h"
 #include "shell/UnitCaption.h"
+#include "text/CodeCheck.h"
 #include "text/ProgramEditor.h"
 
+#include <QAction>
 #include <QRegularExpression>
+#include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace rs::ui {
 
@@ -22,10 +27,19 @@ std::string_view view(const QByteArray& bytes) {
 } // namespace
 
 TextPage::TextPage(QWidget* parent)
-    : QWidget(parent), m_title(new PageTitle(this)), m_editor(new ProgramEditor(this)) {
+    : QWidget(parent), m_title(new PageTitle(this)), m_toolBar(new QToolBar(this)),
+      m_editor(new ProgramEditor(this)), m_check(new CodeCheck(this)) {
+    connect(m_check, &CodeCheck::checked, this, &TextPage::checked);
     m_editor->setObjectName(QStringLiteral("programEditor"));
+    m_toolBar->setObjectName(QStringLiteral("textToolBar"));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    QAction* ladder = m_toolBar->addAction(tr("Ladder"));
+    ladder->setObjectName(QStringLiteral("textLadderAction"));
+    ladder->setToolTip(tr("Show this code as ladder networks"));
+    connect(ladder, &QAction::triggered, this, &TextPage::ladderRequested);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
+    layout->addWidget(m_toolBar);
     layout->addWidget(m_editor, 1);
 
     m_applyTimer.setSingleShot(true);
@@ -73,6 +87,7 @@ void TextPage::showUnit(ProjectDocument* document, int station) {
 void TextPage::updateTitle() {
     if (!m_document)
         return;
+    m_toolBar->setVisible(m_station != kWholeProject);
     if (m_station == kWholeProject) {
         m_title->setTitle(tr("%1 — Project Text").arg(m_document->displayName()));
         m_title->setSubtitle(tr("This file has errors, so it is shown as text until they are "
@@ -119,13 +134,16 @@ bool TextPage::applyNow() {
         project::readUnitText(m_document->project(), m_station, view(text));
     setDiagnostics(read.diagnostics);
     m_hasErrors = !read.ok();
-    if (m_hasErrors || text == m_shown)
-        return !m_hasErrors;
-    m_canonical = QByteArray::fromStdString(project::unitText(read.project, m_station));
-    m_shown = text;
-    m_applying = true;
-    m_document->replace(tr("Edit Code of Pluto %1").arg(m_station), read.project);
-    m_applying = false;
+    if (m_hasErrors)
+        return false;
+    if (text != m_shown) {
+        m_canonical = QByteArray::fromStdString(project::unitText(read.project, m_station));
+        m_shown = text;
+        m_applying = true;
+        m_document->replace(tr("Edit Code of Pluto %1").arg(m_station), read.project);
+        m_applying = false;
+    }
+    checkCode();
     return true;
 }
 
@@ -172,6 +190,7 @@ void TextPage::followModel() {
     project::UnitTextResult read =
         project::readUnitText(m_document->project(), m_station, view(canonical));
     setDiagnostics(read.diagnostics);
+    checkCode();
 }
 
 void TextPage::setEditorText(const QByteArray& text, bool keepPlace) {
@@ -189,9 +208,51 @@ void TextPage::setEditorText(const QByteArray& text, bool keepPlace) {
 }
 
 void TextPage::setDiagnostics(lang::Diagnostics diagnostics) {
+    m_readDiagnostics = diagnostics;
+    ++m_checkTicket;
+    showDiagnostics(std::move(diagnostics));
+}
+
+void TextPage::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    checkCode();
+}
+
+void TextPage::checkCode() {
+    // The compiler checks the project: text with reading errors is not in it.
+    // A hidden page is checked when it shows.
+    if (isVisible() && m_document && m_station != kWholeProject &&
+        lang::errorCount(m_readDiagnostics) == 0)
+        m_check->request(m_document->project(), m_document->path(), m_station, m_checkTicket);
+}
+
+void TextPage::showDiagnostics(lang::Diagnostics diagnostics) {
     m_diagnostics = std::move(diagnostics);
     m_editor->setDiagnostics(m_diagnostics);
     emit diagnosticsChanged(m_diagnostics);
+}
+
+void TextPage::checked(quint64 ticket, const lang::Diagnostics& diagnostics) {
+    if (ticket != m_checkTicket)
+        return;
+    // The compiler reports the reading's warnings again; each is shown once.
+    lang::Diagnostics all = m_readDiagnostics;
+    for (const lang::Diagnostic& found : diagnostics)
+        if (std::none_of(all.begin(), all.end(), [&](const lang::Diagnostic& known) {
+                return known.line == found.line && known.column == found.column &&
+                       known.message == found.message;
+            }))
+            all.push_back(found);
+    lang::sortByPlace(all);
+    showDiagnostics(std::move(all));
+}
+
+bool TextPage::isChecking() const {
+    return m_check->isBusy();
+}
+
+void TextPage::setWarnUnconfiguredIo(bool warn) {
+    m_check->setWarnUnconfiguredIo(warn);
 }
 
 } // namespace rs::ui

@@ -7,8 +7,11 @@
 #include <QTimer>
 #include <QWidget>
 
+class QToolBar;
+
 namespace rs::ui {
 
+class CodeCheck;
 class PageTitle;
 class ProgramEditor;
 class ProjectDocument;
@@ -18,8 +21,13 @@ class ProjectDocument;
 // text follows every other change of the model. While the text has errors it
 // stays in the editor only, and the project keeps the last text without.
 //
+// After the typing pause, the compiler checks the unit too, off the window's
+// thread (CodeCheck), and its findings join the reading's in the editor's
+// marks and in diagnostics().
+//
 // A damaged project (a file that reads with errors) is shown here as a whole
-// until it reads cleanly.
+// until it reads cleanly. A unit's code has a Ladder button back to its
+// ladder page, as the ladder page has a Text button.
 class TextPage : public QWidget {
     Q_OBJECT
 public:
@@ -47,19 +55,32 @@ public:
     bool formatText();
 
     const lang::Diagnostics& diagnostics() const { return m_diagnostics; }
+    // The compiler's check of the shown code runs or waits.
+    bool isChecking() const;
+    void setWarnUnconfiguredIo(bool warn);
 
 signals:
     void diagnosticsChanged(const lang::Diagnostics& diagnostics);
     // A damaged project has just read cleanly and is a project of units again.
     void repaired(ProjectDocument* document);
+    // The tool bar's Ladder: the same code as ladder networks.
+    void ladderRequested();
+
+protected:
+    void showEvent(QShowEvent* event) override;
 
 private:
     void followModel();
     void setEditorText(const QByteArray& text, bool keepPlace);
+    // What reading the text found; the compiler's check follows when it read.
     void setDiagnostics(lang::Diagnostics diagnostics);
+    void showDiagnostics(lang::Diagnostics diagnostics);
+    void checkCode();
+    void checked(quint64 ticket, const lang::Diagnostics& diagnostics);
     void updateTitle();
 
     PageTitle* m_title;
+    QToolBar* m_toolBar; // a unit's code only: a damaged project has no ladder
     ProgramEditor* m_editor;
     QTimer m_applyTimer;
     QPointer<ProjectDocument> m_document;
@@ -70,6 +91,9 @@ private:
     bool m_settingText = false;
     bool m_applying = false;
     lang::Diagnostics m_diagnostics;
+    lang::Diagnostics m_readDiagnostics;
+    CodeCheck* m_check;
+    quint64 m_checkTicket = 0; // of the text shown; an older check's result is dropped
 };
 
 } // namespace rs::ui

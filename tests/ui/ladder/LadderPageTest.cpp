@@ -24,6 +24,8 @@
 #include <QImage>
 #include <QInputDialog>
 #include <QLineEdit>
+#include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProcess>
 #include <QScrollBar>
 #include <QSignalSpy>
@@ -38,6 +40,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <tuple>
 
 namespace {
@@ -167,6 +170,15 @@ TEST_F(LadderPageTest, TheCodeNodeOpensTheLadderAndTheTextStaysReachable) {
     page().action(QStringLiteral("ladderTextAction"))->trigger();
     EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Code);
     action("codeViewAction")->trigger();
+    EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Ladder);
+    // The text page has a visible way back, as the ladder has to the text (issue 17).
+    page().action(QStringLiteral("ladderTextAction"))->trigger();
+    auto* back = window.findChild<QToolBar*>(QStringLiteral("textToolBar"));
+    ASSERT_NE(back, nullptr);
+    EXPECT_TRUE(back->isVisible());
+    QAction* ladder = window.findChild<QAction*>(QStringLiteral("textLadderAction"));
+    ASSERT_NE(ladder, nullptr);
+    QTest::mouseClick(back->widgetForAction(ladder), Qt::LeftButton);
     EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Ladder);
 }
 
@@ -423,6 +435,86 @@ TEST_F(LadderPageTest, ADoubleClickOnAStepsHeadingEditsItsComment) {
     ASSERT_TRUE(driver.done());
     EXPECT_TRUE(unitText(1).contains("S1.1_0") && unitText(1).contains("; Waiting for the sensors"))
         << unitText(1).toStdString();
+}
+
+// Issue 17, finding 5: the network comment is typed and confirmed from the
+// keyboard alone, and the canvas shows whether it has the focus.
+TEST_F(LadderPageTest, ANetworkCommentIsTypedAndConfirmedFromTheKeyboard) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    page().view()->setFocus();
+    DialogDriver driver({[](QDialog& dialog) {
+        auto* editor = dialog.findChild<QPlainTextEdit*>(QStringLiteral("commentEditor"));
+        ASSERT_NE(editor, nullptr);
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("Guard closed"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, QStringLiteral("and locked"));
+        QTest::keyClick(editor, Qt::Key_Return, Qt::ControlModifier);
+    }});
+    QTest::mouseClick(
+        viewport(), Qt::LeftButton, {},
+        page().view()->mapFromScene(page().networkItem(0, 1)->sceneBoundingRect().center()));
+    page().findChild<QAction*>(QStringLiteral("networkCommentAction"))->trigger();
+    ASSERT_TRUE(driver.done());
+    EXPECT_TRUE(unitText(0).contains("Guard closed")) << unitText(0).toStdString();
+    EXPECT_TRUE(unitText(0).contains("and locked"));
+}
+
+TEST_F(LadderPageTest, TheCanvasShowsWhetherItHasTheFocus) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    activate();
+    auto band = [&] {
+        const QImage image = page().view()->grab().toImage();
+        return image.pixelColor(0, image.height() / 2);
+    };
+    const QColor highlight = page().view()->palette().color(QPalette::Highlight);
+    page().view()->setFocus();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page().view()->hasFocus(); }, 2000));
+    EXPECT_EQ(band(), highlight);
+    window.findChild<QWidget*>(QStringLiteral("projectTree"))->setFocus();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !page().view()->hasFocus(); }, 2000));
+    EXPECT_NE(band(), highlight);
+}
+
+// Issue 17, finding 4: a drag copies (manual 11.5), Shift+drag moves, and
+// the place of the drop is drawn while dragging.
+TEST_F(LadderPageTest, DraggingAnElementCopiesItShiftMovesItAndTheDropPlaceIsDrawn) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    auto dragOnto = [&](const QString& dragged, const QString& onto, Qt::KeyboardModifiers keys) {
+        std::unique_ptr<QMimeData> data(
+            page().elementDragData(page().view()->mapToScene(where(dragged))));
+        ASSERT_NE(data, nullptr);
+        // Onto the right half of the element: after it.
+        const QPoint target = where(onto) + QPoint(6, 0);
+        const Qt::DropActions offered = Qt::CopyAction | Qt::MoveAction;
+        QDragEnterEvent enter(target, offered, data.get(), Qt::LeftButton, keys);
+        QApplication::sendEvent(viewport(), &enter);
+        QDragMoveEvent hover(target, offered, data.get(), Qt::LeftButton, keys);
+        QApplication::sendEvent(viewport(), &hover);
+        EXPECT_TRUE(hover.isAccepted());
+        EXPECT_EQ(hover.dropAction(), keys & Qt::ShiftModifier ? Qt::MoveAction : Qt::CopyAction);
+        EXPECT_TRUE(page().isDropPlaceShown());
+        EXPECT_TRUE(page().message().contains(keys & Qt::ShiftModifier ? QStringLiteral("Moving")
+                                                                       : QStringLiteral("Copying")))
+            << page().message().toStdString();
+        QDropEvent drop(target, offered, data.get(), Qt::LeftButton, keys);
+        QApplication::sendEvent(viewport(), &drop);
+        EXPECT_FALSE(page().isDropPlaceShown());
+    };
+    dragOnto(QStringLiteral("I0.1"), QStringLiteral("I0.5"), Qt::NoModifier);
+    EXPECT_TRUE(unitText(0).contains("Q0.2 = I0.1 * I0.2\n")) << unitText(0).toStdString();
+    EXPECT_TRUE(unitText(0).contains("Q0.4 = /I0.5 * I0.1\n")) << unitText(0).toStdString();
+    dragOnto(QStringLiteral("I0.2"), QStringLiteral("I0.1"), Qt::ShiftModifier);
+    EXPECT_TRUE(unitText(0).contains("Q0.2 = I0.1 * I0.2\n")) << unitText(0).toStdString();
+    dragOnto(QStringLiteral("I0.3"), QStringLiteral("I0.5"), Qt::ShiftModifier);
+    EXPECT_TRUE(unitText(0).contains("Q0.3 = I0.4\n")) << unitText(0).toStdString();
+    EXPECT_TRUE(unitText(0).contains("Q0.4 = /I0.5 * I0.3 * I0.1\n")) << unitText(0).toStdString();
+    // Each drop is one undo step.
+    document()->undoStack()->undo();
+    EXPECT_TRUE(unitText(0).contains("Q0.3 = I0.3 + I0.4\n")) << unitText(0).toStdString();
 }
 
 TEST_F(LadderPageTest, ATextEditLaysTheLadderOutAgain) {

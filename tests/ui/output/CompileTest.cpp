@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "MessageBoxAnswerer.h"
 #include "WindowTest.h"
 
 #include "document/ProjectDocument.h"
 #include "output/CompileOutput.h"
+#include "project/Project.h"
 #include "text/ProgramEditor.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QFile>
 #include <QTest>
 
@@ -76,6 +79,73 @@ TEST_F(CompileTest, AnErrorIsListedWithItsUnitAndLineAndDoubleClickGoesThere) {
     window.editor()->getCursorPosition(&line, &column);
     EXPECT_EQ(line, 3);
     EXPECT_EQ(column, 7);
+}
+
+// Issue 17, finding 6: the Output dock belongs to the project compiled.
+TEST_F(CompileTest, ClosingTheProjectTakesItsResultAndTheOutputDockAway) {
+    const QString path =
+        writeFile(QStringLiteral("muting.sps"),
+                  readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    showWindow();
+    action("compileAction")->trigger();
+    ASSERT_TRUE(waitForCompile());
+    auto* dock = window.findChild<QDockWidget*>(QStringLiteral("outputDock"));
+    ASSERT_TRUE(dock);
+    EXPECT_TRUE(dock->isVisible());
+    ASSERT_TRUE(window.closeDocument(document()));
+    EXPECT_EQ(output()->topLevelItemCount(), 0);
+    EXPECT_FALSE(dock->isVisible());
+}
+
+// Issue 17, finding 1: an image written beside an older file matches no
+// source a reviewer can read. Compile asks; each answer keeps them in step.
+class CompileUnsavedTest : public CompileTest {
+protected:
+    void SetUp() override {
+        CompileTest::SetUp();
+        path = writeFile(QStringLiteral("muting.sps"),
+                         readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
+        ASSERT_TRUE(window.loadFile(path).isEmpty());
+        showWindow();
+        document()->edit(QStringLiteral("Describe"),
+                         [](rs::project::Project& p) { p.description = "edited"; });
+        ASSERT_TRUE(document()->isModified());
+    }
+    QString image() const { return directory.filePath(QStringLiteral("muting.hps")); }
+    QString path;
+};
+
+TEST_F(CompileUnsavedTest, SaveAndCompileWritesTheImageOfTheSavedFile) {
+    MessageBoxAnswerer answerer(QMessageBox::Save);
+    action("compileAction")->trigger();
+    ASSERT_TRUE(answerer.answered());
+    EXPECT_TRUE(answerer.text().contains(QStringLiteral("not saved")));
+    ASSERT_TRUE(waitForCompile());
+    EXPECT_FALSE(document()->isModified());
+    EXPECT_TRUE(readFile(path).contains("edited"));
+    EXPECT_TRUE(QFile::exists(image()));
+}
+
+TEST_F(CompileUnsavedTest, CheckOnlyWritesNoImageAndLeavesTheFileAlone) {
+    const QByteArray saved = readFile(path);
+    MessageBoxAnswerer answerer(QMessageBox::Ignore);
+    action("compileAction")->trigger();
+    ASSERT_TRUE(answerer.answered());
+    ASSERT_TRUE(waitForCompile());
+    EXPECT_EQ(output()->closingLine(), QStringLiteral("0 Error(s) detected Result=OK"));
+    EXPECT_FALSE(QFile::exists(image()));
+    EXPECT_EQ(readFile(path), saved);
+    EXPECT_TRUE(document()->isModified());
+}
+
+TEST_F(CompileUnsavedTest, CancelCompilesNothing) {
+    MessageBoxAnswerer answerer(QMessageBox::Cancel);
+    action("compileAction")->trigger();
+    ASSERT_TRUE(answerer.answered());
+    EXPECT_FALSE(window.isCompiling());
+    EXPECT_TRUE(output()->closingLine().isEmpty());
+    EXPECT_FALSE(QFile::exists(image()));
 }
 
 } // namespace

@@ -231,6 +231,30 @@ TEST_F(ProjectWorkflowTest, IoOptionsOfferOnlyLegalChoicesAndUndo) {
     EXPECT_TRUE(projectText().contains("! I3.0,static\n! IQ3.12,a_pulse\n"));
 }
 
+// Issue 17, finding 7: Return on a refused name keeps what was typed, to mend.
+TEST_F(ProjectWorkflowTest, ARefusedNameStaysInItsEditorToBeMended) {
+    showWindow();
+    createProjectWithUnit();
+    clickNode({PageRef::Kind::Variables, document(), 3});
+    const QByteArray before = projectText();
+    editCell(QStringLiteral("I3.0"), rs::ui::VariableTableModel::NameColumn,
+             QStringLiteral("1Start"));
+    QLineEdit* editor = nullptr;
+    for (auto* edit : variableTable()->viewport()->findChildren<QLineEdit*>())
+        if (edit->isVisible())
+            editor = edit;
+    ASSERT_NE(editor, nullptr) << "the editor closed and the name was lost";
+    EXPECT_EQ(editor->text(), QStringLiteral("1Start"));
+    EXPECT_TRUE(window.variablesPage()->message().contains(QStringLiteral("digit")));
+    EXPECT_EQ(projectText(), before);
+    // Mended in place: the digit goes, and Return takes the name.
+    editor->setCursorPosition(1);
+    QTest::keyClick(editor, Qt::Key_Backspace);
+    QTest::keyClick(editor, Qt::Key_Return);
+    QCoreApplication::sendPostedEvents();
+    EXPECT_TRUE(projectText().contains("! I3.0=Start\n")) << projectText().toStdString();
+}
+
 TEST_F(ProjectWorkflowTest, VariablesAreNamedAndDescribedInTheTable) {
     showWindow();
     createProjectWithUnit();

@@ -96,6 +96,9 @@ TEST_F(MainWindowTest, TheExampleOpensOnItsUnitsCode) {
 }
 
 TEST_F(MainWindowTest, TypingAnErrorShowsItAfterAPauseAndKeepsItOutOfTheProject) {
+    // Only the typed problem: the compiler's check would add the example's
+    // unconfigured Q0.17.
+    window.textPage()->setWarnUnconfiguredIo(false);
     window.showExample();
     showCodeAsText();
     showWindow();
@@ -155,6 +158,9 @@ TEST_F(MainWindowTest, LeavingCodeWithErrorsAsksToKeepEditingOrDiscard) {
 }
 
 TEST_F(MainWindowTest, DoubleClickingAProblemMovesTheCursorThere) {
+    // Only the typed problem: the compiler's check would add the example's
+    // unconfigured Q0.17.
+    window.textPage()->setWarnUnconfiguredIo(false);
     window.showExample();
     showCodeAsText();
     showWindow();
@@ -440,4 +446,46 @@ TEST_F(MainWindowTest, TheWelcomePageListsRecentProjectsAndOpensOneByKey) {
     QTest::keyClick(recent, Qt::Key_Return);
     ASSERT_EQ(window.documents().size(), 1u);
     EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("first.sps")));
+}
+
+// Issue 17, finding 2: what F7 rejects is marked in the text as it is typed.
+TEST_F(MainWindowTest, TheTextViewMarksWhatTheCompilerRejectsAfterThePause) {
+    ASSERT_TRUE(window
+                    .loadFile(writeFile(QStringLiteral("a20.sps"), "$name A20\n"
+                                                                   "! id_pluto:00=000000000000\n"
+                                                                   "! type_pluto:00=A20,is2\n"
+                                                                   "! pgm_pluto:00\n"
+                                                                   "S0.0_0\n"
+                                                                   "Q0.2 = I0.1\n"))
+                    .isEmpty());
+    showWindow();
+    showCodeAsText();
+    editor()->setFocus();
+    QTest::keyClick(editor(), Qt::Key_End, Qt::ControlModifier);
+    QTest::keyClicks(editor(), QStringLiteral("Q0.3 = I0.99 * I0.0"));
+    const int line = editor()->lines();
+    rs::ui::TextPage* page = window.textPage();
+    ASSERT_NE(page, nullptr);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return rs::lang::errorCount(page->diagnostics()) > 0 && !page->isChecking(); },
+        MainWindow::kCheckDelayMs * 20));
+    EXPECT_NE(editor()->markersAtLine(line - 1) & (1u << ProgramEditor::ErrorMarker), 0u);
+    bool named = false;
+    for (const auto& diagnostic : page->diagnostics())
+        if (diagnostic.severity == rs::lang::Severity::Error) {
+            EXPECT_EQ(diagnostic.line, line);
+            named = named || diagnostic.message.find("I0.99") != std::string::npos;
+        }
+    EXPECT_TRUE(named);
+    EXPECT_TRUE(summary().startsWith(QStringLiteral("1 error")) ||
+                summary().startsWith(QStringLiteral("2 errors")))
+        << summary().toStdString();
+    // Mended, the marks go.
+    QTest::keyClick(editor(), Qt::Key_Home);
+    QTest::keyClick(editor(), Qt::Key_End, Qt::ShiftModifier);
+    QTest::keyClicks(editor(), QStringLiteral("Q0.3 = I0.2 * I0.0"));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return rs::lang::errorCount(page->diagnostics()) == 0 && !page->isChecking(); },
+        MainWindow::kCheckDelayMs * 20));
+    EXPECT_TRUE(summary().startsWith(QStringLiteral("0 errors"))) << summary().toStdString();
 }

@@ -21,6 +21,8 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QContextMenuEvent>
+#include <QDockWidget>
+#include <QHeaderView>
 #include <QImage>
 #include <QLabel>
 #include <QMenu>
@@ -458,4 +460,78 @@ TEST_F(SimulationTest, AnotherProjectsPagesShowNoValues) {
     ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, session()->document(), 0, 0}));
     EXPECT_EQ(model->index(0, ui::VariableTableModel::StatusColumn).data().toString(),
               QStringLiteral("1"));
+}
+
+// Issue 17, finding 6: docks belong to a mode and a project, and go with them.
+TEST_F(SimulationTest, TheSimulationDocksGoWithTheSimulationAndComeBackAsLeft) {
+    window.resize(1024, 600);
+    auto* forces = window.findChild<QDockWidget*>(QStringLiteral("forcesDock"));
+    auto* watch = window.findChild<QDockWidget*>(QStringLiteral("watchDock"));
+    auto* waveform = window.findChild<QDockWidget*>(QStringLiteral("waveformDock"));
+    ASSERT_TRUE(forces && watch && waveform);
+    begin();
+    QApplication::processEvents();
+    EXPECT_TRUE(forces->isVisible());
+    EXPECT_TRUE(waveform->isVisible());
+    // The page keeps most of the height.
+    EXPECT_LE(waveform->height(), window.height() * 3 / 10 + 1);
+    watch->close();
+
+    action("simulateAction")->trigger();
+    ASSERT_FALSE(session()->isActive());
+    EXPECT_FALSE(forces->isVisible());
+    EXPECT_FALSE(waveform->isVisible());
+
+    begin();
+    EXPECT_TRUE(forces->isVisible());
+    EXPECT_TRUE(waveform->isVisible());
+    EXPECT_FALSE(watch->isVisible());
+}
+
+TEST_F(SimulationTest, AnotherProjectStartsWithoutTheLastOnesTracesWatchesAndResults) {
+    begin();
+    ASSERT_TRUE(mode()->waveformPanel()->add(QStringLiteral("Q0.14")).isEmpty());
+    ASSERT_TRUE(mode()->watchView()->add(QStringLiteral("Q0.14")).isEmpty());
+    // The same project again keeps what was chosen for it.
+    action("simulateAction")->trigger();
+    begin();
+    EXPECT_FALSE(session()->recorder().traces().empty());
+    EXPECT_EQ(mode()->watchView()->variables().size(), 1u);
+    action("simulateAction")->trigger();
+
+    ASSERT_TRUE(
+        window.loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps"))
+            .isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    begin();
+    EXPECT_TRUE(session()->recorder().traces().empty());
+    EXPECT_TRUE(mode()->watchView()->variables().empty());
+}
+
+TEST_F(SimulationTest, ClosingTheSimulatedProjectTakesItsScenarioResultsAway) {
+    const QString path = writeFile(QStringLiteral("start.scn"), "set I0.12 1\nrun 50ms\n");
+    const auto result = mode()->runScenario(path);
+    ASSERT_TRUE(result.error.isEmpty()) << result.error.toStdString();
+    auto* scenarios = window.findChild<QDockWidget*>(QStringLiteral("scenariosDock"));
+    ASSERT_TRUE(scenarios);
+    EXPECT_EQ(mode()->scenarioResults()->tree()->topLevelItemCount(), 1);
+    ASSERT_TRUE(window.closeDocument(document()));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+    EXPECT_EQ(mode()->scenarioResults()->tree()->topLevelItemCount(), 0);
+    EXPECT_FALSE(scenarios->isVisible());
+}
+
+// Issue 17, finding 7: no column heading of the simulation docks is cut, in any language.
+TEST_F(SimulationTest, TheForcesAndWatchHeadingsAreNotCut) {
+    begin();
+    session()->force(addressOf("Q0.2"), 1);
+    ASSERT_TRUE(mode()->watchView()->add(QStringLiteral("Q0.14")).isEmpty());
+    for (const char* name : {"forcesTable", "watchTable"}) {
+        auto* table = window.findChild<QTableWidget*>(QLatin1String(name));
+        ASSERT_NE(table, nullptr) << name;
+        QHeaderView* header = table->horizontalHeader();
+        for (int column = 0; column + 1 < header->count(); ++column)
+            EXPECT_GE(header->sectionSize(column), header->sectionSizeHint(column))
+                << name << " column " << column;
+    }
 }
