@@ -388,6 +388,14 @@
         <source>&amp;Block Documentation...</source>
         <translation>&amp;Bausteindokumentation...</translation>
     </message>
+    <message>
+        <source>Expand</source>
+        <translation>Aufklappen</translation>
+    </message>
+    <message>
+        <source>Collapse</source>
+        <translation>Zuklappen</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

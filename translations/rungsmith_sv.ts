@@ -388,6 +388,14 @@
         <source>&amp;Block Documentation...</source>
         <translation>&amp;Blockdokumentation...</translation>
     </message>
+    <message>
+        <source>Expand</source>
+        <translation>Fäll ut</translation>
+    </message>
+    <message>
+        <source>Collapse</source>
+        <translation>Fäll ihop</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

@@ -93,6 +93,11 @@ LadderActions::LadderActions(QWidget* page) {
 
     zoomIn = made(page, "zoomInAction", tr("Zoom In"), tr("Zoom in"));
     zoomOut = made(page, "zoomOutAction", tr("Zoom Out"), tr("Zoom out"));
+    // Short on the tool bar, which must show every command at 1,280 px.
+    zoomIn->setIconText(QStringLiteral("+"));
+    zoomOut->setIconText(QStringLiteral("\u2212"));
+    expandAll->setIconText(tr("Expand"));
+    collapseAll->setIconText(tr("Collapse"));
     zoomReset = made(page, "zoomResetAction", tr("100%"), tr("Actual size"));
     const std::pair<QAction*, QList<QKeySequence>> zooms[] = {
         {zoomIn, {QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)}},
@@ -139,18 +144,22 @@ LadderActions::LadderActions(QWidget* page) {
     newSequence = made(page, "newSequenceAction", tr("New Se&quence..."));
 }
 
-std::vector<QAction*> LadderActions::toolBar() const {
-    std::vector<QAction*> bar = {showText,    nullptr,       placeAfter,
-                                 placeBefore, placeParallel, nullptr};
+std::vector<QAction*> LadderActions::elementBar() const {
+    std::vector<QAction*> bar;
     for (const auto& [kind, action] : insert) {
         bar.push_back(action);
         if (kind == ElementKind::Comparison)
             bar.insert(bar.end(), {insertBlock, nullptr}); // a block is a box too
     }
-    bar.insert(bar.end(), {nullptr, deleteSelection, newNetwork, expandAll, collapseAll, nullptr,
-                           editNetwork, updateNetwork, undoNetwork, nullptr, zoomIn, zoomOut,
-                           zoomReset, nullptr, print, exportPdf});
+    bar.insert(bar.end(), {nullptr, deleteSelection, newNetwork});
     return bar;
+}
+
+std::vector<QAction*> LadderActions::networkBar() const {
+    return {showText,  nullptr,     placeAfter,    placeBefore, placeParallel,
+            nullptr,   editNetwork, updateNetwork, undoNetwork, nullptr,
+            expandAll, collapseAll, nullptr,       zoomIn,      zoomOut,
+            zoomReset, nullptr,     print,         exportPdf};
 }
 
 std::vector<QAction*> LadderActions::viewing() const {

@@ -72,8 +72,12 @@ public:
     // which answers anywhere on the page).
     std::vector<QAction*> viewKeys;
 
-    // The toolbar of the page, in order (nullptr a separator).
-    std::vector<QAction*> toolBar() const;
+    // The page's two tool bars, in order (nullptr a separator), so that every
+    // command shows at 1,280 px and at 1,024 px the contacts, boxes and the
+    // coil, S and R still do (issue 17): the network and view commands, and
+    // the elements to insert with Delete and New Network.
+    std::vector<QAction*> elementBar() const;
+    std::vector<QAction*> networkBar() const;
     // The actions that read the page: they stay enabled while simulating.
     std::vector<QAction*> viewing() const;
     // The text that names an action's first key, as menus show it ("Del").

@@ -33,8 +33,9 @@ namespace rs::ui {
 
 LadderPage::LadderPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_toolBar(new QToolBar(this)),
-      m_scene(new QGraphicsScene(this)), m_view(new LadderView(m_scene, this)),
-      m_status(new QLabel(this)), m_actions(std::make_unique<LadderActions>(this)),
+      m_networkBar(new QToolBar(this)), m_scene(new QGraphicsScene(this)),
+      m_view(new LadderView(m_scene, this)), m_status(new QLabel(this)),
+      m_actions(std::make_unique<LadderActions>(this)),
       m_idleTool(std::make_unique<IdleTool>(*this)),
       m_networkEditTool(std::make_unique<NetworkEditTool>(*this)),
       m_dragTool(std::make_unique<DragTool>(*this)), m_liveTool(std::make_unique<LiveTool>(*this)),
@@ -42,12 +43,14 @@ LadderPage::LadderPage(QWidget* parent)
     setObjectName(QStringLiteral("ladderPage"));
     m_view->setObjectName(QStringLiteral("ladderView"));
     m_toolBar->setObjectName(QStringLiteral("ladderToolBar"));
+    m_networkBar->setObjectName(QStringLiteral("ladderNetworkBar"));
     m_status->setObjectName(QStringLiteral("ladderStatus"));
     m_status->setWordWrap(true);
     m_drawing = drawingFor(palette());
     m_view->setBackgroundBrush(m_drawing.style.background);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
+    layout->addWidget(m_networkBar);
     layout->addWidget(m_toolBar);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_status);
@@ -57,12 +60,15 @@ LadderPage::LadderPage(QWidget* parent)
             .arg(LadderActions::keyOf(m_actions->newNetwork));
     m_emptyHint = m_scene->addSimpleText(m_editingHint);
     m_emptyHint->setVisible(false);
-    for (QAction* action : m_actions->toolBar()) {
-        if (action)
-            m_toolBar->addAction(action);
-        else
-            m_toolBar->addSeparator();
-    }
+    const std::pair<QToolBar*, std::vector<QAction*>> bars[] = {
+        {m_networkBar, m_actions->networkBar()}, {m_toolBar, m_actions->elementBar()}};
+    for (const auto& [bar, actions] : bars)
+        for (QAction* action : actions) {
+            if (action)
+                bar->addAction(action);
+            else
+                bar->addSeparator();
+        }
     m_toolBar->setIconSize(kElementIconSize);
     drawElementIcons();
     connectActions();

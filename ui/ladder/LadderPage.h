@@ -273,7 +273,8 @@ private:
     QString blockNote(const blocks::InstanceStatus& status) const;
 
     PageTitle* m_title;
-    QToolBar* m_toolBar;
+    QToolBar* m_toolBar;    // the elements
+    QToolBar* m_networkBar; // the network and view commands
     QGraphicsScene* m_scene;
     LadderView* m_view;
     QLabel* m_status;

@@ -517,6 +517,48 @@ TEST_F(LadderPageTest, DraggingAnElementCopiesItShiftMovesItAndTheDropPlaceIsDra
     EXPECT_TRUE(unitText(0).contains("Q0.3 = I0.3 + I0.4\n")) << unitText(0).toStdString();
 }
 
+// Issue 17, finding 3: every command of the page shows at 1,280 px, and at
+// 1,024 px the contacts, boxes, coil, S and R still do.
+TEST_F(LadderPageTest, EveryToolBarCommandShowsAt1280AndTheEssentialOnesAt1024) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    auto* elements = page().findChild<QToolBar*>(QStringLiteral("ladderToolBar"));
+    auto* network = page().findChild<QToolBar*>(QStringLiteral("ladderNetworkBar"));
+    ASSERT_TRUE(elements && network);
+    auto shown = [](QToolBar* bar, QAction* action) {
+        QWidget* button = bar->widgetForAction(action);
+        return button && button->isVisible() &&
+               button->geometry().right() < bar->contentsRect().right();
+    };
+    window.resize(1280, 800);
+    QApplication::processEvents();
+    ASSERT_LE(window.minimumSizeHint().width(), 1024);
+    for (QToolBar* bar : {elements, network})
+        for (QAction* action : bar->actions()) {
+            if (!action->isSeparator()) {
+                EXPECT_TRUE(shown(bar, action)) << action->objectName().toStdString();
+            }
+        }
+
+    window.resize(1024, 700);
+    QApplication::processEvents();
+    EXPECT_EQ(window.width(), 1024);
+    using rs::ladder::ElementKind;
+    for (const ElementKind kind :
+         {ElementKind::NormallyOpen, ElementKind::NormallyClosed, ElementKind::PositiveEdge,
+          ElementKind::OnDelayTimer, ElementKind::Comparison, ElementKind::Coil, ElementKind::Set,
+          ElementKind::Reset}) {
+        QAction* action =
+            page().action(QStringLiteral("insert%1Action").arg(static_cast<int>(kind)));
+        ASSERT_NE(action, nullptr);
+        EXPECT_TRUE(shown(elements, action)) << static_cast<int>(kind);
+    }
+    for (const char* name :
+         {"ladderTextAction", "placeAfterAction", "placeBeforeAction", "placeParallelAction",
+          "editNetworkAction", "updateNetworkAction", "undoNetworkAction"})
+        EXPECT_TRUE(shown(network, page().action(QLatin1String(name)))) << name;
+}
+
 TEST_F(LadderPageTest, ATextEditLaysTheLadderOutAgain) {
     open(kTwoUnits);
     clickNode({PageRef::Kind::Ladder, document(), 0, 0});
