@@ -19,6 +19,7 @@ struct LadderStyle {
     QColor poweredFill{200, 240, 210}; // inside a block pin's contact whose bit is 1
     QColor closedFill{0, 150, 60};     // inside a closed contact, a true box, an output that is 1
     QColor closedInk{255, 255, 255};   // a letter or slash on closedFill
+    QColor body;                       // inside an open contact, a box, a coil; invalid: background
     QColor nameInk{20, 40, 120};       // symbolic names
     QColor addressInk{70, 70, 70};     // addresses, presets
     QColor commentInk{90, 90, 90};     // comments among and beside the rungs

@@ -84,7 +84,9 @@ private:
         const std::uint8_t state = m_power ? m_power->state(e.statement, e.element) : 0;
         const bool closed = (state & sim::ElementState::Closed) != 0;
         m_painter.setPen(m_style.wirePen(powered));
-        m_painter.setBrush(closed ? QBrush(m_style.closedFill) : QBrush(m_style.background));
+        m_painter.setBrush(closed                   ? QBrush(m_style.closedFill)
+                           : m_style.body.isValid() ? QBrush(m_style.body)
+                                                    : QBrush(m_style.background));
         const QRectF& r = e.symbolRect;
         const ElementKindInfo& info = infoOf(e.kind);
         const QString mark = QString::fromUtf8(info.mark.data(), qsizetype(info.mark.size()));

@@ -578,6 +578,10 @@
         <source>Only memories can be options (manual 11.6).</source>
         <translation>Nur Merker können Optionen sein (Handbuch 11.6).</translation>
     </message>
+    <message>
+        <source>A config option is a check box on its network: it sets the memory when checked and resets it when not, so that one program serves machines with and without an option (manual 11.6).</source>
+        <translation>Eine Konfigurationsoption ist ein Kontrollkästchen auf ihrem Netzwerk: Sie setzt den Merker, wenn es angekreuzt ist, und setzt ihn sonst zurück, sodass ein Programm Maschinen mit und ohne eine Option bedient (Handbuch 11.6).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CsvExportDialog</name>
@@ -1809,10 +1813,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Linien, ein:</translation>
     </message>
     <message>
-        <source>&amp;Default Colours</source>
-        <translation>&amp;Standardfarben</translation>
-    </message>
-    <message>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -1867,6 +1867,22 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
         <translation>Von %1 bis %2 Minuten. Ein Absturz kostet höchstens so viel Arbeit.</translation>
+    </message>
+    <message>
+        <source>Theme &amp;Colours</source>
+        <translation>&amp;Farben des Designs</translation>
+    </message>
+    <message>
+        <source>Draw the ladder in the theme&apos;s colours again</source>
+        <translation>Den Kontaktplan wieder in den Farben des Designs zeichnen</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Design</translation>
+    </message>
+    <message>
+        <source>As the theme draws it; click to choose a colour</source>
+        <translation>Wie das Design es zeichnet; klicken, um eine Farbe zu wählen</translation>
     </message>
 </context>
 <context>
@@ -2704,6 +2720,11 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>The value after the last scan of the simulation</source>
         <translation>Der Wert nach dem letzten Zyklus der Simulation</translation>
+    </message>
+    <message>
+        <source>used</source>
+        <comment>a variable the code reads or writes</comment>
+        <translation>verwendet</translation>
     </message>
 </context>
 <context>

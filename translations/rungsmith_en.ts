@@ -609,6 +609,10 @@
         <source>Only memories can be options (manual 11.6).</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>A config option is a check box on its network: it sets the memory when checked and resets it when not, so that one program serves machines with and without an option (manual 11.6).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CsvExportDialog</name>
@@ -1839,10 +1843,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;Default Colours</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 ms</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1896,6 +1896,22 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Theme &amp;Colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw the ladder in the theme&apos;s colours again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As the theme draws it; click to choose a colour</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2702,6 +2718,11 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>The value after the last scan of the simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>used</source>
+        <comment>a variable the code reads or writes</comment>
         <translation type="unfinished"></translation>
     </message>
 </context>

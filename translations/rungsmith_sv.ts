@@ -578,6 +578,10 @@
         <source>Only memories can be options (manual 11.6).</source>
         <translation>Endast minnen kan vara alternativ (manualen 11.6).</translation>
     </message>
+    <message>
+        <source>A config option is a check box on its network: it sets the memory when checked and resets it when not, so that one program serves machines with and without an option (manual 11.6).</source>
+        <translation>Ett konfigurationsalternativ är en kryssruta på sitt nätverk: det sätter minnet när rutan är ikryssad och återställer det annars, så att ett program passar maskiner med och utan ett tillval (manualen 11.6).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CsvExportDialog</name>
@@ -1809,10 +1813,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Linjer, till:</translation>
     </message>
     <message>
-        <source>&amp;Default Colours</source>
-        <translation>&amp;Standardfärger</translation>
-    </message>
-    <message>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -1867,6 +1867,22 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>From %1 to %2 minutes. A crash loses at most this much work.</source>
         <translation>Från %1 till %2 minuter. En krasch förlorar högst så mycket arbete.</translation>
+    </message>
+    <message>
+        <source>Theme &amp;Colours</source>
+        <translation>Temats &amp;färger</translation>
+    </message>
+    <message>
+        <source>Draw the ladder in the theme&apos;s colours again</source>
+        <translation>Rita stegdiagrammet i temats färger igen</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Tema</translation>
+    </message>
+    <message>
+        <source>As the theme draws it; click to choose a colour</source>
+        <translation>Som temat ritar det; klicka för att välja en färg</translation>
     </message>
 </context>
 <context>
@@ -2704,6 +2720,11 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>The value after the last scan of the simulation</source>
         <translation>Värdet efter simuleringens senaste cykel</translation>
+    </message>
+    <message>
+        <source>used</source>
+        <comment>a variable the code reads or writes</comment>
+        <translation>används</translation>
     </message>
 </context>
 <context>

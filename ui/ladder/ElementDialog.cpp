@@ -6,6 +6,7 @@
 #include "ladder/SymbolTable.h"
 #include "project/VariableTable.h"
 #include "shell/CompleterKeys.h"
+#include "shell/DialogProblem.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -63,7 +64,7 @@ ElementDialog::ElementDialog(ProjectDocument* document, int station, bool output
     }
     m_problem->setObjectName(QStringLiteral("problem"));
     m_problem->setWordWrap(true);
-    m_problem->setStyleSheet(QStringLiteral("color: #c00000"));
+    m_problem->hide();
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -130,7 +131,9 @@ void ElementDialog::newVariable() {
     else
         name->setText(m_operand->text().trimmed());
     auto* problem = new QLabel(&dialog);
+    problem->setObjectName(QStringLiteral("problem"));
     problem->setWordWrap(true);
+    problem->hide();
     auto* form = new QFormLayout(&dialog);
     form->addRow(tr("&Address:"), address);
     form->addRow(tr("Symbolic &name:"), name);
@@ -142,16 +145,17 @@ void ElementDialog::newVariable() {
         const lang::AddressWord word =
             lang::readAddressWord(address->text().trimmed().toStdString());
         if (word.shape != lang::AddressWord::Shape::Variable) {
-            problem->setText(tr("Write an address such as I%1.0, Q%1.2 or M%1.5.").arg(m_station));
+            sayProblem(problem,
+                       tr("Write an address such as I%1.0, Q%1.2 or M%1.5.").arg(m_station));
             return;
         }
         const std::string text = name->text().trimmed().toStdString();
         if (text.empty()) {
-            problem->setText(tr("Give the variable a name."));
+            sayProblem(problem, tr("Give the variable a name."));
             return;
         }
         if (auto refusal = project::checkVariableName(m_document->project(), word.address, text)) {
-            problem->setText(QString::fromStdString(*refusal));
+            sayProblem(problem, QString::fromStdString(*refusal));
             return;
         }
         m_document->edit(
@@ -178,7 +182,7 @@ void ElementDialog::accept() {
     fields.negated = m_negated->isChecked();
     const ladder::FieldsText made = ladder::textOf(fields);
     if (made.text.empty()) {
-        m_problem->setText(QString::fromStdString(made.error));
+        sayProblem(m_problem, QString::fromStdString(made.error));
         return;
     }
     const QString text = QString::fromStdString(made.text);
@@ -186,7 +190,7 @@ void ElementDialog::accept() {
     if (m_isOutput) {
         ladder::OutputReading read = ladder::readOutput(program, m_station, text.toStdString());
         if (!read.output) {
-            m_problem->setText(tr("%1: %2").arg(text, QString::fromStdString(read.error)));
+            sayProblem(m_problem, tr("%1: %2").arg(text, QString::fromStdString(read.error)));
             return;
         }
         const QString comment = m_comment->text().trimmed();
@@ -196,7 +200,7 @@ void ElementDialog::accept() {
     } else {
         ladder::ElementReading read = ladder::readElement(program, m_station, text.toStdString());
         if (!read.element) {
-            m_problem->setText(tr("%1: %2").arg(text, QString::fromStdString(read.error)));
+            sayProblem(m_problem, tr("%1: %2").arg(text, QString::fromStdString(read.error)));
             return;
         }
         m_element = std::move(read.element);

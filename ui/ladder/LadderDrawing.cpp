@@ -5,7 +5,7 @@
 
 namespace rs::ui {
 
-LadderDrawing drawingFor(const QPalette& palette) {
+LadderDrawing drawingFor(const QPalette& palette, const LadderColours& chosen, bool live) {
     LadderDrawing drawing;
     render::LadderStyle& style = drawing.style;
     style.background = palette.color(QPalette::Base);
@@ -19,8 +19,18 @@ LadderDrawing drawingFor(const QPalette& palette) {
         style.addressInk = QColor(190, 190, 190);
         style.commentInk = QColor(170, 170, 170);
     }
+    auto choose = [](QColor& colour, const QColor& chosen) {
+        if (chosen.isValid())
+            colour = chosen;
+    };
+    choose(style.background, chosen.background);
+    style.body = chosen.componentBody; // invalid: as the background
+    choose(style.ink, live ? chosen.linesOff : chosen.lines);
+    choose(style.powered, chosen.linesOn);
+    choose(style.closedFill, chosen.linesOn);
     style.closedInk = style.background;
     drawing.selection = palette.color(QPalette::Highlight);
+    choose(drawing.selection, chosen.focusedBackground);
     drawing.markedNetwork = palette.color(QPalette::Highlight);
     drawing.markedNetwork.setAlpha(60);
     drawing.problem = dark ? QColor(255, 90, 90) : QColor(210, 0, 0);

@@ -38,7 +38,20 @@ struct LadderDrawing {
     std::map<std::pair<std::uint32_t, std::uint16_t>, QString> problems;
 };
 
-// Colours of the drawing that follow the window's palette (light or dark).
-LadderDrawing drawingFor(const QPalette& palette);
+// The user's ladder colours (the preferences, manual Part 1, 14). Each one
+// left invalid is as the window's theme draws it.
+struct LadderColours {
+    QColor background;
+    QColor focusedBackground; // the frame of the selection
+    QColor componentBody;     // inside an open contact, a box, a coil
+    QColor lines;             // wires, rails and symbols while editing
+    QColor linesOff;          // the same while simulating, where no power flows
+    QColor linesOn;           // where power flows, and a closed contact's fill
+};
+
+// Colours of the drawing that follow the window's palette (light or dark),
+// and the user's colours over them; `live` while simulating.
+LadderDrawing drawingFor(const QPalette& palette, const LadderColours& chosen = {},
+                         bool live = false);
 
 } // namespace rs::ui

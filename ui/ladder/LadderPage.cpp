@@ -158,7 +158,16 @@ void LadderPage::changeEvent(QEvent* event) {
     if (event->type() != QEvent::PaletteChange)
         return;
     // The theme changed: the drawing follows the window's colours.
-    const LadderDrawing colours = drawingFor(palette());
+    applyColours();
+}
+
+void LadderPage::setColours(const LadderColours& colours) {
+    m_colours = colours;
+    applyColours();
+}
+
+void LadderPage::applyColours() {
+    const LadderDrawing colours = drawingFor(palette(), m_colours, m_drawing.live != nullptr);
     m_drawing.style = colours.style;
     m_drawing.selection = colours.selection;
     m_drawing.markedNetwork = colours.markedNetwork;
@@ -325,6 +334,7 @@ void LadderPage::setLiveState(const LadderLiveState* state) {
         undoNetwork();
     m_drawing.live = state;
     if (changedMode) {
+        applyColours(); // lines off while simulating, lines while editing
         rest();
         updateTitle();
         placeItems();

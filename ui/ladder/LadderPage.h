@@ -84,6 +84,8 @@ public:
     // The simulator's state; nullptr for editing. Calling again with the same
     // pointer repaints without laying anything out.
     void setLiveState(const LadderLiveState* state);
+    // The user's colours (Preferences), applied at once; invalid ones follow the theme.
+    void setColours(const LadderColours& colours);
     bool isLive() const { return m_drawing.live != nullptr; }
     const LadderLiveState* liveState() const { return m_drawing.live; }
     // What every network is drawn with: colours, live state, selection, marks.
@@ -192,6 +194,7 @@ signals:
     void operandMenuRequested(const QString& address, const QPoint& globalPos);
 
 private:
+    void applyColours();
     static constexpr qreal kNetworkGap = 4; // between the networks, on screen and on paper
 
     // The states of the page's tools hand what the user does to the page.
@@ -286,6 +289,7 @@ private:
     int m_station = 0;
     int m_sequence = 0;
     LadderDrawing m_drawing;
+    LadderColours m_colours;
     std::vector<ladder::StepPage> m_steps;
     std::vector<QString> m_stepComments; // the trailing comment of each step's header
     std::vector<StepHeaderItem*> m_headers;

@@ -110,7 +110,9 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
     case StatusColumn:
         if (m_simulation)
             return liveStatus(*variable, role);
-        if (role == Qt::DecorationRole || role == Qt::ToolTipRole) {
+        // Outside simulation the column says where a variable is used, in
+        // words and in the text's colour: a green dot would pass for a live value.
+        if (role == Qt::DisplayRole || role == Qt::ToolTipRole) {
             QStringList uses;
             if (variable->used)
                 uses << tr("Used in the code of the unit");
@@ -118,10 +120,14 @@ QVariant VariableTableModel::data(const QModelIndex& index, int role) const {
                 uses << found->second;
             if (uses.isEmpty())
                 return {};
-            if (role == Qt::DecorationRole)
-                return QIcon(QStringLiteral(":/icons/in-use.svg"));
+            if (role == Qt::DisplayRole)
+                return tr("used", "a variable the code reads or writes");
             return uses.join(QLatin1Char('\n'));
         }
+        if (role == Qt::ForegroundRole)
+            return palette.color(QPalette::Disabled, QPalette::Text);
+        if (role == Qt::TextAlignmentRole)
+            return QVariant(Qt::AlignCenter);
         return {};
     case VariableColumn:
         if (role == Qt::DisplayRole)

@@ -56,6 +56,9 @@ public:
     // The simulation scanned: the Status column shows the new values.
     void refreshStatus();
 
+    // Simulating: the Status column shows live values.
+    bool isLive() const { return m_simulation != nullptr; }
+
 signals:
     // An edit was refused; the message says why.
     void refused(const QString& message);

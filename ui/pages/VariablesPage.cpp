@@ -12,6 +12,7 @@
 
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -101,6 +102,11 @@ VariablesPage::VariablesPage(QWidget* parent)
     connect(m_model, &VariableTableModel::refused, this, &VariablesPage::showMessage);
     connect(delegate, &SymbolicNameDelegate::problemChanged, this, &VariablesPage::showMessage);
     connect(m_table, &QWidget::customContextMenuRequested, this, &VariablesPage::showContextMenu);
+    connect(m_table, &QAbstractItemView::doubleClicked, this, [this](const QModelIndex& index) {
+        if (m_model->isLive())
+            emit operandToggled(addressAt(index));
+    });
+    m_table->installEventFilter(this);
     connect(remanent, &QPushButton::clicked, this,
             [this] { emit remanentRequested(m_document, m_station); });
     connect(importCsv, &QPushButton::clicked, this,
@@ -169,6 +175,12 @@ void VariablesPage::showGroup(int tab) {
 
 void VariablesPage::setSimulation(const sim::Simulation* simulation) {
     m_model->setSimulation(simulation);
+    // While simulating, a double click or a key acts on the simulation, not
+    // on the project (an edit would end the simulation).
+    m_table->setEditTriggers(simulation ? QAbstractItemView::NoEditTriggers
+                                        : QAbstractItemView::DoubleClicked |
+                                              QAbstractItemView::EditKeyPressed |
+                                              QAbstractItemView::AnyKeyPressed);
     // Room for a value and its force mark while simulating; the icon needs less.
     m_table->horizontalHeader()->resizeSection(VariableTableModel::StatusColumn,
                                                simulation ? 80 : 56);
@@ -227,9 +239,29 @@ QString VariablesPage::setExported(const lang::Address& address, bool exported) 
     return refusal;
 }
 
+QString VariablesPage::addressAt(const QModelIndex& proxyIndex) const {
+    const project::Variable* variable = m_model->variableAt(m_proxy->mapToSource(proxyIndex).row());
+    return variable ? QString::fromStdString(lang::toString(variable->address)) : QString();
+}
+
+bool VariablesPage::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_table && event->type() == QEvent::KeyPress && m_model->isLive() &&
+        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Space) {
+        if (const QString address = addressAt(m_table->currentIndex()); !address.isEmpty())
+            emit operandToggled(address);
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 void VariablesPage::showContextMenu(const QPoint& at) {
     if (!m_document)
         return;
+    if (m_model->isLive()) {
+        if (const QString address = addressAt(m_table->indexAt(at)); !address.isEmpty())
+            emit operandMenuRequested(address, m_table->viewport()->mapToGlobal(at));
+        return;
+    }
     const QModelIndex index = m_proxy->mapToSource(m_table->indexAt(at));
     const project::Variable* variable = m_model->variableAt(index.row());
     QMenu menu(this);

@@ -58,12 +58,18 @@ signals:
     void remanentRequested(ProjectDocument* document, int station);
     void csvImportRequested(ProjectDocument* document, int station);
     void csvExportRequested(ProjectDocument* document, int station);
+    // While simulating: a double click or Space on a variable's row (an input
+    // toggles), and its context menu (force, release, watch).
+    void operandToggled(const QString& address);
+    void operandMenuRequested(const QString& address, const QPoint& globalPosition);
 
 private:
     void refresh();
     void showGroup(int tab);
     void showMessage(const QString& message);
     void showContextMenu(const QPoint& at);
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    QString addressAt(const QModelIndex& proxyIndex) const;
 
     PageTitle* m_title;
     QTabBar* m_tabs;

@@ -48,6 +48,12 @@ const QString kStateKey = QStringLiteral("mainWindow/state");
 
 constexpr int kStatusMessageMs = 4000;
 
+LadderColours ladderColoursOf(const Preferences& preferences) {
+    return {preferences.ladderBackground,    preferences.ladderFocusedBackground,
+            preferences.ladderComponentBody, preferences.ladderLines,
+            preferences.ladderLinesOff,      preferences.ladderLinesOn};
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Preferences::load()) {
@@ -81,6 +87,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_simulation = new SimulationMode(this);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
     m_textPage->setWarnUnconfiguredIo(m_preferences.warnUnconfiguredIo);
+    m_ladderPage->setColours(ladderColoursOf(m_preferences));
 
     const OpenProjects::Actions& projectActions = m_projects->actions();
     m_welcomePage->offer({projectActions.newProject, projectActions.open, projectActions.example});
@@ -626,6 +633,7 @@ void MainWindow::editPreferences() {
     m_projects->setAutosaveInterval(m_preferences.autosaveMinutes);
     m_simulation->session()->setUpdateInterval(m_preferences.screenUpdateMs);
     m_textPage->setWarnUnconfiguredIo(m_preferences.warnUnconfiguredIo);
+    m_ladderPage->setColours(ladderColoursOf(m_preferences));
 }
 
 void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition) {

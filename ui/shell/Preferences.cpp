@@ -10,25 +10,21 @@ namespace rs::ui {
 namespace {
 
 const QString kGroup = QStringLiteral("preferences/");
+// Colours under keys of their own: the first versions stored fixed colours
+// that the view did not draw, which must not come back as the user's choice.
+const QString kColours = QStringLiteral("preferences/ladderColours/");
 
 } // namespace
 
 Preferences Preferences::defaults() {
-    Preferences p;
-    p.ladderBackground = QColor(0xffffff);
-    p.ladderFocusedBackground = QColor(0xfff8c5);
-    p.ladderComponentBody = QColor(0x0969da);
-    p.ladderLines = QColor(0x57606a);
-    p.ladderLinesOff = QColor(0x1f883d);
-    p.ladderLinesOn = QColor(0xcf222e);
-    return p;
+    return Preferences{};
 }
 
 Preferences Preferences::load() {
     const QSettings settings;
     const Preferences d = defaults();
     auto color = [&](const char* key, const QColor& fallback) {
-        const QColor stored(settings.value(kGroup + QLatin1String(key)).toString());
+        const QColor stored(settings.value(kColours + QLatin1String(key)).toString());
         return stored.isValid() ? stored : fallback;
     };
     Preferences p;
@@ -59,7 +55,10 @@ Preferences Preferences::load() {
 void Preferences::save() const {
     QSettings settings;
     auto color = [&](const char* key, const QColor& value) {
-        settings.setValue(kGroup + QLatin1String(key), value.name());
+        if (value.isValid())
+            settings.setValue(kColours + QLatin1String(key), value.name());
+        else
+            settings.remove(kColours + QLatin1String(key));
     };
     color("ladderBackground", ladderBackground);
     color("ladderFocusedBackground", ladderFocusedBackground);

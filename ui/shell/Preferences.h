@@ -14,6 +14,7 @@ namespace rs::ui {
 struct Preferences {
     enum class Theme { System, Light, Dark };
 
+    // Each left invalid (the default) is as the theme draws it (LadderColours).
     QColor ladderBackground;
     QColor ladderFocusedBackground;
     QColor ladderComponentBody;

@@ -58,13 +58,16 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
         const std::size_t index = m_colors.size() - 1;
         connect(button, &QToolButton::clicked, this, [this, index, label] {
             ColorField& field = m_colors[index];
-            const QColor chosen = QColorDialog::getColor(m_preferences.*field.member, this, label);
+            const QColor shown = m_preferences.*field.member;
+            const QColor chosen = QColorDialog::getColor(
+                shown.isValid() ? shown : palette().color(QPalette::Base), this, label);
             if (chosen.isValid())
                 setColor(field, chosen);
         });
         colorForm->addRow(label, button);
     }
-    auto* defaults = new QPushButton(tr("&Default Colours"), colors);
+    auto* defaults = new QPushButton(tr("Theme &Colours"), colors);
+    defaults->setToolTip(tr("Draw the ladder in the theme's colours again"));
     colorForm->addRow(QString(), defaults);
     connect(defaults, &QPushButton::clicked, this, [this] {
         const Preferences d = Preferences::defaults();
@@ -123,8 +126,17 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
 
 void PreferencesDialog::setColor(ColorField& field, const QColor& color) {
     m_preferences.*field.member = color;
-    field.button->setIcon(swatch(color));
-    field.button->setToolTip(color.name());
+    if (color.isValid()) {
+        field.button->setIcon(swatch(color));
+        field.button->setText({});
+        field.button->setToolButtonStyle(Qt::ToolButtonIconOnly);
+        field.button->setToolTip(color.name());
+    } else {
+        field.button->setIcon({});
+        field.button->setText(tr("Theme"));
+        field.button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        field.button->setToolTip(tr("As the theme draws it; click to choose a colour"));
+    }
 }
 
 void PreferencesDialog::show(const Preferences& preferences) {

@@ -155,6 +155,11 @@ SimulationMode::SimulationMode(MainWindow* window)
         m_controls->setProjectAvailable(m_window->currentDocument() != nullptr);
         refresh();
     });
+    if (VariablesPage* variables = window->variablesPage()) {
+        connect(variables, &VariablesPage::operandToggled, this, &SimulationMode::operandClicked);
+        connect(variables, &VariablesPage::operandMenuRequested, this,
+                &SimulationMode::showOperandMenu);
+    }
     if (LadderPage* ladder = window->ladderPage()) {
         connect(ladder, &LadderPage::operandClicked, this, &SimulationMode::operandClicked);
         connect(ladder, &LadderPage::operandMenuRequested, this, &SimulationMode::showOperandMenu);

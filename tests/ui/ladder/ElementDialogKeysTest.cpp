@@ -3,7 +3,9 @@
 // at New Variable..., a jump is not offered a variable, one Return or Escape
 // does what it says with the completion list open, and the network comment is
 // confirmed with Ctrl+Return.
+#include "DialogDriver.h"
 #include "document/ProjectDocument.h"
+#include "ladder/ConfigOptionDialog.h"
 #include "ladder/ElementDialog.h"
 #include "ladder/NetworkCommentDialog.h"
 #include "project/ProjectFile.h"
@@ -11,6 +13,8 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QCompleter>
+#include <QDialogButtonBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -117,6 +121,51 @@ TEST(NetworkCommentKeys, TabLeavesTheTextAndCtrlReturnConfirms) {
     QTest::keyClick(editor, Qt::Key_Return, Qt::ControlModifier);
     EXPECT_EQ(dialog.result(), QDialog::Accepted);
     EXPECT_EQ(dialog.text(), QStringLiteral("first\nsecond\n").chopped(1));
+}
+
+// Issue 17, finding 7: a refusal grows its dialog and covers nothing.
+void expectProblemShownWhole(QDialog& dialog) {
+    auto* problem = dialog.findChild<QLabel*>(QStringLiteral("problem"));
+    ASSERT_NE(problem, nullptr);
+    EXPECT_TRUE(problem->isVisible());
+    EXPECT_FALSE(problem->text().isEmpty());
+    EXPECT_GE(problem->height(), problem->heightForWidth(problem->width()));
+    auto* buttons = dialog.findChild<QDialogButtonBox*>();
+    ASSERT_NE(buttons, nullptr);
+    EXPECT_LE(problem->geometry().bottom(), buttons->geometry().top());
+    for (auto* field : dialog.findChildren<QLineEdit*>())
+        EXPECT_FALSE(problem->geometry().intersects(field->geometry()))
+            << field->objectName().toStdString();
+}
+
+TEST(DialogProblems, TheNewVariableDialogShowsItsRefusalWhole) {
+    rs::ui::ProjectDocument document(namedProject());
+    rs::ui::ElementDialog dialog(&document, 0, false,
+                                 ElementFields{ElementKind::NormallyOpen, "", "", false, ""});
+    dialog.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+    DialogDriver driver({[](QDialog& newVariable) {
+        EXPECT_EQ(newVariable.objectName(), QStringLiteral("newVariableDialog"));
+        newVariable.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+        QApplication::processEvents();
+        expectProblemShownWhole(newVariable);
+        newVariable.reject();
+    }});
+    dialog.findChild<QPushButton*>(QStringLiteral("newVariable"))->click();
+    EXPECT_TRUE(driver.done());
+}
+
+TEST(DialogProblems, TheConfigOptionDialogExplainsItselfAndShowsItsRefusalWhole) {
+    rs::ui::ProjectDocument document(namedProject());
+    rs::ui::ConfigOptionDialog dialog(&document, 0, rs::ladder::ConfigOption{});
+    dialog.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+    auto* description = dialog.findChild<QLineEdit*>(QStringLiteral("description"));
+    EXPECT_GE(description->width(), description->fontMetrics().averageCharWidth() * 40);
+    dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+    QApplication::processEvents();
+    EXPECT_TRUE(dialog.isVisible());
+    expectProblemShownWhole(dialog);
 }
 
 } // namespace

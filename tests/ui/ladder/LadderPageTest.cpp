@@ -3,6 +3,7 @@
 
 #include "DialogDriver.h"
 #include "document/ProjectDocument.h"
+#include "ladder/LadderDrawing.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
@@ -557,6 +558,35 @@ TEST_F(LadderPageTest, EveryToolBarCommandShowsAt1280AndTheEssentialOnesAt1024) 
          {"ladderTextAction", "placeAfterAction", "placeBeforeAction", "placeParallelAction",
           "editNetworkAction", "updateNetworkAction", "undoNetworkAction"})
         EXPECT_TRUE(shown(network, page().action(QLatin1String(name)))) << name;
+}
+
+// Issue 17, live view: the preference colours are applied at once or
+// removed, and by default the page draws exactly the theme's colours.
+TEST_F(LadderPageTest, PreferenceColoursAreAppliedAtOnceAndTheDefaultsAreTheTheme) {
+    open(kTwoUnits);
+    clickNode({PageRef::Kind::Ladder, document(), 0, 0});
+    const rs::ui::LadderDrawing theme = rs::ui::drawingFor(page().palette());
+    EXPECT_EQ(page().drawing().style.background, theme.style.background);
+    EXPECT_EQ(page().drawing().style.ink, theme.style.ink);
+    EXPECT_EQ(page().drawing().style.powered, theme.style.powered);
+    EXPECT_FALSE(page().drawing().style.body.isValid()); // as the background
+    EXPECT_EQ(page().drawing().selection, theme.selection);
+
+    auto backgroundPixel = [&] {
+        const QImage image = viewport()->grab().toImage();
+        return image.pixelColor(image.width() - 3, image.height() - 3);
+    };
+    rs::ui::LadderColours chosen;
+    chosen.background = QColor(0x20, 0x30, 0x40);
+    chosen.lines = QColor(0xff, 0xee, 0x00);
+    chosen.linesOff = QColor(0x00, 0xee, 0xff);
+    page().setColours(chosen);
+    EXPECT_EQ(backgroundPixel(), chosen.background);
+    EXPECT_EQ(page().drawing().style.ink, chosen.lines);
+
+    page().setColours({});
+    EXPECT_EQ(backgroundPixel(), theme.style.background);
+    EXPECT_EQ(page().drawing().style.ink, theme.style.ink);
 }
 
 TEST_F(LadderPageTest, ATextEditLaysTheLadderOutAgain) {

@@ -71,19 +71,19 @@ TEST_F(InstanceVariablesPagesTest, TheVariablesPageShowsAPrivateVariableAsUsedBy
     ASSERT_TRUE(window.showPage(PageRef::Kind::Variables, 0));
     EXPECT_EQ(cell("M0.598", VariableTableModel::DescriptionColumn).toString(),
               QStringLiteral("Private variable #fault of block EquivalentInputs (line 3)"));
-    EXPECT_FALSE(cell("M0.598", VariableTableModel::StatusColumn, Qt::DecorationRole).isNull());
+    EXPECT_EQ(cell("M0.598", VariableTableModel::StatusColumn, Qt::DisplayRole).toString(), "used");
     EXPECT_EQ(cell("M0.598", VariableTableModel::StatusColumn, Qt::ToolTipRole).toString(),
               QStringLiteral("Used in the code of the unit\n"
                              "Private variable #fault of block EquivalentInputs (line 3)"));
 
     // No statement uses it, yet it is the instance's.
-    EXPECT_FALSE(cell("R0.149", VariableTableModel::StatusColumn, Qt::DecorationRole).isNull());
+    EXPECT_EQ(cell("R0.149", VariableTableModel::StatusColumn, Qt::DisplayRole).toString(), "used");
     EXPECT_EQ(cell("R0.149", VariableTableModel::StatusColumn, Qt::ToolTipRole).toString(),
               QStringLiteral("Private variable #spare of block EquivalentInputs (line 3)"));
 
     EXPECT_EQ(cell("I0.0", VariableTableModel::DescriptionColumn).toString(),
               QStringLiteral("Pin Channel1 of block EquivalentInputs (line 3)"));
-    EXPECT_TRUE(cell("M0.597", VariableTableModel::StatusColumn, Qt::DecorationRole).isNull());
+    EXPECT_TRUE(cell("M0.597", VariableTableModel::StatusColumn, Qt::DisplayRole).isNull());
     EXPECT_TRUE(cell("M0.597", VariableTableModel::DescriptionColumn).toString().isEmpty());
 }
 

@@ -466,7 +466,7 @@ TEST_F(ProjectWorkflowTest, TheCodeIsEditedAsTextAndEveryPageFollows) {
     // The variables page shows the input in use now.
     clickNode({PageRef::Kind::Variables, document(), 3});
     EXPECT_FALSE(variableCell(QStringLiteral("I3.0"), rs::ui::VariableTableModel::StatusColumn)
-                     .data(Qt::DecorationRole)
+                     .data(Qt::DisplayRole)
                      .isNull());
     // A rename on the variables page shows in the code.
     editCell(QStringLiteral("I3.0"), rs::ui::VariableTableModel::NameColumn,

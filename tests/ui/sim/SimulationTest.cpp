@@ -2,6 +2,7 @@
 #include "WindowTest.h"
 
 #include "document/ProjectDocument.h"
+#include "ladder/LadderDrawing.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
 #include "ladder/NetworkItem.h"
@@ -217,8 +218,9 @@ TEST_F(SimulationTest, StatusColumnShowsTheEngineValues) {
     session()->stop();
     action("simulateAction")->trigger(); // back to editing: no values
     EXPECT_FALSE(session()->isActive());
-    EXPECT_TRUE(
-        page->model()->index(0, ui::VariableTableModel::StatusColumn).data().toString().isEmpty());
+    const QString after =
+        page->model()->index(0, ui::VariableTableModel::StatusColumn).data().toString();
+    EXPECT_TRUE(after.isEmpty() || after == QStringLiteral("used")) << after.toStdString();
 }
 
 TEST_F(SimulationTest, ForcesAreMarkedEverywhereAndReleasedFromTheList) {
@@ -454,7 +456,8 @@ TEST_F(SimulationTest, AnotherProjectsPagesShowNoValues) {
     ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, muting, 0, 0}));
     ui::VariableTableModel* model = window.variablesPage()->model();
     ASSERT_GT(model->rowCount(), 0);
-    EXPECT_TRUE(model->index(0, ui::VariableTableModel::StatusColumn).data().toString().isEmpty());
+    const QString other = model->index(0, ui::VariableTableModel::StatusColumn).data().toString();
+    EXPECT_TRUE(other.isEmpty() || other == QStringLiteral("used")) << other.toStdString();
     ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, muting, 0, 0}));
     EXPECT_FALSE(ladder()->isLive());
     ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, session()->document(), 0, 0}));
@@ -534,4 +537,67 @@ TEST_F(SimulationTest, TheForcesAndWatchHeadingsAreNotCut) {
             EXPECT_GE(header->sectionSize(column), header->sectionSizeHint(column))
                 << name << " column " << column;
     }
+}
+
+// Issue 17, live view: the Variables page toggles and forces while simulating,
+// and outside simulation says "used" in words, not with a dot like a value.
+TEST_F(SimulationTest, TheVariablesPageTogglesAndForcesWhileSimulating) {
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, document(), 0, 0}));
+    ui::VariablesPage* page = window.variablesPage();
+    QTableView* table = page->table();
+    auto rowOf = [&](const char* word) {
+        for (int row = 0; row < table->model()->rowCount(); ++row)
+            if (table->model()->index(row, 0).data(ui::VariableTableModel::kAddressRole) ==
+                QLatin1String(word))
+                return row;
+        return -1;
+    };
+    const int row = rowOf("I0.12");
+    ASSERT_GE(row, 0);
+    const QModelIndex status = table->model()->index(row, ui::VariableTableModel::StatusColumn);
+    EXPECT_EQ(status.data().toString(), QStringLiteral("used"));
+    EXPECT_TRUE(status.data(Qt::DecorationRole).isNull());
+
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    begin();
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Variables, document(), 0, 0}));
+    const QPoint cell = table->visualRect(status).center();
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell);
+    QTest::mouseDClick(table->viewport(), Qt::LeftButton, {}, cell);
+    EXPECT_EQ(simulation().value(addressOf("I0.12")), 1);
+    EXPECT_FALSE(table->indexWidget(status)); // no editor: the project is not edited
+    table->setFocus();
+    table->setCurrentIndex(status);
+    QTest::keyClick(table, Qt::Key_Space);
+    EXPECT_EQ(simulation().value(addressOf("I0.12")), 0);
+    EXPECT_FALSE(document()->isModified());
+
+    // The context menu forces, releases and watches.
+    QTimer::singleShot(0, [&] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        ASSERT_NE(menu, nullptr);
+        EXPECT_EQ(menu->objectName(), QStringLiteral("forceMenu"));
+        for (QAction* action : menu->actions())
+            if (action->text().contains(QStringLiteral("&1")))
+                action->trigger();
+        menu->close();
+    });
+    emit table->customContextMenuRequested(cell);
+    EXPECT_TRUE(session()->isForced(addressOf("I0.12")));
+}
+
+// Issue 17, live view: "ladder lines off" is the colour of what carries no
+// power while simulating, "ladder lines" while editing.
+TEST_F(SimulationTest, LinesOffAreTheColourOfUnpoweredLinesWhileSimulating) {
+    ui::LadderColours chosen;
+    chosen.lines = QColor(0xff, 0xee, 0x00);
+    chosen.linesOff = QColor(0x00, 0xee, 0xff);
+    chosen.linesOn = QColor(0xee, 0x00, 0xff);
+    ladder()->setColours(chosen);
+    EXPECT_EQ(ladder()->drawing().style.ink, chosen.lines);
+    begin();
+    EXPECT_EQ(ladder()->drawing().style.ink, chosen.linesOff);
+    EXPECT_EQ(ladder()->drawing().style.powered, chosen.linesOn);
+    action("simulateAction")->trigger();
+    EXPECT_EQ(ladder()->drawing().style.ink, chosen.lines);
 }
