@@ -26,14 +26,19 @@ protected:
     bool waitForCompile() {
         return QTest::qWaitFor([&] { return !window.isCompiling(); }, 30000);
     }
+    // The manual's muting example in a file of its own, opened and shown.
+    QString openMuting() {
+        const QString path =
+            writeFile(QStringLiteral("muting.sps"),
+                      readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
+        EXPECT_TRUE(window.loadFile(path).isEmpty());
+        showWindow();
+        return path;
+    }
 };
 
 TEST_F(CompileTest, CompilingOffTheWindowsThreadEndsWithTheOriginalsClosingLine) {
-    const QString path =
-        writeFile(QStringLiteral("muting.sps"),
-                  readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
-    ASSERT_TRUE(window.loadFile(path).isEmpty());
-    showWindow();
+    openMuting();
     action("compileAction")->trigger();
     // The window is free while the compiler runs; the button waits for it.
     EXPECT_TRUE(window.isCompiling() || !output()->closingLine().isEmpty());
@@ -83,11 +88,7 @@ TEST_F(CompileTest, AnErrorIsListedWithItsUnitAndLineAndDoubleClickGoesThere) {
 
 // Issue 17, finding 6: the Output dock belongs to the project compiled.
 TEST_F(CompileTest, ClosingTheProjectTakesItsResultAndTheOutputDockAway) {
-    const QString path =
-        writeFile(QStringLiteral("muting.sps"),
-                  readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
-    ASSERT_TRUE(window.loadFile(path).isEmpty());
-    showWindow();
+    openMuting();
     action("compileAction")->trigger();
     ASSERT_TRUE(waitForCompile());
     auto* dock = window.findChild<QDockWidget*>(QStringLiteral("outputDock"));
@@ -104,10 +105,7 @@ class CompileUnsavedTest : public CompileTest {
 protected:
     void SetUp() override {
         CompileTest::SetUp();
-        path = writeFile(QStringLiteral("muting.sps"),
-                         readFile(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps")));
-        ASSERT_TRUE(window.loadFile(path).isEmpty());
-        showWindow();
+        path = openMuting();
         document()->edit(QStringLiteral("Describe"),
                          [](rs::project::Project& p) { p.description = "edited"; });
         ASSERT_TRUE(document()->isModified());
