@@ -465,6 +465,14 @@
         <source>Er%1</source>
         <translation>Er%1</translation>
     </message>
+    <message>
+        <source>Signature</source>
+        <translation>Signatur</translation>
+    </message>
+    <message>
+        <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
+        <translation>Die Programmsignatur des kompilierten Codes der Einheit, wie rungsmith-cli signature sie ausgibt; sie ändert sich genau dann, wenn sich ändert, was die Einheit tut</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CompileOutput</name>

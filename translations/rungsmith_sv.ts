@@ -465,6 +465,14 @@
         <source>Er%1</source>
         <translation>Er%1</translation>
     </message>
+    <message>
+        <source>Signature</source>
+        <translation>Signatur</translation>
+    </message>
+    <message>
+        <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
+        <translation>Programsignaturen för enhetens kompilerade kod, som rungsmith-cli signature skriver ut den; den ändras precis när det enheten gör ändras</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CompileOutput</name>

@@ -2,6 +2,7 @@
 #include "BusStatusView.h"
 
 #include "SimulationSession.h"
+#include "compiler/Signature.h"
 #include "document/ProjectDocument.h"
 #include "shell/StatusColors.h"
 #include "shell/UnitCaption.h"
@@ -9,6 +10,8 @@
 #include <QHeaderView>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <map>
 
 namespace rs::ui {
 
@@ -24,9 +27,14 @@ QString unitCodeText(int station, int code) {
 }
 
 BusStatusView::BusStatusView(SimulationSession* session, QWidget* parent)
-    : QWidget(parent), m_session(session), m_table(new QTableWidget(0, 4, this)) {
+    : QWidget(parent), m_session(session), m_table(new QTableWidget(0, 5, this)) {
     m_table->setObjectName(QStringLiteral("busStatusTable"));
-    m_table->setHorizontalHeaderLabels({tr("Station"), tr("Pluto"), tr("State"), tr("Code")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Station"), tr("Pluto"), tr("State"), tr("Code"), tr("Signature")});
+    m_table->horizontalHeaderItem(SignatureColumn)
+        ->setToolTip(tr("The program signature of the unit's compiled code, as "
+                        "rungsmith-cli signature prints it; it changes exactly when what "
+                        "the unit does changes"));
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
@@ -44,6 +52,10 @@ void BusStatusView::refresh() {
         simulation && document ? document->project().stations() : std::vector<int>{};
     m_table->setRowCount(static_cast<int>(stations.size()));
     const bool running = m_session->state() == SimulationSession::State::Running;
+    std::map<int, QString> signatures;
+    for (const compiler::UnitImage& image : m_session->images())
+        signatures[image.station] =
+            QString::fromStdString(compiler::signatureText(compiler::unitSignature(image)));
     for (int row = 0; row < static_cast<int>(stations.size()); ++row) {
         const int station = stations[static_cast<std::size_t>(row)];
         const bool present = simulation->unit(station) != nullptr;
@@ -56,7 +68,8 @@ void BusStatusView::refresh() {
                                 : running ? tr("Ok, running")
                                           : tr("Ok, stopped"),
                                 present ? (code == 0 ? tr("E0=No Error") : tr("Er%1").arg(code))
-                                        : QString()};
+                                        : QString(),
+                                signatures.count(station) ? signatures[station] : QString()};
         for (int column = 0; column < cells.size(); ++column) {
             QTableWidgetItem* item = m_table->item(row, column);
             if (!item) {

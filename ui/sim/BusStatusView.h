@@ -19,7 +19,9 @@ QString unitCodeText(int station, int code);
 class BusStatusView : public QWidget {
     Q_OBJECT
 public:
-    enum Column { StationColumn, UnitColumn, StateColumn, CodeColumn };
+    // The signature is of the image simulated (docs/review.md), what
+    // `rungsmith-cli signature` prints for the project as compiled.
+    enum Column { StationColumn, UnitColumn, StateColumn, CodeColumn, SignatureColumn };
 
     explicit BusStatusView(SimulationSession* session, QWidget* parent = nullptr);
 

@@ -414,6 +414,18 @@ TEST_F(SimulationTest, BusStatusListsTheUnitsAndTheStatusBarTheCode) {
     EXPECT_EQ(bus->item(0, ui::BusStatusView::StationColumn)->text(), QStringLiteral("0"));
     EXPECT_EQ(bus->item(1, ui::BusStatusView::StationColumn)->text(), QStringLiteral("1"));
     EXPECT_EQ(bus->item(1, ui::BusStatusView::CodeColumn)->text(), QStringLiteral("E0=No Error"));
+    // Each unit's program signature, as the command line prints it (issue 18).
+    QProcess cli;
+    cli.start(QStringLiteral(RUNGSMITH_CLI),
+              {QStringLiteral("signature"),
+               QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps")});
+    ASSERT_TRUE(cli.waitForFinished(30000));
+    const QString printed = QString::fromUtf8(cli.readAllStandardOutput());
+    for (int row = 0; row < 2; ++row) {
+        const QString signature = bus->item(row, ui::BusStatusView::SignatureColumn)->text();
+        EXPECT_EQ(signature.size(), 8);
+        EXPECT_TRUE(printed.contains(signature)) << printed.toStdString();
+    }
     EXPECT_EQ(mode()->unitCode()->text(), QStringLiteral("Pluto 0: E0=No Error"));
     session()->force(addressOf("SR1.11"), 26);
     EXPECT_EQ(bus->item(1, ui::BusStatusView::CodeColumn)->text(), QStringLiteral("Er26"));
