@@ -2040,6 +2040,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Change Project Description</source>
         <translation>Projektbeschreibung ändern</translation>
     </message>
+    <message>
+        <source>Program signature:</source>
+        <translation>Programmsignatur:</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>
@@ -2558,6 +2562,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Registers:</source>
         <translation>Register:</translation>
+    </message>
+    <message>
+        <source>Program signature:</source>
+        <translation>Programmsignatur:</translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation>Prüfung</translation>
     </message>
 </context>
 <context>
@@ -3270,6 +3282,21 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Return starts a new line; Ctrl+Return confirms.</source>
         <translation>Eingabe beginnt eine neue Zeile; Strg+Eingabe bestätigt.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation>Ändert sich genau dann, wenn sich ändert, was das Programm tut; Formatierung, Kommentare, Namen und Beschreibungen lassen sie, wie sie ist</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>wird berechnet …</translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>keine, solange das Projekt Fehler hat (Erstellen &gt; Kompilieren zeigt sie)</translation>
     </message>
 </context>
 </TS>

@@ -2070,6 +2070,10 @@ Its text page (F6) shows and edits it.</source>
         <source>Change Project Description</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Program signature:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>
@@ -2556,6 +2560,14 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Registers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program signature:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Review</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3268,6 +3280,21 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

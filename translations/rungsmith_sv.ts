@@ -2040,6 +2040,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Change Project Description</source>
         <translation>Ändra projektbeskrivningen</translation>
     </message>
+    <message>
+        <source>Program signature:</source>
+        <translation>Programsignatur:</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>
@@ -2558,6 +2562,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Registers:</source>
         <translation>Register:</translation>
+    </message>
+    <message>
+        <source>Program signature:</source>
+        <translation>Programsignatur:</translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation>Granskning</translation>
     </message>
 </context>
 <context>
@@ -3270,6 +3282,21 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Return starts a new line; Ctrl+Return confirms.</source>
         <translation>Retur börjar en ny rad; Ctrl+Retur bekräftar.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation>Ändras precis när det programmet gör ändras; formatering, kommentarer, namn och beskrivningar lämnar den som den är</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>beräknas …</translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>ingen så länge projektet har fel (Bygg &gt; Kompilera visar dem)</translation>
     </message>
 </context>
 </TS>

@@ -4,6 +4,7 @@
 #include "blocks/LibrarySearch.h"
 #include "blocks/ProjectInstances.h"
 #include "document/ProjectDocument.h"
+#include "pages/SignatureLabel.h"
 #include "project/ProjectProperties.h"
 #include "project/UnitSettings.h"
 #include "shell/PageTitle.h"
@@ -38,7 +39,8 @@ ProjectPage::ProjectPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_name(new QLineEdit(this)),
       m_nameProblem(new QLabel(this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
-      m_file(new QLabel(this)), m_units(new QLabel(this)), m_libraries(new QListWidget(this)),
+      m_file(new QLabel(this)), m_units(new QLabel(this)), m_signature(new SignatureLabel(this)),
+      m_libraries(new QListWidget(this)),
       m_addStandard(new QPushButton(tr("Add &Standard Library"), this)),
       m_addUser(new QPushButton(tr("Add &User Library..."), this)),
       m_remove(new QPushButton(tr("&Remove Library"), this)) {
@@ -88,6 +90,8 @@ ProjectPage::ProjectPage(QWidget* parent)
     form->addRow(QString(), m_includeSource);
     form->addRow(tr("File:"), m_file);
     form->addRow(tr("Units:"), m_units);
+    m_signature->setObjectName(QStringLiteral("projectSignature"));
+    form->addRow(tr("Program signature:"), m_signature);
     auto* libraryButtons = new QHBoxLayout;
     libraryButtons->addWidget(m_addStandard);
     libraryButtons->addWidget(m_addUser);
@@ -131,6 +135,7 @@ void ProjectPage::showProject(ProjectDocument* document) {
         disconnect(m_document, nullptr, this, nullptr);
     }
     m_document = document;
+    m_signature->setSource(document, SignatureLabel::kProject);
     if (!document)
         return;
     connect(document, &ProjectDocument::changed, this, &ProjectPage::refresh);

@@ -14,6 +14,8 @@ class QPushButton;
 
 namespace rs::ui {
 
+class SignatureLabel;
+
 class PageTitle;
 class ProjectDocument;
 
@@ -43,6 +45,7 @@ private:
     QCheckBox* m_includeSource;
     QLabel* m_file;
     QLabel* m_units;
+    SignatureLabel* m_signature;
     QListWidget* m_libraries;
     QPushButton* m_addStandard;
     QPushButton* m_addUser;

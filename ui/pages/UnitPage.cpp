@@ -3,6 +3,7 @@
 
 #include "blocks/UnitResources.h"
 #include "document/ProjectDocument.h"
+#include "pages/SignatureLabel.h"
 #include "pages/UnitSettingsForm.h"
 #include "project/ExportedVariables.h"
 #include "project/RemanentVariables.h"
@@ -37,6 +38,7 @@ UnitPage::UnitPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_form(new UnitSettingsForm(this)),
       m_undeclared(new QLabel(this)), m_exports(new QLabel(this)), m_remanent(new QLabel(this)),
       m_timers(new QLabel(this)), m_memories(new QLabel(this)), m_registers(new QLabel(this)),
+      m_signature(new SignatureLabel(this)),
       m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)) {
     m_undeclared->setWordWrap(true);
     m_undeclared->setText(tr("This unit has code but no '! id_pluto' declaration. Any change "
@@ -62,6 +64,10 @@ UnitPage::UnitPage(QWidget* parent)
     resourceForm->addRow(tr("Timers:"), m_timers);
     resourceForm->addRow(tr("Memories:"), m_memories);
     resourceForm->addRow(tr("Registers:"), m_registers);
+    m_signature->setObjectName(QStringLiteral("unitSignature"));
+    auto* review = new QGroupBox(tr("Review"), this);
+    auto* reviewForm = new QFormLayout(review);
+    reviewForm->addRow(tr("Program signature:"), m_signature);
 
     // Scrolled, so that the page does not make the window taller than a small screen.
     auto* content = new QWidget(this);
@@ -71,6 +77,7 @@ UnitPage::UnitPage(QWidget* parent)
     contentLayout->addWidget(m_form);
     contentLayout->addWidget(variables);
     contentLayout->addWidget(resources);
+    contentLayout->addWidget(review);
     contentLayout->addStretch();
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -91,6 +98,7 @@ void UnitPage::showUnit(ProjectDocument* document, int station) {
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
     m_station = station;
+    m_signature->setSource(document, station);
     if (!document)
         return;
     connect(document, &ProjectDocument::changed, this, &UnitPage::refresh);

@@ -9,6 +9,8 @@ class QPushButton;
 
 namespace rs::ui {
 
+class SignatureLabel;
+
 class PageTitle;
 class ProjectDocument;
 class UnitSettingsForm;
@@ -39,6 +41,7 @@ private:
     QLabel* m_timers;
     QLabel* m_memories;
     QLabel* m_registers;
+    SignatureLabel* m_signature;
     QPushButton* m_remanentButton;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;

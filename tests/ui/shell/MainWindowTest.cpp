@@ -5,8 +5,10 @@
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "output/ProblemsView.h"
+#include "pages/SignatureLabel.h"
 #include "pages/VariablesPage.h"
 #include "project/ProjectFile.h"
+#include "project/UnitText.h"
 #include "shell/ProjectTree.h"
 #include "shell/RecentFiles.h"
 #include "text/ProgramEditor.h"
@@ -19,6 +21,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QProcess>
 #include <QStackedWidget>
 #include <QTest>
 #include <QTranslator>
@@ -488,4 +491,37 @@ TEST_F(MainWindowTest, TheTextViewMarksWhatTheCompilerRejectsAfterThePause) {
         [&] { return rs::lang::errorCount(page->diagnostics()) == 0 && !page->isChecking(); },
         MainWindow::kCheckDelayMs * 20));
     EXPECT_TRUE(summary().startsWith(QStringLiteral("0 errors"))) << summary().toStdString();
+}
+
+// Issue 18: the project and unit pages show the program signatures that
+// rungsmith-cli signature prints, and follow an edit of the code.
+TEST_F(MainWindowTest, TheProjectAndUnitPagesShowTheProgramSignatures) {
+    const QString file = QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps");
+    QProcess cli;
+    cli.start(QStringLiteral(RUNGSMITH_CLI), {QStringLiteral("signature"), file});
+    ASSERT_TRUE(cli.waitForFinished(30000));
+    const QStringList printed =
+        QString::fromUtf8(cli.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
+    ASSERT_EQ(printed.size(), 3);
+    ASSERT_TRUE(window.loadFile(file).isEmpty());
+    showWindow();
+    auto shown = [&](const char* name) {
+        auto* label = window.findChild<rs::ui::SignatureLabel*>(QLatin1String(name));
+        EXPECT_NE(label, nullptr) << name;
+        if (!label || !QTest::qWaitFor([&] { return !label->isComputing(); }, 30000))
+            return QString();
+        return label->text();
+    };
+    ASSERT_TRUE(window.showPage(PageRef::Kind::Project, 0));
+    EXPECT_EQ(QStringLiteral("project ") + shown("projectSignature"), printed[2]);
+    ASSERT_TRUE(window.showPage(PageRef::Kind::Unit, 1));
+    const QString before = shown("unitSignature");
+    EXPECT_EQ(QStringLiteral("Pluto 01 ") + before, printed[1]);
+
+    rs::project::Project edited = document()->project();
+    const std::string code = rs::project::unitText(edited, 1);
+    const auto read = rs::project::readUnitText(edited, 1, code + "Q1.3 = I1.0\n");
+    ASSERT_TRUE(read.ok());
+    document()->replace(QStringLiteral("typing"), read.project);
+    EXPECT_NE(shown("unitSignature"), before);
 }
