@@ -1529,6 +1529,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>C&amp;heck Only</source>
         <translation>Nur &amp;prüfen</translation>
     </message>
+    <message>
+        <source>Mark as &amp;Validated...</source>
+        <translation>Als &amp;validiert markieren …</translation>
+    </message>
+    <message>
+        <source>Record this version&apos;s program signatures as the validated baseline</source>
+        <translation>Die Programmsignaturen dieser Version als validierte Basislinie festhalten</translation>
+    </message>
+    <message>
+        <source>%1 is marked as validated.</source>
+        <translation>%1 ist als validiert markiert.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -2043,6 +2055,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Program signature:</source>
         <translation>Programmsignatur:</translation>
+    </message>
+    <message>
+        <source>Validated:</source>
+        <translation>Validiert:</translation>
+    </message>
+    <message>
+        <source>on %1 by %2 (signature %3)</source>
+        <translation>am %1 von %2 (Signatur %3)</translation>
+    </message>
+    <message>
+        <source>not yet (Project &gt; Mark as Validated)</source>
+        <translation>noch nicht (Projekt &gt; Als validiert markieren)</translation>
     </message>
 </context>
 <context>
@@ -3297,6 +3321,36 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>none while the project has errors (Build &gt; Compile shows them)</source>
         <translation>keine, solange das Projekt Fehler hat (Erstellen &gt; Kompilieren zeigt sie)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation>Als validiert markieren</translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation>Hält die Programmsignaturen dieser Version als validierte Basislinie fest: Von nun an sagt die Prüfung, was sich seitdem geändert hat. Es ändert nichts an dem, was die Einheiten tun.</translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation>Validiert &amp;von:</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation>Als validiert &amp;markieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt ihn.</numerusform>
+            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt sie.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

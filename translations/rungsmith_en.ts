@@ -1559,6 +1559,18 @@ Its text page (F6) shows and edits it.</source>
         <source>C&amp;heck Only</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Mark as &amp;Validated...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record this version&apos;s program signatures as the validated baseline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is marked as validated.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -2072,6 +2084,18 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Program signature:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validated:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on %1 by %2 (signature %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not yet (Project &gt; Mark as Validated)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3296,6 +3320,36 @@ Its text page (F6) shows and edits it.</source>
     <message>
         <source>none while the project has errors (Build &gt; Compile shows them)</source>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>The project has %n error and cannot be validated. Build &gt; Compile (F7) lists it.</numerusform>
+            <numerusform>The project has %n errors and cannot be validated. Build &gt; Compile (F7) lists them.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1529,6 +1529,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>C&amp;heck Only</source>
         <translation>&amp;Kontrollera bara</translation>
     </message>
+    <message>
+        <source>Mark as &amp;Validated...</source>
+        <translation>Markera som &amp;validerat …</translation>
+    </message>
+    <message>
+        <source>Record this version&apos;s program signatures as the validated baseline</source>
+        <translation>Spara den här versionens programsignaturer som den validerade baslinjen</translation>
+    </message>
+    <message>
+        <source>%1 is marked as validated.</source>
+        <translation>%1 är markerat som validerat.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -2043,6 +2055,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Program signature:</source>
         <translation>Programsignatur:</translation>
+    </message>
+    <message>
+        <source>Validated:</source>
+        <translation>Validerat:</translation>
+    </message>
+    <message>
+        <source>on %1 by %2 (signature %3)</source>
+        <translation>den %1 av %2 (signatur %3)</translation>
+    </message>
+    <message>
+        <source>not yet (Project &gt; Mark as Validated)</source>
+        <translation>inte ännu (Projekt &gt; Markera som validerat)</translation>
     </message>
 </context>
 <context>
@@ -3297,6 +3321,36 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>none while the project has errors (Build &gt; Compile shows them)</source>
         <translation>ingen så länge projektet har fel (Bygg &gt; Kompilera visar dem)</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation>Markera som validerat</translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation>Sparar den här versionens programsignaturer som den validerade baslinjen: från och med nu säger granskningen vad som har ändrats sedan dess. Det ändrar inget som enheterna gör.</translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation>Validerat &amp;av:</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation>&amp;Markera som validerat</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar det.</numerusform>
+            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar dem.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -21,7 +21,7 @@ ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
     return {project.description,       project.includeSource,
             project.unitDescriptions,  project.variableDescriptions,
             project.exportedVariables, project.remanentVariables,
-            project.libraries};
+            project.libraries,         project.baseline};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {
@@ -32,17 +32,14 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;
     project.libraries = records.libraries;
+    project.baseline = records.baseline;
 }
 
 ProjectChange ProjectChange::between(const Project& before, const Project& after) {
     ProjectChange change;
     Records was = recordsOf(before);
     Records is = recordsOf(after);
-    if (was.description != is.description || was.includeSource != is.includeSource ||
-        was.unitDescriptions != is.unitDescriptions ||
-        was.variableDescriptions != is.variableDescriptions ||
-        was.exportedVariables != is.exportedVariables ||
-        was.remanentVariables != is.remanentVariables || was.libraries != is.libraries)
+    if (!(was == is))
         change.m_records = Replacement<Records>{std::move(was), std::move(is)};
     if (!(before.program.preamble == after.program.preamble))
         change.m_preamble = {before.program.preamble, after.program.preamble};

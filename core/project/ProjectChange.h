@@ -36,6 +36,8 @@ private:
         std::set<lang::Address> exportedVariables;
         std::set<lang::Address> remanentVariables;
         std::vector<std::string> libraries;
+        std::optional<Baseline> baseline;
+        friend bool operator==(const Records&, const Records&) = default;
     };
     struct UnitChange {
         std::size_t index = 0;

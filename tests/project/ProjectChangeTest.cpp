@@ -57,6 +57,10 @@ TEST(ProjectChange, ApplyAndRevertWalkTheHistoryExactly) {
             p = read.project;
         },
         [](auto& p) { p.description = "second"; },
+        // Marking as validated changes only the baseline (issue 18).
+        [](auto& p) {
+            p.baseline = project::Baseline{"2026-12-02", "A. Reviewer", "", 7, {}};
+        },
         [](auto& p) {
             project::UnitSettings unit;
             unit.station = 1;

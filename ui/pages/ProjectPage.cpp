@@ -3,6 +3,7 @@
 
 #include "blocks/LibrarySearch.h"
 #include "blocks/ProjectInstances.h"
+#include "compiler/Signature.h"
 #include "document/ProjectDocument.h"
 #include "pages/SignatureLabel.h"
 #include "project/ProjectProperties.h"
@@ -40,7 +41,7 @@ ProjectPage::ProjectPage(QWidget* parent)
       m_nameProblem(new QLabel(this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
       m_file(new QLabel(this)), m_units(new QLabel(this)), m_signature(new SignatureLabel(this)),
-      m_libraries(new QListWidget(this)),
+      m_validated(new QLabel(this)), m_libraries(new QListWidget(this)),
       m_addStandard(new QPushButton(tr("Add &Standard Library"), this)),
       m_addUser(new QPushButton(tr("Add &User Library..."), this)),
       m_remove(new QPushButton(tr("&Remove Library"), this)) {
@@ -92,6 +93,9 @@ ProjectPage::ProjectPage(QWidget* parent)
     form->addRow(tr("Units:"), m_units);
     m_signature->setObjectName(QStringLiteral("projectSignature"));
     form->addRow(tr("Program signature:"), m_signature);
+    m_validated->setObjectName(QStringLiteral("validatedLabel"));
+    m_validated->setWordWrap(true);
+    form->addRow(tr("Validated:"), m_validated);
     auto* libraryButtons = new QHBoxLayout;
     libraryButtons->addWidget(m_addStandard);
     libraryButtons->addWidget(m_addUser);
@@ -162,6 +166,17 @@ void ProjectPage::refresh() {
         units << unitCaption(unit);
     m_units->setText(units.isEmpty() ? tr("None yet. Add one with Project > New Pluto.")
                                      : units.join(QStringLiteral(", ")));
+    if (p.baseline) {
+        const project::Baseline& b = *p.baseline;
+        QString said = tr("on %1 by %2 (signature %3)")
+                           .arg(QString::fromStdString(b.date), QString::fromStdString(b.by),
+                                QString::fromStdString(compiler::signatureText(b.signature)));
+        if (!b.comment.empty())
+            said += QStringLiteral(": ") + QString::fromStdString(b.comment);
+        m_validated->setText(said);
+    } else {
+        m_validated->setText(tr("not yet (Project > Mark as Validated)"));
+    }
     refreshLibraries();
     m_refreshing = false;
 }

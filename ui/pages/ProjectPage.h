@@ -46,6 +46,7 @@ private:
     QLabel* m_file;
     QLabel* m_units;
     SignatureLabel* m_signature;
+    QLabel* m_validated;
     QListWidget* m_libraries;
     QPushButton* m_addStandard;
     QPushButton* m_addUser;

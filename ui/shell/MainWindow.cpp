@@ -8,6 +8,7 @@
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
 #include "pages/IoOptionsPage.h"
+#include "pages/MarkValidatedDialog.h"
 #include "pages/ProjectPage.h"
 #include "pages/UnitPage.h"
 #include "pages/VariablesPage.h"
@@ -232,6 +233,17 @@ void MainWindow::createActions() {
         showPage(other);
     });
 
+    m_markValidatedAction = action(tr("Mark as &Validated..."), "markValidatedAction");
+    m_markValidatedAction->setStatusTip(
+        tr("Record this version's program signatures as the validated baseline"));
+    connect(m_markValidatedAction, &QAction::triggered, this, [this] {
+        if (ProjectDocument* document = currentDocument(); document && !document->isDamaged()) {
+            MarkValidatedDialog dialog(document, this);
+            if (dialog.exec() == QDialog::Accepted)
+                showMessage(tr("%1 is marked as validated.").arg(document->displayName()));
+        }
+    });
+
     m_preferencesAction =
         action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
     m_preferencesAction->setIcon(namedIcon("preferences"));
@@ -305,6 +317,8 @@ void MainWindow::createMenus() {
     projectMenu->addAction(unitActions.remanent);
     projectMenu->addAction(unitActions.importCsv);
     projectMenu->addAction(unitActions.exportCsv);
+    projectMenu->addSeparator();
+    projectMenu->addAction(m_markValidatedAction);
 
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     build->setObjectName(QStringLiteral("buildMenu"));
@@ -569,6 +583,7 @@ void MainWindow::updateActions() {
     m_units->updateActions(shown);
     m_compileAction->setEnabled(document != nullptr && !isCompiling());
     m_formatAction->setEnabled(onText);
+    m_markValidatedAction->setEnabled(document != nullptr && !document->isDamaged());
     m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
                                  m_current.kind == PageRef::Kind::Ladder);
     if (onText && m_textPage->station() == TextPage::kWholeProject) {

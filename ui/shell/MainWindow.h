@@ -176,6 +176,7 @@ private:
     QAction* m_pasteAction = nullptr;
     QAction* m_selectAllAction = nullptr;
     QAction* m_formatAction = nullptr;
+    QAction* m_markValidatedAction = nullptr;
     QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
     QAction* m_compileAction = nullptr;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WindowTest.h"
 
+#include "DialogDriver.h"
 #include "MessageBoxAnswerer.h"
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
@@ -16,8 +17,10 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QDir>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
@@ -524,4 +527,34 @@ TEST_F(MainWindowTest, TheProjectAndUnitPagesShowTheProgramSignatures) {
     ASSERT_TRUE(read.ok());
     document()->replace(QStringLiteral("typing"), read.project);
     EXPECT_NE(shown("unitSignature"), before);
+}
+
+// Issue 18: Project > Mark as Validated records the baseline as `validate`
+// does, as one undo step, and the project page says who and when.
+TEST_F(MainWindowTest, MarkAsValidatedRecordsTheBaselineAndThePageSaysSo) {
+    ASSERT_TRUE(
+        window.loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps"))
+            .isEmpty());
+    showWindow();
+    ASSERT_TRUE(window.showPage(PageRef::Kind::Project, 0));
+    auto* validated = window.findChild<QLabel*>(QStringLiteral("validatedLabel"));
+    ASSERT_NE(validated, nullptr);
+    EXPECT_TRUE(validated->text().startsWith(QStringLiteral("not yet")));
+    DialogDriver driver({[](QDialog& dialog) {
+        auto* by = dialog.findChild<QLineEdit*>(QStringLiteral("validatedBy"));
+        ASSERT_NE(by, nullptr);
+        by->setText(QStringLiteral("A. Reviewer"));
+        dialog.findChild<QLineEdit*>(QStringLiteral("validationComment"))
+            ->setText(QStringLiteral("FAT passed"));
+        dialog.accept();
+    }});
+    action("markValidatedAction")->trigger();
+    ASSERT_TRUE(driver.done());
+    ASSERT_TRUE(document()->project().baseline.has_value());
+    EXPECT_EQ(document()->project().baseline->by, "A. Reviewer");
+    EXPECT_TRUE(projectText().contains(";@validated")) << projectText().toStdString();
+    EXPECT_TRUE(validated->text().contains(QStringLiteral("A. Reviewer")));
+    EXPECT_TRUE(validated->text().contains(QStringLiteral("FAT passed")));
+    document()->undoStack()->undo();
+    EXPECT_FALSE(document()->project().baseline.has_value());
 }
