@@ -396,6 +396,21 @@
         <source>Collapse</source>
         <translation>Zuklappen</translation>
     </message>
+    <message>
+        <source>Edit Network</source>
+        <comment>tool bar</comment>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <comment>tool bar</comment>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <comment>tool bar</comment>
+        <translation>+ Netzwerk</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

@@ -396,6 +396,21 @@
         <source>Collapse</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Edit Network</source>
+        <comment>tool bar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <comment>tool bar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <comment>tool bar</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

@@ -396,6 +396,21 @@
         <source>Collapse</source>
         <translation>Fäll ihop</translation>
     </message>
+    <message>
+        <source>Edit Network</source>
+        <comment>tool bar</comment>
+        <translation>Redigera nätverk</translation>
+    </message>
+    <message>
+        <source>Undo Network</source>
+        <comment>tool bar</comment>
+        <translation>Ångra nätverk</translation>
+    </message>
+    <message>
+        <source>New Network</source>
+        <comment>tool bar</comment>
+        <translation>Nytt nätverk</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

@@ -98,6 +98,11 @@ LadderActions::LadderActions(QWidget* page) {
     zoomOut->setIconText(QStringLiteral("\u2212"));
     expandAll->setIconText(tr("Expand"));
     collapseAll->setIconText(tr("Collapse"));
+    // The same words as the menus' in English; a language with longer ones
+    // can say them shorter here.
+    editNetwork->setIconText(tr("Edit Network", "tool bar"));
+    undoNetwork->setIconText(tr("Undo Network", "tool bar"));
+    newNetwork->setIconText(tr("New Network", "tool bar"));
     zoomReset = made(page, "zoomResetAction", tr("100%"), tr("Actual size"));
     const std::pair<QAction*, QList<QKeySequence>> zooms[] = {
         {zoomIn, {QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)}},
