@@ -94,7 +94,6 @@ ProjectPage::ProjectPage(QWidget* parent)
     m_signature->setObjectName(QStringLiteral("projectSignature"));
     form->addRow(tr("Program signature:"), m_signature);
     m_validated->setObjectName(QStringLiteral("validatedLabel"));
-    m_validated->setWordWrap(true);
     form->addRow(tr("Validated:"), m_validated);
     auto* libraryButtons = new QHBoxLayout;
     libraryButtons->addWidget(m_addStandard);

@@ -52,11 +52,21 @@ void SignatureLabel::setSource(ProjectDocument* document, int station) {
 }
 
 bool SignatureLabel::isComputing() const {
-    return m_settle.isActive() || m_watcher->isRunning() || m_again;
+    return m_settle.isActive() || m_watcher->isRunning() || m_again ||
+           (m_waitsToShow && isVisible());
+}
+
+void SignatureLabel::showEvent(QShowEvent* event) {
+    QLabel::showEvent(event);
+    if (m_waitsToShow)
+        m_settle.start();
 }
 
 void SignatureLabel::start() {
     if (!m_document)
+        return;
+    m_waitsToShow = !isVisible();
+    if (m_waitsToShow)
         return;
     if (m_watcher->isRunning()) {
         m_again = true;

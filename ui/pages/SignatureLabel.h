@@ -16,7 +16,9 @@ class ProjectDocument;
 // A page's line with a program signature (docs/review.md): the project's or
 // one unit's, of the project as it is now, what `rungsmith-cli signature`
 // prints. The compiler makes it off the window's thread once a change has
-// settled; while the project has errors there is none, and the line says so.
+// settled, and only while the label shows: a page left behind keeps its
+// document but compiles nothing until it shows again. While the project has
+// errors there is none, and the line says so.
 class SignatureLabel : public QLabel {
     Q_OBJECT
 public:
@@ -32,6 +34,9 @@ public:
     // A signature is being computed, or waits for the project to settle.
     bool isComputing() const;
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     struct Result;
     void start();
@@ -41,7 +46,8 @@ private:
     int m_station = kProject;
     QTimer m_settle;
     std::unique_ptr<QFutureWatcher<Result>> m_watcher;
-    bool m_again = false; // the project changed while computing
+    bool m_again = false;       // the project changed while computing
+    bool m_waitsToShow = false; // the project changed while hidden
 };
 
 } // namespace rs::ui

@@ -24,6 +24,15 @@
 
 namespace rs::ui {
 
+namespace {
+
+// How a cell is edited while not simulating.
+constexpr QAbstractItemView::EditTriggers kEditTriggers = QAbstractItemView::DoubleClicked |
+                                                          QAbstractItemView::EditKeyPressed |
+                                                          QAbstractItemView::AnyKeyPressed;
+
+} // namespace
+
 VariablesPage::VariablesPage(QWidget* parent)
     : QWidget(parent), m_title(new PageTitle(this)), m_tabs(new QTabBar(this)),
       m_filter(new QLineEdit(this)), m_table(new QTableView(this)), m_message(new QLabel(this)),
@@ -52,8 +61,7 @@ VariablesPage::VariablesPage(QWidget* parent)
     m_table->setItemDelegateForColumn(VariableTableModel::NameColumn, delegate);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                             QAbstractItemView::AnyKeyPressed);
+    m_table->setEditTriggers(kEditTriggers);
     m_table->setAlternatingRowColors(true);
     m_table->setContextMenuPolicy(Qt::CustomContextMenu);
     m_table->verticalHeader()->hide();
@@ -177,10 +185,7 @@ void VariablesPage::setSimulation(const sim::Simulation* simulation) {
     m_model->setSimulation(simulation);
     // While simulating, a double click or a key acts on the simulation, not
     // on the project (an edit would end the simulation).
-    m_table->setEditTriggers(simulation ? QAbstractItemView::NoEditTriggers
-                                        : QAbstractItemView::DoubleClicked |
-                                              QAbstractItemView::EditKeyPressed |
-                                              QAbstractItemView::AnyKeyPressed);
+    m_table->setEditTriggers(simulation ? QAbstractItemView::NoEditTriggers : kEditTriggers);
     // Room for a value and its force mark while simulating; the icon needs less.
     m_table->horizontalHeader()->resizeSection(VariableTableModel::StatusColumn,
                                                simulation ? 80 : 56);
