@@ -181,7 +181,8 @@ std::optional<LadderPage::DropPlace> LadderPage::dropPlaceAt(const QPointF& scen
     NetworkItem* item = networkItem(target.step, target.network);
     const QPointF local = item->mapFromScene(scenePosition);
     const int index = item->elementAt(local);
-    QRectF element = index >= 0 ? item->elementRect(item->layout().elements[index]) : QRectF();
+    const QRectF element =
+        index >= 0 ? item->elementRect(item->layout().elements[index]) : QRectF();
     const ladder::Side side =
         index >= 0 && local.x() < element.center().x() ? ladder::Side::Before : ladder::Side::After;
     const qreal x = side == ladder::Side::Before ? element.left() : element.right();

@@ -8,8 +8,7 @@
 namespace rs::ui {
 
 void LadderTool::dropped(const QPointF& at, const QByteArray& payload, bool move) {
-    if (edits())
-        m_page.dropElement(at, payload, move);
+    m_page.dropElement(at, payload, move); // refused where the page does not edit
 }
 
 } // namespace rs::ui
