@@ -422,6 +422,14 @@
         <source>Option off</source>
         <translation>Option aus</translation>
     </message>
+    <message>
+        <source>Added since validation on %1</source>
+        <translation>Hinzugefügt seit der Validierung am %1</translation>
+    </message>
+    <message>
+        <source>Changed since validation on %1</source>
+        <translation>Geändert seit der Validierung am %1</translation>
+    </message>
 </context>
 <context>
     <name>UnitCaption</name>
@@ -2082,6 +2090,33 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>not yet (Project &gt; Mark as Validated)</source>
         <translation>noch nicht (Projekt &gt; Als validiert markieren)</translation>
+    </message>
+    <message>
+        <source>Since then:</source>
+        <translation>Seitdem:</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>wird berechnet …</translation>
+    </message>
+    <message>
+        <source>unknown while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>unbekannt, solange das Projekt Fehler hat (Erstellen &gt; Kompilieren zeigt sie)</translation>
+    </message>
+    <message>
+        <source>no change in behaviour since validation on %1</source>
+        <translation>kein geändertes Verhalten seit der Validierung am %1</translation>
+    </message>
+    <message>
+        <source>changed since validation on %1 in %2</source>
+        <translation>geändert seit der Validierung am %1 in %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) added, changed or removed</source>
+        <translation>
+            <numerusform>%n Netzwerk hinzugefügt, geändert oder entfernt</numerusform>
+            <numerusform>%n Netzwerke hinzugefügt, geändert oder entfernt</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -422,6 +422,14 @@
         <source>Option off</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Added since validation on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changed since validation on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>RemanentDialog</name>
@@ -2112,6 +2120,33 @@ Its text page (F6) shows and edits it.</source>
     <message>
         <source>not yet (Project &gt; Mark as Validated)</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Since then:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown while the project has errors (Build &gt; Compile shows them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no change in behaviour since validation on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed since validation on %1 in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) added, changed or removed</source>
+        <translation>
+            <numerusform>%n network added, changed or removed</numerusform>
+            <numerusform>%n networks added, changed or removed</numerusform>
+        </translation>
     </message>
 </context>
 <context>

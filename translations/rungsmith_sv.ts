@@ -422,6 +422,14 @@
         <source>Option off</source>
         <translation>Alternativ från</translation>
     </message>
+    <message>
+        <source>Added since validation on %1</source>
+        <translation>Tillagt sedan valideringen %1</translation>
+    </message>
+    <message>
+        <source>Changed since validation on %1</source>
+        <translation>Ändrat sedan valideringen %1</translation>
+    </message>
 </context>
 <context>
     <name>UnitCaption</name>
@@ -2082,6 +2090,33 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>not yet (Project &gt; Mark as Validated)</source>
         <translation>inte ännu (Projekt &gt; Markera som validerat)</translation>
+    </message>
+    <message>
+        <source>Since then:</source>
+        <translation>Sedan dess:</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>beräknas …</translation>
+    </message>
+    <message>
+        <source>unknown while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>okänt så länge projektet har fel (Bygg &gt; Kompilera visar dem)</translation>
+    </message>
+    <message>
+        <source>no change in behaviour since validation on %1</source>
+        <translation>inget ändrat beteende sedan valideringen %1</translation>
+    </message>
+    <message>
+        <source>changed since validation on %1 in %2</source>
+        <translation>ändrat sedan valideringen %1 i %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n network(s) added, changed or removed</source>
+        <translation>
+            <numerusform>%n nätverk tillagt, ändrat eller borttaget</numerusform>
+            <numerusform>%n nätverk tillagda, ändrade eller borttagna</numerusform>
+        </translation>
     </message>
 </context>
 <context>

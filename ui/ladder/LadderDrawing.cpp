@@ -36,6 +36,9 @@ LadderDrawing drawingFor(const QPalette& palette, const LadderColours& chosen, b
     drawing.problem = dark ? QColor(255, 90, 90) : QColor(210, 0, 0);
     drawing.editing = dark ? QColor(255, 170, 60) : QColor(220, 120, 0);
     drawing.explained = dark ? QColor(255, 120, 220) : QColor(190, 0, 140);
+    // Neither green nor red: those say power and problems.
+    drawing.changedSinceValidation = dark ? QColor(255, 190, 60) : QColor(215, 140, 0);
+    drawing.addedSinceValidation = dark ? QColor(100, 170, 255) : QColor(30, 110, 220);
     return drawing;
 }
 

@@ -21,11 +21,13 @@ namespace rs::ui {
 // page's colours, the simulator's state, the selection and the problems.
 struct LadderDrawing {
     render::LadderStyle style;
-    QColor selection;     // the frame around what is selected
-    QColor markedNetwork; // behind the title of a network chosen for Cut or Copy
-    QColor problem;       // the frame around an element a diagnostic concerns
-    QColor editing;       // the frame of the network in edit mode
-    QColor explained;     // the frames of why an output is on or off
+    QColor selection;              // the frame around what is selected
+    QColor markedNetwork;          // behind the title of a network chosen for Cut or Copy
+    QColor problem;                // the frame around an element a diagnostic concerns
+    QColor editing;                // the frame of the network in edit mode
+    QColor explained;              // the frames of why an output is on or off
+    QColor changedSinceValidation; // the bar left of a network that differs from the baseline
+    QColor addedSinceValidation;   // the same for a network the baseline did not have
     const LadderLiveState* live = nullptr;
     LadderCursor cursor;
     std::set<std::pair<int, int>> marked; // (step, network) chosen for Cut, Copy, Delete
@@ -36,6 +38,10 @@ struct LadderDrawing {
     std::set<std::pair<std::uint32_t, std::uint16_t>> holding;
     // Diagnostics by (statement in unit, element), element 0 for the statement as a whole.
     std::map<std::pair<std::uint32_t, std::uint16_t>, QString> problems;
+    // The networks that differ from the validated baseline, by (step,
+    // network): true when added (docs/review.md), and when it was validated.
+    std::map<std::pair<int, int>, bool> sinceValidation;
+    QString validatedOn;
 };
 
 // The user's ladder colours (the preferences, manual Part 1, 14). Each one

@@ -12,6 +12,7 @@
 #include "StepHeaderItem.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
+#include "output/SettledCompile.h"
 #include "shell/PageTitle.h"
 #include "shell/UnitCaption.h"
 
@@ -195,6 +196,14 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
             connect(document, &ProjectDocument::changed, this, &LadderPage::followModel);
             connect(document, &ProjectDocument::pathChanged, this, &LadderPage::updateTitle);
         }
+        if (m_compile)
+            disconnect(m_compile, nullptr, this, nullptr);
+        m_compile = document ? SettledCompile::of(document) : nullptr;
+        if (m_compile) {
+            m_compile->addViewer(this);
+            connect(m_compile, &SettledCompile::computed, this,
+                    &LadderPage::showChangesSinceValidation);
+        }
     }
     const bool samePage = document == m_document && station == m_station && sequence == m_sequence;
     m_document = document;
@@ -217,6 +226,7 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
     rebuild();
     updateTitle();
     if (!samePage) {
+        showChangesSinceValidation();
         if (stepCount() > 0 && networkCount(0) > 0)
             setCursor({0, 0, std::nullopt, std::nullopt, -1});
         // A page opens at its top left, whatever the view's size is yet.

@@ -49,6 +49,7 @@ class NetworkEditTool;
 class NetworkItem;
 class PageTitle;
 class ProjectDocument;
+class SettledCompile;
 class StepHeaderItem;
 struct EditSession;
 
@@ -112,6 +113,11 @@ public:
     void setDiagnostics(const lang::Diagnostics& diagnostics);
     const std::map<std::pair<std::uint32_t, std::uint16_t>, QString>& problems() const {
         return m_drawing.problems;
+    }
+    // The networks that differ from the validated baseline, by (step,
+    // network), true when added; a bar left of each shows it.
+    const std::map<std::pair<int, int>, bool>& changedSinceValidation() const {
+        return m_drawing.sinceValidation;
     }
 
     LadderView* view() const { return m_view; }
@@ -207,6 +213,8 @@ private:
     // The insert buttons show the symbols in the theme's colours.
     void drawElementIcons();
     void followModel();
+    // Marks the networks the document's SettledCompile found changed since validation.
+    void showChangesSinceValidation();
     void rebuild();
     void placeItems();
     void updateTitle();
@@ -286,6 +294,7 @@ private:
     QGraphicsSimpleTextItem* m_emptyHint = nullptr;
     QGraphicsRectItem* m_dropPlace = nullptr; // where a dragged element would go
     QPointer<ProjectDocument> m_document;
+    QPointer<SettledCompile> m_compile;
     int m_station = 0;
     int m_sequence = 0;
     LadderDrawing m_drawing;

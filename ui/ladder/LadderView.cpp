@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "LadderView.h"
 
+#include "NetworkItem.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QContextMenuEvent>
+#include <QHelpEvent>
 #include <QMimeData>
 #include <QPainter>
 #include <QScrollBar>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -54,6 +58,25 @@ bool LadderView::event(QEvent* event) {
         }
     }
     return handled;
+}
+
+bool LadderView::viewportEvent(QEvent* event) {
+    // The bar of a network changed since validation says so; items keep no
+    // tool tips, which would show over every element.
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        const QPointF at = mapToScene(help->pos());
+        for (QGraphicsItem* item : items(help->pos()))
+            if (const auto* network = dynamic_cast<const NetworkItem*>(item)) {
+                const QString note = network->validationNote(network->mapFromScene(at));
+                if (!note.isEmpty()) {
+                    QToolTip::showText(help->globalPos(), note, viewport());
+                    return true;
+                }
+            }
+        QToolTip::hideText();
+    }
+    return QGraphicsView::viewportEvent(event);
 }
 
 void LadderView::focusInEvent(QFocusEvent* event) {

@@ -113,6 +113,7 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     const qreal detail = option->levelOfDetailFromTransform(painter->worldTransform());
     if (detail * bounds.height() < kBarBelowPixels) {
         paintBar(*painter); // on the view's background, which is the page's
+        paintValidationBar(*painter);
         return;
     }
     painter->fillRect(bounds, style.background);
@@ -120,6 +121,7 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     // draw a thousand networks in the time of a few.
     if (detail < kSketchBelow) {
         paintSketch(*painter);
+        paintValidationBar(*painter);
         return;
     }
     painter->save();
@@ -166,7 +168,29 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     // A line under each network separates it from the next.
     painter->setPen(QPen(style.commentInk, 0.5));
     painter->drawLine(bounds.bottomLeft(), bounds.bottomRight());
+    paintValidationBar(*painter);
     paintOverlay(*painter);
+}
+
+QRectF NetworkItem::validationBar() const {
+    return {1, 1, 4, boundingRect().height() - 2};
+}
+
+void NetworkItem::paintValidationBar(QPainter& painter) const {
+    const auto mark = m_drawing->sinceValidation.find({m_step, m_index});
+    if (mark == m_drawing->sinceValidation.end())
+        return;
+    painter.fillRect(validationBar(), mark->second ? m_drawing->addedSinceValidation
+                                                   : m_drawing->changedSinceValidation);
+}
+
+QString NetworkItem::validationNote(const QPointF& point) const {
+    const auto mark = m_drawing->sinceValidation.find({m_step, m_index});
+    if (mark == m_drawing->sinceValidation.end() ||
+        !validationBar().adjusted(-1, 0, 3, 0).contains(point))
+        return {};
+    return mark->second ? QObject::tr("Added since validation on %1").arg(m_drawing->validatedOn)
+                        : QObject::tr("Changed since validation on %1").arg(m_drawing->validatedOn);
 }
 
 void NetworkItem::paintBar(QPainter& painter) const {

@@ -46,11 +46,17 @@ public:
     QRectF elementRect(const ladder::ElementLayout& element) const;
     QRectF groupRect(const ladder::ElementPath& path) const;
 
+    // What the bar left of the network says at a point in item coordinates:
+    // that it changed since validation; empty elsewhere or when it did not.
+    QString validationNote(const QPointF& point) const;
+
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
     void paintOverlay(QPainter& painter) const;
+    void paintValidationBar(QPainter& painter) const;
+    QRectF validationBar() const;
     void paintSketch(QPainter& painter) const;
     // Zoomed out so far that the network is a few pixels high: one bar, green
     // when any of its outputs is driven.

@@ -5,6 +5,7 @@
 #include "blocks/ProjectInstances.h"
 #include "compiler/Signature.h"
 #include "document/ProjectDocument.h"
+#include "output/SettledCompile.h"
 #include "pages/SignatureLabel.h"
 #include "project/ProjectProperties.h"
 #include "project/UnitSettings.h"
@@ -27,6 +28,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <set>
 
 namespace rs::ui {
 
@@ -41,7 +43,8 @@ ProjectPage::ProjectPage(QWidget* parent)
       m_nameProblem(new QLabel(this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
       m_file(new QLabel(this)), m_units(new QLabel(this)), m_signature(new SignatureLabel(this)),
-      m_validated(new QLabel(this)), m_libraries(new QListWidget(this)),
+      m_validated(new QLabel(this)), m_sinceValidation(new QLabel(this)), m_form(new QFormLayout),
+      m_libraries(new QListWidget(this)),
       m_addStandard(new QPushButton(tr("Add &Standard Library"), this)),
       m_addUser(new QPushButton(tr("Add &User Library..."), this)),
       m_remove(new QPushButton(tr("&Remove Library"), this)) {
@@ -83,7 +86,7 @@ ProjectPage::ProjectPage(QWidget* parent)
     markAsError(m_nameProblem);
     m_nameProblem->hide();
 
-    auto* form = new QFormLayout;
+    QFormLayout* form = m_form;
     form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
     form->addRow(tr("Project &name:"), m_name);
     form->addRow(QString(), m_nameProblem);
@@ -95,6 +98,10 @@ ProjectPage::ProjectPage(QWidget* parent)
     form->addRow(tr("Program signature:"), m_signature);
     m_validated->setObjectName(QStringLiteral("validatedLabel"));
     form->addRow(tr("Validated:"), m_validated);
+    m_sinceValidation->setObjectName(QStringLiteral("sinceValidationLabel"));
+    m_sinceValidation->setWordWrap(true);
+    m_sinceValidation->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(tr("Since then:"), m_sinceValidation);
     auto* libraryButtons = new QHBoxLayout;
     libraryButtons->addWidget(m_addStandard);
     libraryButtons->addWidget(m_addUser);
@@ -139,8 +146,14 @@ void ProjectPage::showProject(ProjectDocument* document) {
     }
     m_document = document;
     m_signature->setSource(document, SignatureLabel::kProject);
+    if (m_compile)
+        disconnect(m_compile, nullptr, this, nullptr);
+    m_compile = document ? SettledCompile::of(document) : nullptr;
     if (!document)
         return;
+    m_compile->addViewer(m_sinceValidation);
+    connect(m_compile, &SettledCompile::outdated, this, &ProjectPage::refreshSinceValidation);
+    connect(m_compile, &SettledCompile::computed, this, &ProjectPage::refreshSinceValidation);
     connect(document, &ProjectDocument::changed, this, &ProjectPage::refresh);
     connect(document, &ProjectDocument::pathChanged, this, &ProjectPage::refresh);
     refresh();
@@ -176,8 +189,48 @@ void ProjectPage::refresh() {
     } else {
         m_validated->setText(tr("not yet (Project > Mark as Validated)"));
     }
+    refreshSinceValidation();
     refreshLibraries();
     m_refreshing = false;
+}
+
+void ProjectPage::refreshSinceValidation() {
+    const project::Project& p = m_document->project();
+    m_form->setRowVisible(m_sinceValidation, p.baseline.has_value());
+    m_sinceValidation->setPalette(QPalette()); // as the page's, until a change is marked
+    if (!p.baseline)
+        return;
+    const QString date = QString::fromStdString(p.baseline->date);
+    const SettledCompile::Outcome* outcome = m_compile->outcome();
+    if (!outcome) {
+        m_sinceValidation->setText(tr("computing..."));
+        return;
+    }
+    if (!outcome->ok || !outcome->sinceValidation) {
+        m_sinceValidation->setText(
+            tr("unknown while the project has errors (Build > Compile shows them)"));
+        return;
+    }
+    const review::ProjectDiff& diff = *outcome->sinceValidation;
+    std::set<int> stations(diff.changedStations.begin(), diff.changedStations.end());
+    for (const review::UnitDifference& unit : diff.units)
+        stations.insert(unit.station);
+    for (const review::NetworkDifference& network : diff.networks)
+        stations.insert(network.station);
+    if (stations.empty()) {
+        m_sinceValidation->setText(tr("no change in behaviour since validation on %1").arg(date));
+        return;
+    }
+    QStringList units;
+    for (const int station : stations)
+        units << unitCaption(p, station);
+    QString said =
+        tr("changed since validation on %1 in %2").arg(date, units.join(QStringLiteral(", ")));
+    if (!diff.networks.empty())
+        said += QStringLiteral("; ") + tr("%n network(s) added, changed or removed", nullptr,
+                                          static_cast<int>(diff.networks.size()));
+    m_sinceValidation->setText(said);
+    markAsError(m_sinceValidation);
 }
 
 void ProjectPage::refreshLibraries() {

@@ -6,6 +6,7 @@
 #include <QWidget>
 
 class QCheckBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -18,6 +19,7 @@ class SignatureLabel;
 
 class PageTitle;
 class ProjectDocument;
+class SettledCompile;
 
 // The page of a project (manual Part 1, 3.2, 3.3, 12): its name, description,
 // the include-source option and the function libraries it uses, edited in
@@ -34,6 +36,8 @@ private:
     void applyName();
     void applyDescription();
     void refreshLibraries();
+    // What changed since validation, as the document's SettledCompile found it.
+    void refreshSinceValidation();
     void addLibrary(const QString& entry);
     void addUserLibrary();
     void removeLibrary();
@@ -47,12 +51,15 @@ private:
     QLabel* m_units;
     SignatureLabel* m_signature;
     QLabel* m_validated;
+    QLabel* m_sinceValidation;
+    QFormLayout* m_form;
     QListWidget* m_libraries;
     QPushButton* m_addStandard;
     QPushButton* m_addUser;
     QPushButton* m_remove;
     QTimer m_descriptionTimer;
     QPointer<ProjectDocument> m_document;
+    QPointer<SettledCompile> m_compile;
     bool m_refreshing = false;
 };
 
