@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReviewVerbs.h"
 
-#include "ProjectLadder.h"
-#include "ReviewPdf.h"
+#include "ReviewPages.h"
 #include "Verbs.h"
 #include "compiler/ImageCodec.h"
 #include "compiler/Signature.h"
@@ -11,11 +10,9 @@
 #include "review/Validation.h"
 
 #include <QDate>
-#include <QFileInfo>
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 
 namespace rs::cli {
 
@@ -60,49 +57,6 @@ int imageSignature(const QString& path) {
     // stored covers them too.
     printSignatures(units, images.front().projectSignature);
     return Ok;
-}
-
-// The review of `diff` as pages to print and sign: the projects, their
-// signatures, the date, every line of the diff, then each network old beside
-// new.
-render::Review reviewPages(const QString& oldPath, const LoadedProject& before,
-                           const compiler::CompileResult& oldCompiled, const QString& newPath,
-                           const LoadedProject& after, const compiler::CompileResult& newCompiled,
-                           const review::ProjectDiff& diff) {
-    render::Review review;
-    review.title = QStringLiteral("Review of %1").arg(QFileInfo(newPath).fileName());
-    const auto signature = [](std::uint32_t value) {
-        return QString::fromStdString(compiler::signatureText(value));
-    };
-    review.summary << QStringLiteral("Old: %1, project signature %2")
-                          .arg(oldPath, signature(oldCompiled.projectSignature))
-                   << QStringLiteral("New: %1, project signature %2")
-                          .arg(newPath, signature(newCompiled.projectSignature));
-    std::map<int, std::pair<QString, QString>> units;
-    for (const auto& unit : oldCompiled.signatures)
-        units[unit.station].first = signature(unit.value);
-    for (const auto& unit : newCompiled.signatures)
-        units[unit.station].second = signature(unit.value);
-    for (const auto& [station, figures] : units)
-        review.summary << QStringLiteral("Pluto %1: %2 → %3")
-                              .arg(station, 2, 10, QLatin1Char('0'))
-                              .arg(figures.first.isEmpty() ? QStringLiteral("none") : figures.first,
-                                   figures.second.isEmpty() ? QStringLiteral("none")
-                                                            : figures.second);
-    review.summary << QStringLiteral("Compared on %1 by rungsmith-cli")
-                          .arg(QDate::currentDate().toString(Qt::ISODate));
-    for (const std::string& line : diff.lines())
-        review.changes << QString::fromStdString(line);
-    const ProjectLadder oldLadder(before);
-    const ProjectLadder newLadder(after);
-    for (const auto& network : diff.networks)
-        review.networks.push_back(
-            {QString::fromStdString(network.describe()),
-             network.oldNumber ? oldLadder.layout(network.step, network.oldNumber) : std::nullopt,
-             network.change == review::Pairing::Removed
-                 ? std::nullopt
-                 : newLadder.layout(network.step, network.number)});
-    return review;
 }
 
 } // namespace
@@ -158,7 +112,9 @@ int runDiff(const Invocation& invocation) {
         std::printf("%s\n", line.c_str());
     if (const QString pdf = invocation.options.value(QStringLiteral("pdf")); !pdf.isEmpty()) {
         const QString error = render::writeReviewPdf(
-            pdf, reviewPages(oldPath, before, oldCompiled, newPath, after, newCompiled, diff));
+            pdf, render::reviewPages({oldPath, before.project, before.places, oldCompiled},
+                                     {newPath, after.project, after.places, newCompiled}, diff,
+                                     QStringLiteral("rungsmith-cli")));
         if (!error.isEmpty()) {
             std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
             return UsageOrIo;
