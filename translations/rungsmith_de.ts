@@ -1564,6 +1564,30 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>%1 is marked as validated.</source>
         <translation>%1 ist als validiert markiert.</translation>
     </message>
+    <message>
+        <source>Compare &amp;With...</source>
+        <translation>Ver&amp;gleichen mit …</translation>
+    </message>
+    <message>
+        <source>What differs between another version of the project and this one, network by network</source>
+        <translation>Was eine andere Version des Projekts von dieser unterscheidet, Netzwerk für Netzwerk</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Vergleichen mit</translation>
+    </message>
+    <message>
+        <source>Rungsmith projects (*.sps)</source>
+        <translation>Rungsmith-Projekte (*.sps)</translation>
+    </message>
+    <message>
+        <source>Compare With Va&amp;lidated</source>
+        <translation>Mit va&amp;lidierter Version vergleichen</translation>
+    </message>
+    <message>
+        <source>What changed since the project was marked as validated</source>
+        <translation>Was sich geändert hat, seit das Projekt als validiert markiert wurde</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3401,6 +3425,131 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
             <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt ihn.</numerusform>
             <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt sie.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet ihn auf.</numerusform>
+            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet sie auf.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation>Das Projekt</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation>Einheit hinzugefügt</translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation>Einheit entfernt</translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation>Typ geändert</translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation>ID-Code geändert</translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation>E/A-Optionen geändert</translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation>exportierte und remanente Variablen geändert</translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation>Namen und Beschreibungen geändert</translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation>Kommentare geändert</translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation>Prüfbericht als &amp;PDF speichern …</translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation>Änderungen seit der Validierung</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Vergleichen mit</translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation>%1 im jetzigen Stand, verglichen mit der am %2 von %3 validierten Version</translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation>%1 im jetzigen Stand (neu), verglichen mit %2 (alt)</translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation>Eingabetaste oder Doppelklick öffnet ein Netzwerk im Kontaktplan</translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation>Wird verglichen …</translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation>Pluto %1: %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation>Pluto %1 %2 Netzwerk %3: hinzugefügt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation>Pluto %1 %2 Netzwerk %3: entfernt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation>Pluto %1 %2 Netzwerk %3: geändert</translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation>Kein Netzwerk, keine Einheit und keine Option unterscheidet sich.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation>Kein geändertes Verhalten; nur der Text hat sich geändert.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation>Kein geändertes Verhalten.</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation>Verhalten geändert in %1 (Projektsignatur %2, war %3).</translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation>Es gibt noch nichts zu speichern.</translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation>Prüfbericht als PDF speichern</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
     </message>
 </context>
 </TS>

@@ -1594,6 +1594,30 @@ Its text page (F6) shows and edits it.</source>
         <source>%1 is marked as validated.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Compare &amp;With...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What differs between another version of the project and this one, network by network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rungsmith projects (*.sps)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare With Va&amp;lidated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What changed since the project was marked as validated</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3400,6 +3424,131 @@ Its text page (F6) shows and edits it.</source>
             <numerusform>The project has %n error and cannot be validated. Build &gt; Compile (F7) lists it.</numerusform>
             <numerusform>The project has %n errors and cannot be validated. Build &gt; Compile (F7) lists them.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 has %n error, so its behaviour cannot be compared. Build &gt; Compile lists it.</numerusform>
+            <numerusform>%1 has %n errors, so its behaviour cannot be compared. Build &gt; Compile lists them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

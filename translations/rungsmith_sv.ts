@@ -1564,6 +1564,30 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>%1 is marked as validated.</source>
         <translation>%1 är markerat som validerat.</translation>
     </message>
+    <message>
+        <source>Compare &amp;With...</source>
+        <translation>&amp;Jämför med …</translation>
+    </message>
+    <message>
+        <source>What differs between another version of the project and this one, network by network</source>
+        <translation>Vad som skiljer en annan version av projektet från den här, nätverk för nätverk</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Jämför med</translation>
+    </message>
+    <message>
+        <source>Rungsmith projects (*.sps)</source>
+        <translation>Rungsmith-projekt (*.sps)</translation>
+    </message>
+    <message>
+        <source>Compare With Va&amp;lidated</source>
+        <translation>Jämför med va&amp;liderat</translation>
+    </message>
+    <message>
+        <source>What changed since the project was marked as validated</source>
+        <translation>Vad som har ändrats sedan projektet markerades som validerat</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3401,6 +3425,131 @@ Dess textsida (F6) visar och redigerar den.</translation>
             <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar det.</numerusform>
             <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar dem.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar det.</numerusform>
+            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar dem.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation>Projektet</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation>enhet tillagd</translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation>enhet borttagen</translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation>typ ändrad</translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation>ID-kod ändrad</translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation>I/O-alternativ ändrade</translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation>exporterade och remanenta variabler ändrade</translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation>namn och beskrivningar ändrade</translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation>kommentarer ändrade</translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation>Spara granskning som &amp;PDF …</translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation>Ändringar sedan valideringen</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Jämför med</translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation>%1 som det är nu, mot versionen som validerades %2 av %3</translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation>%1 som det är nu (nytt), mot %2 (gammalt)</translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation>Enter eller ett dubbelklick öppnar ett nätverk i stegdiagrammet</translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation>Jämför …</translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation>Pluto %1: %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation>Pluto %1 %2 nätverk %3: tillagt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation>Pluto %1 %2 nätverk %3: borttaget</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation>Pluto %1 %2 nätverk %3: ändrat</translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation>Inget nätverk, ingen enhet och inget alternativ skiljer sig.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation>Inget ändrat beteende; bara texten har ändrats.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation>Inget ändrat beteende.</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation>Beteendet har ändrats i %1 (projektsignatur %2, var %3).</translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation>Det finns inget att spara än.</translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation>Spara granskning som PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-filer (*.pdf)</translation>
     </message>
 </context>
 </TS>

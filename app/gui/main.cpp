@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "RungsmithBuildVersion.h"
+#include "document/ProjectDocument.h"
 #include "lang/Diagnostic.h"
+#include "output/SettledCompile.h"
 #include "project/SaveFileCommit.h"
 #include "shell/MainWindow.h"
 #include "shell/PageRef.h"
@@ -11,6 +13,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDeadlineTimer>
 #include <QIcon>
 #include <QImageWriter>
 #include <QRegularExpression>
@@ -106,6 +109,19 @@ void settle() {
         QCoreApplication::sendPostedEvents();
         QCoreApplication::processEvents();
     }
+}
+
+// What pages compute in the background after a change (signatures, changes
+// since validation) is part of the picture; a bounded wait keeps a stuck
+// computation from hanging the command.
+void awaitSettledCompile(rs::ui::MainWindow& window) {
+    rs::ui::ProjectDocument* document = window.currentDocument();
+    if (!document)
+        return;
+    const rs::ui::SettledCompile* compile = rs::ui::SettledCompile::of(document);
+    const QDeadlineTimer deadline(30'000);
+    while (compile->isComputing() && !deadline.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
 }
 
 } // namespace
@@ -209,6 +225,7 @@ int main(int argc, char* argv[]) {
             if (reportSyntaxErrors(result))
                 return 1;
         }
+        awaitSettledCompile(window);
         settle();
         if (const QString error =
                 writePicture(window.grab().toImage(), parser.value(screenshotOption));

@@ -397,6 +397,15 @@ bool LadderPage::selectElement(std::uint32_t statement, std::uint16_t element) {
     return false;
 }
 
+bool LadderPage::selectNetwork(const lang::StepAddress& step, int number) {
+    for (int s = 0; s < stepCount(); ++s)
+        if (m_steps[s].address == step && number >= 1 && number <= networkCount(s)) {
+            setCursor({s, number - 1, std::nullopt, std::nullopt, -1});
+            return true;
+        }
+    return false;
+}
+
 void LadderPage::ensureCursorVisible() {
     const LadderCursor& cursor = m_drawing.cursor;
     NetworkItem* item = networkItem(cursor.step, cursor.network);

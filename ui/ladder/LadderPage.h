@@ -129,6 +129,8 @@ public:
     void setCursor(const LadderCursor& cursor);
     // Selects the element or output drawn with this number (statement, element).
     bool selectElement(std::uint32_t statement, std::uint16_t element);
+    // Selects a whole network of a step of the page, numbered from 1.
+    bool selectNetwork(const lang::StepAddress& step, int number);
     // Why the last edit was refused, or what the page has to say.
     QString message() const;
     Placement placement() const { return m_placement; }

@@ -99,7 +99,6 @@ ProjectPage::ProjectPage(QWidget* parent)
     m_validated->setObjectName(QStringLiteral("validatedLabel"));
     form->addRow(tr("Validated:"), m_validated);
     m_sinceValidation->setObjectName(QStringLiteral("sinceValidationLabel"));
-    m_sinceValidation->setWordWrap(true);
     m_sinceValidation->setTextInteractionFlags(Qt::TextSelectableByMouse);
     form->addRow(tr("Since then:"), m_sinceValidation);
     auto* libraryButtons = new QHBoxLayout;

@@ -15,6 +15,7 @@
 #include "project/Sequences.h"
 #include "project/TextPlace.h"
 #include "project/UnitSettings.h"
+#include "review/CompareDialog.h"
 #include "shell/NamedIcon.h"
 #include "shell/PreferencesDialog.h"
 #include "shell/ProjectTree.h"
@@ -30,6 +31,8 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -244,6 +247,28 @@ void MainWindow::createActions() {
         }
     });
 
+    m_compareAction = action(tr("Compare &With..."), "compareAction");
+    m_compareAction->setStatusTip(
+        tr("What differs between another version of the project and this one, network by network"));
+    connect(m_compareAction, &QAction::triggered, this, [this] {
+        ProjectDocument* document = currentDocument();
+        if (!document || document->isDamaged())
+            return;
+        const QString old = QFileDialog::getOpenFileName(this, tr("Compare With"),
+                                                         QFileInfo(document->path()).absolutePath(),
+                                                         tr("Rungsmith projects (*.sps)"));
+        if (!old.isEmpty())
+            openComparison(document, old);
+    });
+    m_compareValidatedAction = action(tr("Compare With Va&lidated"), "compareValidatedAction");
+    m_compareValidatedAction->setStatusTip(
+        tr("What changed since the project was marked as validated"));
+    connect(m_compareValidatedAction, &QAction::triggered, this, [this] {
+        if (ProjectDocument* document = currentDocument();
+            document && !document->isDamaged() && document->project().baseline)
+            openComparison(document, QString());
+    });
+
     m_preferencesAction =
         action(tr("Pr&eferences..."), "preferencesAction", QKeySequence::Preferences);
     m_preferencesAction->setIcon(namedIcon("preferences"));
@@ -319,6 +344,8 @@ void MainWindow::createMenus() {
     projectMenu->addAction(unitActions.exportCsv);
     projectMenu->addSeparator();
     projectMenu->addAction(m_markValidatedAction);
+    projectMenu->addAction(m_compareValidatedAction);
+    projectMenu->addAction(m_compareAction);
 
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     build->setObjectName(QStringLiteral("buildMenu"));
@@ -421,6 +448,7 @@ void MainWindow::documentAdded(ProjectDocument* document) {
     connect(document, &ProjectDocument::changed, this, [this] {
         rebuildTree();
         updateTitle();
+        updateActions(); // a baseline marked or undone
     });
     connect(document, &ProjectDocument::modificationChanged, this, &MainWindow::updateTitle);
     connect(document, &ProjectDocument::pathChanged, this, &MainWindow::updateTitle);
@@ -584,6 +612,9 @@ void MainWindow::updateActions() {
     m_compileAction->setEnabled(document != nullptr && !isCompiling());
     m_formatAction->setEnabled(onText);
     m_markValidatedAction->setEnabled(document != nullptr && !document->isDamaged());
+    m_compareAction->setEnabled(document != nullptr && !document->isDamaged());
+    m_compareValidatedAction->setEnabled(document != nullptr && !document->isDamaged() &&
+                                         document->project().baseline.has_value());
     m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
                                  m_current.kind == PageRef::Kind::Ladder);
     if (onText && m_textPage->station() == TextPage::kWholeProject) {
@@ -599,6 +630,19 @@ void MainWindow::updateActions() {
                                                 : tr("&Undo"));
     m_redoAction->setText(m_undoGroup.canRedo() ? tr("&Redo %1").arg(m_undoGroup.redoText())
                                                 : tr("&Redo"));
+}
+
+void MainWindow::openComparison(ProjectDocument* document, const QString& oldPath) {
+    // Modeless: the reviewer walks through the networks it lists.
+    auto* dialog = new CompareDialog(document, oldPath, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(document, &QObject::destroyed, dialog, &QWidget::close);
+    connect(dialog, &CompareDialog::networkChosen, this,
+            [this, document](int station, int sequence, int step, int number) {
+                if (showPage({PageRef::Kind::Ladder, document, station, sequence}))
+                    m_ladderPage->selectNetwork({station, sequence, step}, number);
+            });
+    dialog->show();
 }
 
 // ----- edits

@@ -83,6 +83,9 @@ public:
     // Shows any page; false when the user keeps editing a text with errors.
     bool showPage(const PageRef& page);
     PageRef currentPage() const { return m_current; }
+    // What Project > Compare With... opens once `oldPath` is chosen, and
+    // Compare With Validated with `oldPath` empty: a comparison's dialog.
+    void openComparison(ProjectDocument* document, const QString& oldPath);
 
     ProjectDocument* currentDocument() const;
     const std::vector<ProjectDocument*>& documents() const { return m_projects->documents(); }
@@ -177,6 +180,8 @@ private:
     QAction* m_selectAllAction = nullptr;
     QAction* m_formatAction = nullptr;
     QAction* m_markValidatedAction = nullptr;
+    QAction* m_compareAction = nullptr;
+    QAction* m_compareValidatedAction = nullptr;
     QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
     QAction* m_compileAction = nullptr;
