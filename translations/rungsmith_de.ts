@@ -1588,6 +1588,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>What changed since the project was marked as validated</source>
         <translation>Was sich geändert hat, seit das Projekt als validiert markiert wurde</translation>
     </message>
+    <message>
+        <source>Merge Project (&amp;ignore conflicts)...</source>
+        <translation>Projekt zusammenführen (Konflikte &amp;ignorieren) …</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Project...</source>
+        <translation>Projekt &amp;zusammenführen …</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3550,6 +3558,33 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>PDF files (*.pdf)</source>
         <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation>Projekt zusammenführen</translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation>Öffnen Sie zuerst das Projekt, das zusammengeführt werden soll (Datei &gt; Öffnen); seine Einheiten werden dann zu %1 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation>Die Einheiten dieses Projekts zu %1 hinzufügen:</translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation>%1 kann nicht mit %2 zusammengeführt werden: Jede Einheit muss ihre Station behalten, und jeder symbolische Name darf nur in einem der Projekte vorkommen.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation>%1 ist mit %2 zusammengeführt. Jeder Name, den beide verwendeten, bleibt nur in den Einheiten, die ihn definieren; anderswo wird seine Variable mit ihrer Adresse geschrieben.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
+        <translation>%1 ist mit %2 zusammengeführt.</translation>
     </message>
 </context>
 </TS>

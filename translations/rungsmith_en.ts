@@ -1618,6 +1618,14 @@ Its text page (F6) shows and edits it.</source>
         <source>What changed since the project was marked as validated</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Merge Project (&amp;ignore conflicts)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Merge Project...</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3548,6 +3556,33 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>PDF files (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

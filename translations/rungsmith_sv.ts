@@ -1588,6 +1588,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>What changed since the project was marked as validated</source>
         <translation>Vad som har ändrats sedan projektet markerades som validerat</translation>
     </message>
+    <message>
+        <source>Merge Project (&amp;ignore conflicts)...</source>
+        <translation>Sammanfoga projekt (&amp;ignorera konflikter) …</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Project...</source>
+        <translation>Sa&amp;mmanfoga projekt …</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -3550,6 +3558,33 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>PDF files (*.pdf)</source>
         <translation>PDF-filer (*.pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation>Sammanfoga projekt</translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation>Öppna först projektet som ska sammanfogas (Arkiv &gt; Öppna); dess enheter läggs sedan till i %1.</translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation>Lägg till enheterna i det här projektet i %1:</translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation>%1 kan inte sammanfogas med %2: varje enhet måste behålla sin station och varje symboliskt namn får bara finnas i ett av projekten.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation>%1 är sammanfogat med %2. Varje namn som båda använde finns kvar bara i de enheter som definierar det; på andra ställen skrivs variabeln med sin adress.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
+        <translation>%1 är sammanfogat med %2.</translation>
     </message>
 </context>
 </TS>

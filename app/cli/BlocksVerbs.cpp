@@ -18,11 +18,6 @@ namespace rs::cli {
 
 namespace {
 
-int usage(const QString& message) {
-    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
-    return UsageOrIo;
-}
-
 struct Libraries {
     blocks::LibrarySet set;
     std::vector<const blocks::LoadedLibrary*> selected; // what the verb looks at

@@ -4,12 +4,11 @@
 #include "LivePower.h"
 #include "NetworkPicture.h"
 #include "Verbs.h"
-#include "blocks/InstanceStanding.h"
 #include "compiler/Compiler.h"
 #include "ladder/LadderToText.h"
 #include "ladder/Layout.h"
+#include "ladder/ProjectLadder.h"
 #include "ladder/TextToLadder.h"
-#include "ladder/UnitLadder.h"
 #include "project/ProjectFile.h"
 #include "sim/ScenarioRunner.h"
 
@@ -24,11 +23,6 @@
 namespace rs::cli {
 
 namespace {
-
-int usage(const QString& message) {
-    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
-    return UsageOrIo;
-}
 
 int failure(const QString& path, const QString& message) {
     std::fprintf(stderr, "rungsmith-cli: %s: %s\n", qPrintable(path), qPrintable(message));
@@ -130,48 +124,21 @@ int runLadder(const Invocation& invocation) {
     LoadedProject loaded;
     if (const int status = read(path, invocation, loaded); status != Ok)
         return status;
-    const lang::Document& document = loaded.project.program;
-    const auto program =
-        std::find_if(document.units.begin(), document.units.end(),
-                     [&](const lang::UnitProgram& p) { return p.station() == *unit; });
-    if (program == document.units.end())
-        return failure(path, QStringLiteral("unit %1 has no code").arg(*unit));
     const lang::StepAddress wanted{*unit, *sequence, *stepNumber};
     // Instances are boxes as the IDE draws them: while they are what their block makes.
-    const blocks::LibrarySet libraries =
-        blocks::librariesFor(loaded.places, loaded.project.libraries);
-    const std::vector<blocks::InstanceStatus> statuses =
-        blocks::instanceStatuses(document, *unit, libraries);
-    const auto pages = ladder::unitLadder(
-        *program, [&](const lang::Step& step, const blocks::BlockInstance& instance) {
-            const blocks::InstanceStatus* status =
-                blocks::statusAt(statuses, step.address, instance.record);
-            return status && blocks::drawnAsBox(*status);
-        });
-    const auto page = std::find_if(pages.begin(), pages.end(),
-                                   [&](const ladder::StepPage& p) { return p.address == wanted; });
-    if (page == pages.end())
+    const ladder::ProjectLadder drawn(loaded.project, loaded.places);
+    if (!drawn.hasCode(*unit))
+        return failure(path, QStringLiteral("unit %1 has no code").arg(*unit));
+    const int networks = drawn.networkCount(wanted);
+    if (networks < 0)
         return failure(path,
                        QStringLiteral("unit %1 has no step %2").arg(*unit).arg(stepName(wanted)));
-    const auto networks = static_cast<int>(page->ladder.networks.size());
     if (*networkNumber > networks)
         return failure(path, QStringLiteral("step %1 has %2 network(s), not %3")
                                  .arg(stepName(wanted))
                                  .arg(networks)
                                  .arg(*networkNumber));
-
-    const auto index = static_cast<std::size_t>(*networkNumber - 1);
-    const ladder::SymbolTable symbols = ladder::SymbolTable::of(document, *unit);
-    ladder::LayoutContext context;
-    context.number = *networkNumber;
-    context.firstStatement = page->firstStatements[index];
-    context.symbols = &symbols;
-    const ladder::Network& network = page->ladder.networks[index];
-    if (network.block)
-        if (const blocks::InstanceStatus* status =
-                blocks::statusAt(statuses, wanted, network.block->instance.record))
-            context.block = status->block;
-    const ladder::NetworkLayout layout = ladder::layoutNetwork(network, context);
+    const ladder::NetworkLayout layout = *drawn.layout(wanted, *networkNumber);
     std::set<lang::Address> pinVariables;
     if (layout.block)
         for (const auto& pin : layout.block->pins)

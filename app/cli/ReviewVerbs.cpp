@@ -18,11 +18,6 @@ namespace rs::cli {
 
 namespace {
 
-int usage(const QString& message) {
-    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
-    return UsageOrIo;
-}
-
 compiler::CheckOptions checkOptions(const Invocation& invocation) {
     compiler::CheckOptions options;
     options.warnUnconfiguredIo = !invocation.options.isSet(QStringLiteral("no-io-warnings"));

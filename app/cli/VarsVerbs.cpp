@@ -13,11 +13,6 @@ namespace rs::cli {
 
 namespace {
 
-int usage(const char* message) {
-    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", message);
-    return UsageOrIo;
-}
-
 // The project with its diagnostics reported; nothing when it cannot be read
 // (exit 2) or has errors (exit 1), with the status in `status`.
 std::optional<project::Project> loadProject(const Invocation& invocation, const QString& path,

@@ -10,6 +10,11 @@
 
 namespace rs::cli {
 
+int usage(const QString& message) {
+    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
+    return UsageOrIo;
+}
+
 namespace {
 
 // The closing line of the original tool.

@@ -15,6 +15,9 @@ namespace rs::cli {
 // Exit statuses of the command-line contract.
 enum ExitStatus { Ok = 0, Failed = 1, UsageOrIo = 2 };
 
+// Says what is wrong with the command and where help is; returns UsageOrIo.
+int usage(const QString& message);
+
 struct Streams {
     std::FILE* out = stdout;
     std::FILE* err = stderr;

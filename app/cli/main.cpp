@@ -2,6 +2,7 @@
 #include "BlocksVerbs.h"
 #include "Invocation.h"
 #include "LadderVerbs.h"
+#include "MergeVerb.h"
 #include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
 #include "TestVerb.h"
@@ -19,11 +20,7 @@
 namespace {
 
 using rs::cli::Invocation;
-
-int usage(const QString& message) {
-    std::fprintf(stderr, "rungsmith-cli: %s\nTry 'rungsmith-cli --help'.\n", qPrintable(message));
-    return rs::cli::UsageOrIo;
-}
+using rs::cli::usage;
 
 // Output to a pipe or a redirected file is buffered: a full disk or a closed
 // pipe shows only at the flush, and must not pass as success.
@@ -106,6 +103,10 @@ const rs::cli::Verb kVerbs[] = {
      "review FILE.sps                what changed since the project was validated (exit 0\n"
      "                                 none in behaviour, 1 some)",
      rs::cli::runReview},
+    {"merge",
+     "merge A.sps B.sps -o OUT.sps [--ignore-conflicts]\n"
+     "                                 A with the units of B added (the manual's Merge Project)",
+     rs::cli::runMerge},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -170,6 +171,9 @@ int run(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("date"),
                       QStringLiteral("validate: the date of the validation (default today)."),
                       QStringLiteral("YYYY-MM-DD")});
+    parser.addOption({QStringLiteral("ignore-conflicts"),
+                      QStringLiteral("merge: allow a symbolic name both projects use; it stays "
+                                     "only in the units that define it.")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

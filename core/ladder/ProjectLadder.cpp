@@ -23,26 +23,36 @@ ProjectLadder::ProjectLadder(const project::Project& project, const blocks::Libr
     }
 }
 
-std::optional<NetworkLayout> ProjectLadder::layout(const lang::StepAddress& step,
-                                                   int number) const {
+const StepPage* ProjectLadder::page(const lang::StepAddress& step) const {
     const auto unit = m_units.find(step.unit);
     if (unit == m_units.end())
-        return std::nullopt;
+        return nullptr;
     const auto& pages = unit->second.pages;
-    const auto page = std::find_if(pages.begin(), pages.end(),
-                                   [&](const StepPage& p) { return p.address == step; });
-    if (page == pages.end() || number < 1 ||
-        number > static_cast<int>(page->ladder.networks.size()))
+    const auto found = std::find_if(pages.begin(), pages.end(),
+                                    [&](const StepPage& p) { return p.address == step; });
+    return found == pages.end() ? nullptr : &*found;
+}
+
+int ProjectLadder::networkCount(const lang::StepAddress& step) const {
+    const StepPage* found = page(step);
+    return found ? static_cast<int>(found->ladder.networks.size()) : -1;
+}
+
+std::optional<NetworkLayout> ProjectLadder::layout(const lang::StepAddress& step,
+                                                   int number) const {
+    const StepPage* found = page(step);
+    if (!found || number < 1 || number > static_cast<int>(found->ladder.networks.size()))
         return std::nullopt;
+    const Unit& unit = m_units.at(step.unit);
     const auto index = static_cast<std::size_t>(number - 1);
     LayoutContext context;
     context.number = number;
-    context.firstStatement = page->firstStatements[index];
-    context.symbols = &unit->second.symbols;
-    const Network& network = page->ladder.networks[index];
+    context.firstStatement = found->firstStatements[index];
+    context.symbols = &unit.symbols;
+    const Network& network = found->ladder.networks[index];
     if (network.block)
         if (const blocks::InstanceStatus* status =
-                blocks::statusAt(unit->second.statuses, step, network.block->instance.record))
+                blocks::statusAt(unit.statuses, step, network.block->instance.record))
             context.block = status->block;
     return layoutNetwork(network, context);
 }

@@ -22,10 +22,16 @@ public:
     // The project as read with its block instances; its libraries are found from `places`.
     ProjectLadder(const project::Project& project, const blocks::LibraryPlaces& places);
 
+    // The unit has code (a pgm_pluto section).
+    bool hasCode(int station) const { return m_units.count(station) > 0; }
+    // How many networks the step has; -1 when its unit has no such step.
+    int networkCount(const lang::StepAddress& step) const;
     // The network `number` (from 1) of a step; nothing when there is none.
     std::optional<NetworkLayout> layout(const lang::StepAddress& step, int number) const;
 
 private:
+    const StepPage* page(const lang::StepAddress& step) const;
+
     struct Unit {
         std::vector<StepPage> pages;
         SymbolTable symbols;

@@ -3,6 +3,7 @@
 
 #include "compiler/ProgramCheck.h"
 #include "document/ProjectDocument.h"
+#include "document/ProjectMerging.h"
 #include "document/ProjectPaths.h"
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
@@ -712,9 +713,21 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
             add(tr("New &Pluto..."), [this, document] { m_units->newUnit(document); });
         add(tr("&Save Project"), [this, document] { m_projects->save(document); });
         add(tr("Save Project &As..."), [this, document] { m_projects->saveAs(document); });
-        if (!document->isDamaged())
+        if (!document->isDamaged()) {
             add(tr("Export Program &Text..."),
                 [this, document] { m_projects->exportProgramText(document); });
+            menu.addSeparator();
+            for (const bool ignore : {false, true})
+                add(ignore ? tr("Merge Project (&ignore conflicts)...") : tr("&Merge Project..."),
+                    [this, document, ignore] {
+                        if (ProjectDocument* other =
+                                chooseProjectToMerge(this, document, m_projects->documents()))
+                            if (const QString said =
+                                    mergeOpenProject(this, document, other, ignore);
+                                !said.isEmpty())
+                                showMessage(said);
+                    });
+        }
         menu.addSeparator();
         add(tr("&Close Project"), [this, document] { m_projects->close(document); });
         break;
