@@ -52,10 +52,16 @@ void BusStatusView::refresh() {
         simulation && document ? document->project().stations() : std::vector<int>{};
     m_table->setRowCount(static_cast<int>(stations.size()));
     const bool running = m_session->state() == SimulationSession::State::Running;
-    std::map<int, QString> signatures;
-    for (const compiler::UnitImage& image : m_session->images())
-        signatures[image.station] =
-            QString::fromStdString(compiler::signatureText(compiler::unitSignature(image)));
+    const std::vector<compiler::UnitImage>& images = m_session->images();
+    if (images.empty()) {
+        m_signatures.clear();
+    } else if (m_signatures.empty() || images.front().projectSignature != m_signedProject) {
+        m_signatures.clear();
+        for (const compiler::UnitImage& image : images)
+            m_signatures[image.station] =
+                QString::fromStdString(compiler::signatureText(compiler::unitSignature(image)));
+        m_signedProject = images.front().projectSignature;
+    }
     for (int row = 0; row < static_cast<int>(stations.size()); ++row) {
         const int station = stations[static_cast<std::size_t>(row)];
         const bool present = simulation->unit(station) != nullptr;
@@ -69,7 +75,7 @@ void BusStatusView::refresh() {
                                           : tr("Ok, stopped"),
                                 present ? (code == 0 ? tr("E0=No Error") : tr("Er%1").arg(code))
                                         : QString(),
-                                signatures.count(station) ? signatures[station] : QString()};
+                                m_signatures.count(station) ? m_signatures[station] : QString()};
         for (int column = 0; column < cells.size(); ++column) {
             QTableWidgetItem* item = m_table->item(row, column);
             if (!item) {

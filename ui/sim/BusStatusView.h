@@ -4,6 +4,9 @@
 #include <QString>
 #include <QWidget>
 
+#include <cstdint>
+#include <map>
+
 class QTableWidget;
 
 namespace rs::ui {
@@ -31,6 +34,10 @@ public:
 private:
     SimulationSession* m_session;
     QTableWidget* m_table;
+    // Each unit's signature, of the images whose project signature this is:
+    // reading them means serialising every image, too much for every update.
+    std::map<int, QString> m_signatures;
+    std::uint32_t m_signedProject = 0;
 };
 
 } // namespace rs::ui
