@@ -13,11 +13,16 @@ namespace rs::ui {
 
 namespace {
 
-QString listed(const std::vector<std::string>& lines) {
-    QStringList items;
-    for (const std::string& line : lines)
-        items << QString::fromStdString(line);
-    return items.join(QLatin1Char('\n'));
+// A message about the merge with the conflicts listed below it.
+void tellConflicts(QWidget* parent, QMessageBox::Icon icon, const QString& text,
+                   const std::vector<std::string>& conflicts) {
+    QStringList lines;
+    for (const std::string& conflict : conflicts)
+        lines << QString::fromStdString(conflict);
+    QMessageBox box(icon, QCoreApplication::translate("ProjectMerging", "Merge Project"), text,
+                    QMessageBox::Ok, parent);
+    box.setInformativeText(lines.join(QLatin1Char('\n')));
+    box.exec();
 }
 
 } // namespace
@@ -56,31 +61,24 @@ QString mergeOpenProject(QWidget* parent, ProjectDocument* into, const ProjectDo
     const project::MergeResult result =
         project::mergeProjects(into->project(), other->project(), ignoreNameConflicts);
     if (!result.merged) {
-        QMessageBox box(QMessageBox::Warning,
-                        QCoreApplication::translate("ProjectMerging", "Merge Project"),
-                        QCoreApplication::translate(
-                            "ProjectMerging",
-                            "%1 cannot be merged into %2: every unit must keep its station and "
-                            "every symbolic name must be one project's only.")
-                            .arg(other->displayName(), into->displayName()),
-                        QMessageBox::Ok, parent);
-        box.setInformativeText(listed(result.conflicts));
-        box.exec();
+        tellConflicts(parent, QMessageBox::Warning,
+                      QCoreApplication::translate(
+                          "ProjectMerging",
+                          "%1 cannot be merged into %2: every unit must keep its station and "
+                          "every symbolic name must be one project's only.")
+                          .arg(other->displayName(), into->displayName()),
+                      result.conflicts);
         return {};
     }
     into->replace(QCoreApplication::translate("ProjectMerging", "Merge Project"), *result.merged);
-    if (!result.conflicts.empty()) {
-        QMessageBox box(QMessageBox::Information,
-                        QCoreApplication::translate("ProjectMerging", "Merge Project"),
-                        QCoreApplication::translate(
-                            "ProjectMerging",
-                            "%1 is merged into %2. Each name both used stays only in the units "
-                            "that define it; elsewhere its variable is written as its address.")
-                            .arg(other->displayName(), into->displayName()),
-                        QMessageBox::Ok, parent);
-        box.setInformativeText(listed(result.conflicts));
-        box.exec();
-    }
+    if (!result.conflicts.empty())
+        tellConflicts(parent, QMessageBox::Information,
+                      QCoreApplication::translate(
+                          "ProjectMerging",
+                          "%1 is merged into %2. Each name both used stays only in the units "
+                          "that define it; elsewhere its variable is written as its address.")
+                          .arg(other->displayName(), into->displayName()),
+                      result.conflicts);
     return QCoreApplication::translate("ProjectMerging", "%1 is merged into %2.")
         .arg(other->displayName(), into->displayName());
 }

@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "WindowTest.h"
+#include "ReviewWindowTest.h"
 
-#include "DialogDriver.h"
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "ladder/NetworkItem.h"
-#include "project/UnitText.h"
 
 #include <QAction>
 #include <QDialog>
 #include <QLabel>
-#include <QLineEdit>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -22,36 +19,11 @@ namespace {
 
 using rs::ui::PageRef;
 
-class ChangesSinceValidationTest : public WindowTest {
+class ChangesSinceValidationTest : public ReviewWindowTest {
 protected:
     void SetUp() override {
-        WindowTest::SetUp();
-        ASSERT_TRUE(
-            window
-                .loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps"))
-                .isEmpty());
-        showWindow();
-        DialogDriver driver({[](QDialog& dialog) {
-            dialog.findChild<QLineEdit*>(QStringLiteral("validatedBy"))
-                ->setText(QStringLiteral("A. Reviewer"));
-            dialog.accept();
-        }});
-        action("markValidatedAction")->trigger();
-        ASSERT_TRUE(driver.done());
-        ASSERT_TRUE(document()->project().baseline.has_value());
-        date = QString::fromStdString(document()->project().baseline->date);
-    }
-
-    // Unit 01's code with its second network changed and a third one added.
-    void changeUnitOne() {
-        rs::project::Project edited = document()->project();
-        std::string code = rs::project::unitText(edited, 1);
-        const std::string::size_type at = code.find("Q1.3 = Q1.2");
-        ASSERT_NE(at, std::string::npos) << code;
-        code.replace(at, 11, "Q1.3 = /Q1.2");
-        const auto read = rs::project::readUnitText(edited, 1, code + "M1.0 = I1.1\n");
-        ASSERT_TRUE(read.ok());
-        document()->replace(QStringLiteral("typing"), read.project);
+        ReviewWindowTest::SetUp();
+        date = markValidated();
     }
 
     QString sinceValidation() {

@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "WindowTest.h"
+#include "ReviewWindowTest.h"
 
-#include "DialogDriver.h"
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
-#include "project/UnitText.h"
 #include "review/CompareDialog.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QFile>
-#include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
 #include <QTest>
@@ -25,26 +22,8 @@ using rs::ui::PageRef;
 const QString kPressLine =
     QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps");
 
-class CompareDialogTest : public WindowTest {
+class CompareDialogTest : public ReviewWindowTest {
 protected:
-    void SetUp() override {
-        WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(kPressLine).isEmpty());
-        showWindow();
-    }
-
-    // Unit 01's second network changed and a third one added.
-    void changeUnitOne() {
-        rs::project::Project edited = document()->project();
-        std::string code = rs::project::unitText(edited, 1);
-        const std::string::size_type at = code.find("Q1.3 = Q1.2");
-        ASSERT_NE(at, std::string::npos) << code;
-        code.replace(at, 11, "Q1.3 = /Q1.2");
-        const auto read = rs::project::readUnitText(edited, 1, code + "M1.0 = I1.1\n");
-        ASSERT_TRUE(read.ok());
-        document()->replace(QStringLiteral("typing"), read.project);
-    }
-
     // The dialog Compare With or Compare With Validated opened, once compared.
     CompareDialog* openedDialog() {
         auto* dialog = window.findChild<CompareDialog*>();
@@ -131,13 +110,7 @@ TEST_F(CompareDialogTest, EnterOnANetworkOpensItInTheLadder) {
 TEST_F(CompareDialogTest, ComparesWithTheValidatedVersion) {
     QAction* compare = action("compareValidatedAction");
     EXPECT_FALSE(compare->isEnabled());
-    DialogDriver driver({[](QDialog& dialog) {
-        dialog.findChild<QLineEdit*>(QStringLiteral("validatedBy"))
-            ->setText(QStringLiteral("A. Reviewer"));
-        dialog.accept();
-    }});
-    action("markValidatedAction")->trigger();
-    ASSERT_TRUE(driver.done());
+    markValidated();
     EXPECT_TRUE(compare->isEnabled());
     changeUnitOne();
     compare->trigger();
