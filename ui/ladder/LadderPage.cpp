@@ -200,7 +200,9 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
             disconnect(m_compile, nullptr, this, nullptr);
         m_compile = document ? SettledCompile::of(document) : nullptr;
         if (m_compile) {
-            m_compile->addViewer(this);
+            // Without a baseline the page has nothing to mark: editing compiles nothing.
+            m_compile->addViewer(
+                this, [this] { return m_document && m_document->project().baseline.has_value(); });
             connect(m_compile, &SettledCompile::computed, this,
                     &LadderPage::showChangesSinceValidation);
         }

@@ -63,19 +63,19 @@ SettledCompile::~SettledCompile() {
     m_watcher->waitForFinished();
 }
 
-void SettledCompile::addViewer(QWidget* viewer) {
-    for (const QPointer<QWidget>& known : m_viewers)
-        if (known == viewer)
+void SettledCompile::addViewer(QWidget* viewer, std::function<bool()> wants) {
+    for (const Viewer& known : m_viewers)
+        if (known.widget == viewer)
             return;
-    m_viewers.emplace_back(viewer);
+    m_viewers.push_back({viewer, std::move(wants)});
     viewer->installEventFilter(this);
     if (m_waitsToShow && viewer->isVisible())
         m_settle.start();
 }
 
 bool SettledCompile::viewerShows() const {
-    for (const QPointer<QWidget>& viewer : m_viewers)
-        if (viewer && viewer->isVisible())
+    for (const Viewer& viewer : m_viewers)
+        if (viewer.widget && viewer.widget->isVisible() && (!viewer.wants || viewer.wants()))
             return true;
     return false;
 }

@@ -11,6 +11,7 @@
 #include <QWidget>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -45,8 +46,9 @@ public:
     // Waits for a computation still running.
     ~SettledCompile() override;
 
-    // Compiles while this widget shows (and not while none of them shows).
-    void addViewer(QWidget* viewer);
+    // Compiles while this widget shows and, if given, `wants` says it needs
+    // an outcome (a ladder page only with a baseline to compare with).
+    void addViewer(QWidget* viewer, std::function<bool()> wants = {});
     // Of the project as it is now; nullptr until computed after the last change.
     const Outcome* outcome() const { return m_outcome ? &*m_outcome : nullptr; }
     // An outcome is being computed, or waits for the project to settle.
@@ -67,7 +69,11 @@ private:
     void finish();
 
     ProjectDocument* m_document;
-    std::vector<QPointer<QWidget>> m_viewers;
+    struct Viewer {
+        QPointer<QWidget> widget;
+        std::function<bool()> wants;
+    };
+    std::vector<Viewer> m_viewers;
     QTimer m_settle;
     std::unique_ptr<QFutureWatcher<Outcome>> m_watcher;
     std::optional<Outcome> m_outcome;
