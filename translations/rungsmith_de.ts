@@ -1316,6 +1316,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Copying: drop it before or after an element. Hold Shift to move.</source>
         <translation>Kopieren: vor oder nach einem Element ablegen. Umschalt halten zum Verschieben.</translation>
     </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
+        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Ein Klick oder %1 auf das Kästchen einer Konfigurationsoption setzt oder löscht es; sonst kann sich nichts ändern.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1596,6 +1604,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>&amp;Merge Project...</source>
         <translation>Projekt &amp;zusammenführen …</translation>
     </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation>%1 (schreibgeschützt)</translation>
+    </message>
+    <message>
+        <source>%1 (config options only)</source>
+        <translation>%1 (nur Konfigurationsoptionen)</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1780,6 +1796,38 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word Protect...</source>
+        <translation>Pass&amp;wortschutz …</translation>
+    </message>
+    <message>
+        <source>Protect the project with a password, change its protection or take it off</source>
+        <translation>Das Projekt mit einem Passwort schützen, den Schutz ändern oder aufheben</translation>
+    </message>
+    <message>
+        <source>“%1” was changed outside Rungsmith after it was password protected.</source>
+        <translation>„%1“ wurde außerhalb von Rungsmith geändert, nachdem es mit einem Passwort geschützt wurde.</translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
+        <translation>Die erste Änderung steht in Zeile %1: Die Signatur, die das Passwort erzeugt hat, deckt sie nicht. Das Projekt wird schreibgeschützt geöffnet; der Schutz macht Änderungen sichtbar, ist aber kein Schloss, und die Datei bleibt lesbarer Text.</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Passwortschutz</translation>
+    </message>
+    <message>
+        <source>Protected with a password: saving writes the protection.</source>
+        <translation>Mit Passwort geschützt: Der Schutz wird beim Speichern geschrieben.</translation>
+    </message>
+    <message>
+        <source>Remove Password Protection</source>
+        <translation>Passwortschutz aufheben</translation>
+    </message>
+    <message>
+        <source>The password protection is off once the project is saved.</source>
+        <translation>Der Passwortschutz ist aufgehoben, sobald das Projekt gespeichert ist.</translation>
     </message>
 </context>
 <context>
@@ -2003,6 +2051,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>The project is open read only: nothing in it can change.</source>
+        <translation>Das Projekt ist schreibgeschützt geöffnet: Nichts darin kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>The project is open with permission to configure: only its Config Options can change.</source>
+        <translation>Das Projekt ist mit Berechtigung zum Konfigurieren geöffnet: Nur seine Konfigurationsoptionen können sich ändern.</translation>
     </message>
 </context>
 <context>
@@ -2492,6 +2548,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Show this code as ladder networks</source>
         <translation>Diesen Code als Kontaktplan-Netzwerke zeigen</translation>
+    </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
     </message>
 </context>
 <context>
@@ -3585,6 +3649,127 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>%1 is merged into %2.</source>
         <translation>%1 ist mit %2 zusammengeführt.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation>Quelldatei mit &amp;Passwort schützen</translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation>Ändern der Konfigurationsoptionen</translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation>Nur mit dem &amp;Hauptpasswort möglich</translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation>Ohne Passwort mö&amp;glich</translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation>Passwort für Konfigurations&amp;optionen erforderlich</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Passwortschutz</translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation>Die Datei speichert kein Passwort, nur eine Signatur, die nur das Passwort erzeugen kann, sodass eine Änderung außerhalb von Rungsmith sichtbar wird. Jeder kann die Datei weiterhin öffnen und lesen.</translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation>Ha&amp;uptpasswort:</translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation>&amp;Wiederholen:</translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation>Pa&amp;sswort für Konfigurationsoptionen:</translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation>Wi&amp;ederholen:</translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation>Geben Sie das Hauptpasswort ein.</translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation>Hauptpasswort und Wiederholung stimmen nicht überein.</translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation>Geben Sie das Passwort für die Konfigurationsoptionen ein.</translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation>Passwort für die Konfigurationsoptionen und Wiederholung stimmen nicht überein.</translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation>Das Passwort für die Konfigurationsoptionen muss sich vom Hauptpasswort unterscheiden, sonst gäbe es volle Berechtigung.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation>Mit &amp;voller Berechtigung öffnen</translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation>Mit Berechtigung zum &amp;Konfigurieren öffnen</translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation>&amp;Schreibgeschützt öffnen</translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation>Geschütztes Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation>„%1“ ist mit einem Passwort geschützt. Es lässt sich ohne Passwort öffnen, aber dann kann sich nichts darin ändern.</translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation>Erfordert das Hauptpasswort; alles kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation>Erfordert kein Passwort; nur die Konfigurationsoptionen können sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation>Erfordert das Passwort für die Konfigurationsoptionen oder das Hauptpasswort; nur die Konfigurationsoptionen können sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation>Erfordert kein Passwort; nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunde erneut.</numerusform>
+            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunden erneut.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1346,6 +1346,14 @@ Its text page (F6) shows and edits it.</source>
         <source>Copying: drop it before or after an element. Hold Shift to move.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1626,6 +1634,14 @@ Its text page (F6) shows and edits it.</source>
         <source>&amp;Merge Project...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (config options only)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1809,6 +1825,38 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>&amp;Recover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass&amp;word Protect...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Protect the project with a password, change its protection or take it off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” was changed outside Rungsmith after it was password protected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Protected with a password: saving writes the protection.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Password Protection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The password protection is off once the project is saved.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2032,6 +2080,14 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Untitled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project is open read only: nothing in it can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project is open with permission to configure: only its Config Options can change.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2490,6 +2546,14 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Show this code as ladder networks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3584,6 +3648,127 @@ Its text page (F6) shows and edits it.</source>
     <message>
         <source>%1 is merged into %2.</source>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>The password does not open the project with this permission. Try again in %n second.</numerusform>
+            <numerusform>The password does not open the project with this permission. Try again in %n seconds.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

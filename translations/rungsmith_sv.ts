@@ -1316,6 +1316,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Copying: drop it before or after an element. Hold Shift to move.</source>
         <translation>Kopierar: släpp det före eller efter ett element. Håll ned Skift för att flytta.</translation>
     </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
+        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: ett klick eller %1 på ett konfigurationsalternativs ruta markerar eller avmarkerar det; inget annat kan ändras.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MainWindow</name>
@@ -1361,7 +1369,7 @@ Dess textsida (F6) visar och redigerar den.</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation>Öppna &amp;senaste</translation>
+        <translation>&amp;Öppna senaste</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
@@ -1596,6 +1604,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>&amp;Merge Project...</source>
         <translation>Sa&amp;mmanfoga projekt …</translation>
     </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation>%1 (skrivskyddat)</translation>
+    </message>
+    <message>
+        <source>%1 (config options only)</source>
+        <translation>%1 (endast konfigurationsalternativ)</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewProjectDialog</name>
@@ -1780,6 +1796,38 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&amp;Recover</source>
         <translation>&amp;Återställ</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word Protect...</source>
+        <translation>Lösen&amp;ordsskydda …</translation>
+    </message>
+    <message>
+        <source>Protect the project with a password, change its protection or take it off</source>
+        <translation>Skydda projektet med ett lösenord, ändra skyddet eller ta bort det</translation>
+    </message>
+    <message>
+        <source>“%1” was changed outside Rungsmith after it was password protected.</source>
+        <translation>”%1” har ändrats utanför Rungsmith efter att det lösenordsskyddades.</translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
+        <translation>Den första ändringen finns på rad %1: signaturen som lösenordet gjorde täcker den inte. Projektet öppnas skrivskyddat; skyddet visar ändringar men låser inget, och filen förblir läsbar text.</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Lösenordsskydda</translation>
+    </message>
+    <message>
+        <source>Protected with a password: saving writes the protection.</source>
+        <translation>Skyddat med lösenord: skyddet skrivs när projektet sparas.</translation>
+    </message>
+    <message>
+        <source>Remove Password Protection</source>
+        <translation>Ta bort lösenordsskydd</translation>
+    </message>
+    <message>
+        <source>The password protection is off once the project is saved.</source>
+        <translation>Lösenordsskyddet är borta när projektet har sparats.</translation>
     </message>
 </context>
 <context>
@@ -2003,6 +2051,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Untitled</source>
         <translation>Namnlöst</translation>
+    </message>
+    <message>
+        <source>The project is open read only: nothing in it can change.</source>
+        <translation>Projektet är öppnat skrivskyddat: inget i det kan ändras.</translation>
+    </message>
+    <message>
+        <source>The project is open with permission to configure: only its Config Options can change.</source>
+        <translation>Projektet är öppnat med behörighet att konfigurera: bara dess konfigurationsalternativ kan ändras.</translation>
     </message>
 </context>
 <context>
@@ -2492,6 +2548,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Show this code as ladder networks</source>
         <translation>Visa koden som stegdiagramnätverk</translation>
+    </message>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
     </message>
 </context>
 <context>
@@ -3585,6 +3649,127 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>%1 is merged into %2.</source>
         <translation>%1 är sammanfogat med %2.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation>&amp;Lösenordsskydda källfilen</translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation>Ändring av konfigurationsalternativ</translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation>Endast möjlig med &amp;huvudlösenordet</translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation>Möjlig &amp;utan lösenord</translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation>Lösenord för konfigurationsal&amp;ternativ krävs</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Lösenordsskydda</translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation>Filen sparar inget lösenord, bara en signatur som endast lösenordet kan göra, så att en ändring gjord utanför Rungsmith syns. Vem som helst kan fortfarande öppna och läsa filen.</translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation>Hu&amp;vudlösenord:</translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation>U&amp;pprepa:</translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation>Lö&amp;senord för konfigurationsalternativ:</translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation>Upp&amp;repa:</translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation>Ange huvudlösenordet.</translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation>Huvudlösenordet och upprepningen skiljer sig åt.</translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation>Ange lösenordet för konfigurationsalternativen.</translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation>Lösenordet för konfigurationsalternativen och upprepningen skiljer sig åt.</translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation>Lösenordet för konfigurationsalternativen måste skilja sig från huvudlösenordet, annars skulle det ge full behörighet.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation>Öppna med &amp;full behörighet</translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation>Öppna med behörighet att &amp;konfigurera</translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation>Öppna &amp;skrivskyddat</translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation>Öppna skyddat projekt</translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation>”%1” är lösenordsskyddat. Det öppnas utan lösenord, men då kan inget i det ändras.</translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation>Kräver huvudlösenordet; allt kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation>Kräver inget lösenord; bara konfigurationsalternativen kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation>Kräver lösenordet för konfigurationsalternativen eller huvudlösenordet; bara konfigurationsalternativen kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation>Kräver inget lösenord; inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Lösenord:</translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation>Lösenordet öppnar inte projektet med denna behörighet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekund.</numerusform>
+            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekunder.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

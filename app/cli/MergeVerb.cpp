@@ -2,6 +2,7 @@
 #include "MergeVerb.h"
 
 #include "ProjectLoading.h"
+#include "ProtectedWriting.h"
 #include "Verbs.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectMerge.h"
@@ -55,12 +56,10 @@ int runMerge(const Invocation& invocation) {
                      qPrintable(otherPath));
         return Failed;
     }
-    const QString error = project::writeTextFile(output, project::writeProject(*result.merged));
-    if (!error.isEmpty()) {
-        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
-        return UsageOrIo;
-    }
-    return Ok;
+    const auto keys = writingKeys(invocation, intoPath, *into, status);
+    if (!keys)
+        return status;
+    return writeProjectFile(output, *result.merged, *keys);
 }
 
 } // namespace rs::cli

@@ -5,6 +5,7 @@
 #include "blocks/LibrarySearch.h"
 #include "blocks/ProjectInstances.h"
 #include "project/ProjectFile.h"
+#include "project/ProtectedText.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -47,6 +48,11 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
         return loaded;
     loaded.project = std::move(read.read.project);
     loaded.diagnostics = std::move(read.read.diagnostics);
+    // A protected project changed outside Rungsmith is not taken as its author left it.
+    if (auto tampered = project::verifyProjectText(file.text)) {
+        loaded.diagnostics.push_back(std::move(*tampered));
+        lang::sortByPlace(loaded.diagnostics);
+    }
     loaded.text = std::move(file.text);
     return loaded;
 }

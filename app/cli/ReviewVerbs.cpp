@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReviewVerbs.h"
 
+#include "ProtectedWriting.h"
 #include "ReviewPages.h"
 #include "Verbs.h"
 #include "compiler/ImageCodec.h"
@@ -140,15 +141,14 @@ int runValidate(const Invocation& invocation) {
     // The file keeps its block instances as written; the baseline is of the
     // project they expand to, which is what `review` compares with.
     project::ProjectReadResult written = project::readProject(loaded.text);
+    int status = Ok;
+    const auto keys = writingKeys(invocation, path, written.project, status);
+    if (!keys)
+        return status;
     written.project.baseline = review::validatedBaseline(
         loaded.project, result, date.toString(Qt::ISODate).toStdString(), by.toStdString(),
         invocation.options.value(QStringLiteral("comment")).toStdString());
-    const QString error = project::writeTextFile(output, project::writeProject(written.project));
-    if (!error.isEmpty()) {
-        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
-        return UsageOrIo;
-    }
-    return Ok;
+    return writeProjectFile(output, written.project, *keys);
 }
 
 int runReview(const Invocation& invocation) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "VarsVerbs.h"
 
+#include "ProtectedWriting.h"
 #include "Verbs.h"
 #include "lang/Diagnostic.h"
 #include "project/ProjectFile.h"
@@ -63,7 +64,10 @@ int importCsv(const Invocation& invocation, const QString& projectPath, const QS
                      problem.column, lang::visibleText(problem.message).c_str());
     if (!imported.problems.empty())
         return Failed;
-    return write(out, project::writeProject(imported.project));
+    const auto keys = writingKeys(invocation, projectPath, *project, status);
+    if (!keys)
+        return status;
+    return writeProjectFile(out, imported.project, *keys);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "Invocation.h"
 #include "LadderVerbs.h"
 #include "MergeVerb.h"
+#include "ProtectVerb.h"
 #include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
 #include "TestVerb.h"
@@ -107,6 +108,12 @@ const rs::cli::Verb kVerbs[] = {
      "merge A.sps B.sps -o OUT.sps [--ignore-conflicts]\n"
      "                                 A with the units of B added (the manual's Merge Project)",
      rs::cli::runMerge},
+    {"protect",
+     "protect FILE.sps -o OUT.sps --password-file F [--options main|free|own]\n"
+     "        [--options-password-file G] [--remove]\n"
+     "                                 password protect the project (the manual's 4.1): it\n"
+     "                                 reads freely, and writes only with the password",
+     rs::cli::runProtect},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -174,6 +181,22 @@ int run(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("ignore-conflicts"),
                       QStringLiteral("merge: allow a symbolic name both projects use; it stays "
                                      "only in the units that define it.")});
+    parser.addOption({QStringLiteral("password-file"),
+                      QStringLiteral("The main password of a protected project, as the first "
+                                     "line of FILE: every verb that writes a protected project "
+                                     "needs it."),
+                      QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("options-password-file"),
+                      QStringLiteral("protect: the Config Options' own password (with --options "
+                                     "own)."),
+                      QStringLiteral("FILE")});
+    parser.addOption({QStringLiteral("options"),
+                      QStringLiteral("protect: who may change the Config Options: main (with "
+                                     "the main password, default), free (anybody), own (with "
+                                     "their own password)."),
+                      QStringLiteral("main|free|own")});
+    parser.addOption(
+        {QStringLiteral("remove"), QStringLiteral("protect: take the password protection off.")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

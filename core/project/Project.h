@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Baseline.h"
+#include "Protection.h"
 #include "lang/Ast.h"
 
 #include <map>
@@ -31,6 +32,8 @@ struct Project {
     std::vector<std::string> libraries;
     // The version last marked as validated, if any (Baseline.h).
     std::optional<Baseline> baseline;
+    // Password protection, if any (Protection.h).
+    std::optional<Protection> protection;
 
     // The project name from "$name", empty when the file has none.
     std::string name() const;

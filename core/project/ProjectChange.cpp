@@ -21,7 +21,8 @@ ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
     return {project.description,       project.includeSource,
             project.unitDescriptions,  project.variableDescriptions,
             project.exportedVariables, project.remanentVariables,
-            project.libraries,         project.baseline};
+            project.libraries,         project.baseline,
+            project.protection};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {
@@ -33,6 +34,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.remanentVariables = records.remanentVariables;
     project.libraries = records.libraries;
     project.baseline = records.baseline;
+    project.protection = records.protection;
 }
 
 ProjectChange ProjectChange::between(const Project& before, const Project& after) {

@@ -37,6 +37,7 @@ private:
         std::set<lang::Address> remanentVariables;
         std::vector<std::string> libraries;
         std::optional<Baseline> baseline;
+        std::optional<Protection> protection;
         friend bool operator==(const Records&, const Records&) = default;
     };
     struct UnitChange {

@@ -154,6 +154,15 @@ private:
             m_project.baseline = std::move(baseline);
             return true;
         }
+        if (kind == "protected") {
+            try {
+                m_project.protection = readProtectionRecord(*annotation);
+            } catch (const ProtectionRecordError& problem) {
+                error(at, problem.message);
+                return false;
+            }
+            return true;
+        }
         if (kind != "network")
             warn(at, "unknown record '@" + kind + "'; kept as a comment");
         return false;
@@ -252,6 +261,10 @@ std::string writeProject(const Project& project) {
             record.attributes.emplace_back("library", library);
         preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++), commentLine(record));
     }
+    // Password protection after it; sealing fills in its signatures (ProtectedText.h).
+    if (project.protection)
+        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
+                        commentLine(protectionRecord(*project.protection)));
     // The validated version's records after it.
     if (project.baseline)
         for (const Annotation& record : baselineRecords(*project.baseline))

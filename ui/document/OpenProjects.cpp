@@ -2,8 +2,10 @@
 #include "document/OpenProjects.h"
 
 #include "document/Autosave.h"
+#include "document/PasswordProtectDialog.h"
 #include "document/ProjectDocument.h"
 #include "document/ProjectPaths.h"
+#include "document/ProtectedOpenDialog.h"
 #include "pages/NewProjectDialog.h"
 #include "project/ProgramText.h"
 #include "project/ProjectFile.h"
@@ -95,6 +97,11 @@ void OpenProjects::createActions() {
     connect(m_actions.exportText, &QAction::triggered, this,
             [this] { exportProgramText(m_current()); });
 
+    m_actions.protect = action(tr("Pass&word Protect..."), "protectAction");
+    m_actions.protect->setStatusTip(
+        tr("Protect the project with a password, change its protection or take it off"));
+    connect(m_actions.protect, &QAction::triggered, this, [this] { passwordProtect(m_current()); });
+
     m_actions.example = action(tr("Open &Example Project"), "exampleAction");
     m_actions.example->setIcon(namedIcon("example"));
     connect(m_actions.example, &QAction::triggered, this, &OpenProjects::showExample);
@@ -107,6 +114,8 @@ void OpenProjects::updateActions(const ProjectDocument* current) {
     m_actions.saveAll->setEnabled(!m_documents.empty());
     m_actions.close->setEnabled(hasDocument);
     m_actions.exportText->setEnabled(hasDocument && !current->isDamaged());
+    m_actions.protect->setEnabled(hasDocument && !current->isDamaged() &&
+                                  current->permission() == project::Permission::Full);
 }
 
 void OpenProjects::fillRecentMenu(QMenu* menu) {
@@ -164,7 +173,12 @@ QString OpenProjects::loadFile(const QString& path) {
 }
 
 bool OpenProjects::openFile(const QString& path) {
+    const std::size_t before = m_documents.size();
     const QString error = loadFile(path);
+    if (error.isEmpty() && m_documents.size() > before && !askPermission(m_documents.back())) {
+        remove(m_documents.back());
+        return false;
+    }
     if (error.isEmpty()) {
         m_recentFiles.add(QFileInfo(path).absoluteFilePath());
         rememberDirectory(path);
@@ -181,6 +195,46 @@ bool OpenProjects::openFile(const QString& path) {
     box.setInformativeText(error);
     box.exec();
     return false;
+}
+
+bool OpenProjects::askPermission(ProjectDocument* document) {
+    if (const auto& tampering = document->tampering()) {
+        QMessageBox box(QMessageBox::Warning, tr("Open Project"),
+                        tr("“%1” was changed outside Rungsmith after it was password protected.")
+                            .arg(document->displayName()),
+                        QMessageBox::Ok, m_window);
+        box.setInformativeText(
+            tr("The first change is at line %1: the signature the password made does not cover "
+               "it. The project opens read only; its protection is evidence of changes, not a "
+               "lock, and the file stays readable text.")
+                .arg(tampering->line));
+        box.exec();
+        return true;
+    }
+    if (!document->project().protection)
+        return true;
+    ProtectedOpenDialog dialog(document->displayName(), *document->project().protection, m_window);
+    if (dialog.exec() != QDialog::Accepted)
+        return false;
+    document->setPermission(dialog.permission(), dialog.keys());
+    return true;
+}
+
+void OpenProjects::passwordProtect(ProjectDocument* document) {
+    if (!document || document->permission() != project::Permission::Full)
+        return;
+    PasswordProtectDialog dialog(document->project().protection, m_window);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    if (const auto& chosen = dialog.protection()) {
+        document->addKeys(chosen->keys);
+        document->edit(tr("Password Protect"),
+                       [&](project::Project& project) { project.protection = chosen->record; });
+        emit message(tr("Protected with a password: saving writes the protection."));
+    } else if (document->edit(tr("Remove Password Protection"),
+                              [](project::Project& project) { project.protection.reset(); })) {
+        emit message(tr("The password protection is off once the project is saved."));
+    }
 }
 
 void OpenProjects::showExample() {

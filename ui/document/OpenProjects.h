@@ -39,6 +39,7 @@ public:
         QAction* saveAll = nullptr;
         QAction* close = nullptr;
         QAction* exportText = nullptr;
+        QAction* protect = nullptr;
         QAction* example = nullptr;
     };
 
@@ -84,6 +85,9 @@ public:
     bool maybeSave(ProjectDocument* document);
     // Closes the project, offering to save changes; false when the user cancels.
     bool close(ProjectDocument* document);
+    // File > Password Protect: protects the project, changes its protection
+    // or takes it off, as one undoable edit.
+    void passwordProtect(ProjectDocument* document);
     // Writes the program text alone (File > Export); without a path, asks for one.
     bool exportProgramText(ProjectDocument* document, const QString& path = {});
     // The window closes: offers to save every modified project. False when the
@@ -116,6 +120,10 @@ private:
     void createActions();
     void add(ProjectDocument* document);
     void remove(ProjectDocument* document);
+    // A protected project just opened: says where a change made outside
+    // Rungsmith is, or asks for the permission to open it with. False when
+    // the user would rather not open it.
+    bool askPermission(ProjectDocument* document);
 
     QWidget* m_window;
     TextPage* m_textPage;

@@ -4,6 +4,7 @@
 #include "blocks/ProjectInstances.h"
 #include "document/ProjectCommand.h"
 #include "project/ProjectFile.h"
+#include "project/ProtectedText.h"
 
 #include <QCoreApplication>
 
@@ -39,6 +40,10 @@ ProjectDocument* ProjectDocument::fromText(const QByteArray& text, QObject* pare
         document->m_damaged = true;
         document->m_damagedText = text;
     }
+    // Protected: read only until a password opens more (OpenProjects asks).
+    document->m_tampering = project::verifyProjectText(view(text));
+    if (document->m_project.protection || document->m_tampering)
+        document->m_permission = project::Permission::ReadOnly;
     return document;
 }
 
@@ -86,6 +91,17 @@ bool ProjectDocument::replace(const QString& text, const project::Project& after
     project::ProjectChange change = project::ProjectChange::between(m_project, after);
     if (change.empty())
         return false;
+    if (m_permission == project::Permission::ReadOnly) {
+        refuse(tr("The project is open read only: nothing in it can change."));
+        return false;
+    }
+    if (m_permission == project::Permission::Configure &&
+        project::withoutOptionStates(project::writeProject(m_project)) !=
+            project::withoutOptionStates(project::writeProject(after))) {
+        refuse(tr("The project is open with permission to configure: only its Config Options "
+                  "can change."));
+        return false;
+    }
     m_undoStack.push(new ProjectCommand(*this, std::move(change), text));
     return true;
 }
@@ -136,7 +152,24 @@ void ProjectDocument::repair(project::Project project) {
 QByteArray ProjectDocument::fileText() const {
     if (m_damaged)
         return m_damagedText;
-    return QByteArray::fromStdString(project::writeProject(m_project));
+    return QByteArray::fromStdString(
+        project::sealProjectText(project::writeProject(m_project), m_keys));
+}
+
+void ProjectDocument::refuse(const QString& reason) {
+    emit editRefused(reason);
+    // A view that showed the edit as typed (a table's cell) shows the project again.
+    emit changed();
+}
+
+void ProjectDocument::setPermission(project::Permission permission, const project::Keyring& keys) {
+    m_permission = permission;
+    m_keys.add(keys);
+    emit permissionChanged();
+}
+
+void ProjectDocument::addKeys(const project::Keyring& keys) {
+    m_keys.add(keys);
 }
 
 QString ProjectDocument::saveTo(const QString& path) {

@@ -5,8 +5,10 @@
 // parse the C++20 standard headers they bring in (<concepts>) and needs only the names.
 #ifndef Q_MOC_RUN
 #include "blocks/LibrarySearch.h"
+#include "lang/Diagnostic.h"
 #include "project/Project.h"
 #include "project/ProjectChange.h"
+#include "project/ProtectionKeys.h"
 #endif
 
 #include <QObject>
@@ -24,6 +26,11 @@ namespace rs::ui {
 // A file that reads with errors is kept as the text it is ("damaged"): the
 // lines with errors could not be shown on the pages and would be lost on
 // saving, so the project is edited as text until it reads cleanly.
+//
+// A password-protected project (manual Part 1, 4.1) is opened with a
+// permission: every edit goes through replace(), which refuses all of them
+// read only and, with permission to configure, any that changes more than
+// the Config Options' states. Saving seals the file with the keys held.
 class ProjectDocument : public QObject {
     Q_OBJECT
 public:
@@ -34,7 +41,8 @@ public:
     QUndoStack* undoStack() { return &m_undoStack; }
 
     // Applies an edit as one undo step named `text`. Nothing is pushed when
-    // the edit changes nothing. Returns whether it changed the project.
+    // the edit changes nothing or the permission refuses it (editRefused).
+    // Returns whether it changed the project.
     bool edit(const QString& text, const std::function<void(project::Project&)>& change);
     bool replace(const QString& text, const project::Project& after);
 
@@ -45,6 +53,16 @@ public:
     // Reads the libraries again at the next call of libraries(): a user
     // library's file was written.
     void reloadLibraries();
+
+    // What the user may change; Full for a project without protection.
+    project::Permission permission() const { return m_permission; }
+    // Sets the permission the project was opened with and the keys that gave it.
+    void setPermission(project::Permission permission, const project::Keyring& keys);
+    // Keys of a protection made in this session (File > Password Protect).
+    void addKeys(const project::Keyring& keys);
+    // A protected file changed outside Rungsmith: where, as reading it found.
+    // Such a file opens read only.
+    const std::optional<lang::Diagnostic>& tampering() const { return m_tampering; }
 
     // Called by the undo commands.
     void applyChange(const project::ProjectChange& change, bool forward);
@@ -82,9 +100,13 @@ signals:
     void changed();
     void modificationChanged(bool modified);
     void pathChanged();
+    // An edit was refused for the permission; `reason` says why, for the status bar.
+    void editRefused(const QString& reason);
+    void permissionChanged();
 
 private:
     void emitModification();
+    void refuse(const QString& reason);
 
     project::Project m_project;
     QUndoStack m_undoStack;
@@ -94,6 +116,9 @@ private:
     bool m_lastModified = false;
     bool m_damaged = false;
     QByteArray m_damagedText;
+    project::Permission m_permission = project::Permission::Full;
+    project::Keyring m_keys;
+    std::optional<lang::Diagnostic> m_tampering;
     struct Libraries {
         std::vector<std::string> entries;
         QString path;

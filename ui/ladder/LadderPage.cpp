@@ -195,6 +195,7 @@ void LadderPage::showUnit(ProjectDocument* document, int station, int sequence) 
         if (document) {
             connect(document, &ProjectDocument::changed, this, &LadderPage::followModel);
             connect(document, &ProjectDocument::pathChanged, this, &LadderPage::updateTitle);
+            connect(document, &ProjectDocument::permissionChanged, this, &LadderPage::updateTitle);
         }
         if (m_compile)
             disconnect(m_compile, nullptr, this, nullptr);
@@ -256,6 +257,20 @@ void LadderPage::updateTitle() {
             tr("Simulating: a click or %1 on an input toggles it; a right click or %2 forces any "
                "element's variable. Editing ends the simulation.")
                 .arg(keys(a.toggle), keys(a.operandMenu)));
+        return;
+    }
+    // Password protected: the elements cannot be placed, so their bar goes.
+    const project::Permission permission = m_document->permission();
+    m_toolBar->setVisible(permission == project::Permission::Full);
+    if (permission == project::Permission::ReadOnly) {
+        m_title->setSubtitle(tr("Password protected, open read only: nothing can change."));
+        return;
+    }
+    if (permission == project::Permission::Configure) {
+        m_title->setSubtitle(tr("Password protected, open with permission to configure: a "
+                                "click or %1 on a Config Option's box checks or unchecks it; "
+                                "nothing else can change.")
+                                 .arg(keys(a.toggle)));
         return;
     }
     QStringList inserts;

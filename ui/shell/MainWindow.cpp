@@ -303,6 +303,7 @@ void MainWindow::createMenus() {
     QMenu* exportMenu = file->addMenu(tr("&Export"));
     exportMenu->setObjectName(QStringLiteral("exportMenu"));
     exportMenu->addAction(projectActions.exportText);
+    file->addAction(projectActions.protect);
     file->addSeparator();
     file->addAction(m_quitAction);
     // Another window may have changed the list since this one last showed it.
@@ -453,6 +454,11 @@ void MainWindow::documentAdded(ProjectDocument* document) {
     });
     connect(document, &ProjectDocument::modificationChanged, this, &MainWindow::updateTitle);
     connect(document, &ProjectDocument::pathChanged, this, &MainWindow::updateTitle);
+    connect(document, &ProjectDocument::permissionChanged, this, [this] {
+        updateTitle();
+        updateActions();
+    });
+    connect(document, &ProjectDocument::editRefused, this, &MainWindow::showMessage);
     rebuildTree();
 }
 
@@ -599,7 +605,12 @@ void MainWindow::updateTitle() {
         setWindowModified(false);
         return;
     }
-    setWindowTitle(QStringLiteral("%1[*] — Rungsmith").arg(document->displayName()));
+    QString name = document->displayName();
+    if (document->permission() == project::Permission::ReadOnly)
+        name = tr("%1 (read only)").arg(name);
+    else if (document->permission() == project::Permission::Configure)
+        name = tr("%1 (config options only)").arg(name);
+    setWindowTitle(QStringLiteral("%1[*] — Rungsmith").arg(name));
     setWindowModified(document->isModified());
 }
 

@@ -68,6 +68,7 @@ void TextPage::showUnit(ProjectDocument* document, int station) {
     }
     connect(document, &ProjectDocument::changed, this, &TextPage::followModel);
     connect(document, &ProjectDocument::pathChanged, this, &TextPage::updateTitle);
+    connect(document, &ProjectDocument::permissionChanged, this, &TextPage::updateTitle);
     // The project's undo stack undoes the code too, except in a damaged
     // project, which has none yet.
     m_editor->setProjectUndo(station != kWholeProject);
@@ -96,6 +97,14 @@ void TextPage::updateTitle() {
         m_title->setTitle(tr("%1 — PLC Code").arg(unitCaption(m_document->project(), m_station)));
         m_title->setSubtitle({});
     }
+    // Config Options change on the ladder, where each is a check box.
+    const bool readOnly = m_document->permission() != project::Permission::Full;
+    m_editor->setReadOnly(readOnly);
+    if (readOnly)
+        m_title->setSubtitle(m_document->permission() == project::Permission::ReadOnly
+                                 ? tr("Password protected, open read only: nothing can change.")
+                                 : tr("Password protected, open with permission to configure: "
+                                      "only Config Options can change, on the ladder."));
 }
 
 bool TextPage::showSequence(int sequence) {
