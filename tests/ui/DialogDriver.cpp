@@ -15,6 +15,17 @@ void DialogDriver::poll() {
     auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
     if (!dialog || !dialog->isVisible() || dialog == m_last || m_handlers.empty())
         return;
+    // Keys go to a dialog's shortcuts only once it is the active window; on a
+    // busy machine that can come a while after it shows.
+    constexpr int kActivationWaitMs = 2000;
+    if (!dialog->isActiveWindow()) {
+        if (dialog != m_waitingFor) {
+            m_waitingFor = dialog;
+            m_waiting.start();
+        }
+        if (m_waiting.elapsed() < kActivationWaitMs)
+            return;
+    }
     m_last = dialog;
     Handler handler = std::move(m_handlers.front());
     m_handlers.pop_front();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -30,5 +31,7 @@ private:
     std::deque<Handler> m_handlers;
     QTimer m_timer;
     QPointer<QDialog> m_last;
+    QPointer<QDialog> m_waitingFor; // shown, not yet active
+    QElapsedTimer m_waiting;
     int m_handled = 0;
 };
