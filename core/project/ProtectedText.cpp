@@ -185,15 +185,12 @@ std::string sealProjectText(std::string_view text, const Keyring& keys) {
         // Only the options may have changed: the other lines keep the bytes the
         // main key's holder left, so that a change of theirs is still found.
         std::vector<unsigned char> kept = readDigests(protection.lines);
-        if (kept.size() == digests.size()) {
+        if (kept.size() == digests.size())
             for (std::size_t option : masked.optionLines) {
                 const std::size_t line = option + (option >= content.record ? 1 : 0);
                 kept[line] = digests[line];
             }
-            digests = std::move(kept);
-        } else {
-            digests = readDigests(protection.lines);
-        }
+        digests = std::move(kept);
     }
     protection.lines = base64(digests);
     if (protection.options != OptionsAccess::Free) {
