@@ -2803,6 +2803,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>The %1 runs instruction set 2 only.</source>
         <translation>%1 kann nur Befehlssatz 2.</translation>
     </message>
+    <message>
+        <source>IDFIX-PROG</source>
+        <translation>IDFIX-PROG</translation>
+    </message>
+    <message>
+        <source>A programmable identifier circuit: the number given here is the one written to it (Write IDFIX, on the unit).</source>
+        <translation>Ein programmierbarer Identifikationsbaustein: Die hier angegebene Nummer wird in ihn geschrieben (IDFIX schreiben, an der Einheit).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariableTableModel</name>

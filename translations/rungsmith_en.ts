@@ -2802,6 +2802,14 @@ Its text page (F6) shows and edits it.</source>
         <source>The %1 runs instruction set 2 only.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>IDFIX-PROG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A programmable identifier circuit: the number given here is the one written to it (Write IDFIX, on the unit).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariableTableModel</name>

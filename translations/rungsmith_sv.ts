@@ -2803,6 +2803,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>The %1 runs instruction set 2 only.</source>
         <translation>%1 kör endast instruktionsuppsättning 2.</translation>
     </message>
+    <message>
+        <source>IDFIX-PROG</source>
+        <translation>IDFIX-PROG</translation>
+    </message>
+    <message>
+        <source>A programmable identifier circuit: the number given here is the one written to it (Write IDFIX, on the unit).</source>
+        <translation>En programmerbar identitetskrets: numret som anges här är det som skrivs till den (Skriv IDFIX, på enheten).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::VariableTableModel</name>

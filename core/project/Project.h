@@ -19,7 +19,9 @@ struct Project {
     lang::Document program;
     std::string description;
     bool includeSource = false;
-    std::map<int, std::string> unitDescriptions;               // by station
+    std::map<int, std::string> unitDescriptions; // by station
+    // Units whose identifier circuit is an IDFIX-PROG (manual Part 1, 5.1).
+    std::set<int> idfixProg;
     std::map<lang::Address, std::string> variableDescriptions; // by address
     // The manual's [E]: local variables made visible to the other units (10.2.1).
     std::set<lang::Address> exportedVariables;

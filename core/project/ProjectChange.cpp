@@ -18,10 +18,15 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,       project.includeSource,
-            project.unitDescriptions,  project.variableDescriptions,
-            project.exportedVariables, project.remanentVariables,
-            project.libraries,         project.baseline,
+    return {project.description,
+            project.includeSource,
+            project.unitDescriptions,
+            project.idfixProg,
+            project.variableDescriptions,
+            project.exportedVariables,
+            project.remanentVariables,
+            project.libraries,
+            project.baseline,
             project.protection};
 }
 
@@ -29,6 +34,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.description = records.description;
     project.includeSource = records.includeSource;
     project.unitDescriptions = records.unitDescriptions;
+    project.idfixProg = records.idfixProg;
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;

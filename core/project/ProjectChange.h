@@ -32,6 +32,7 @@ private:
         std::string description;
         bool includeSource = false;
         std::map<int, std::string> unitDescriptions;
+        std::set<int> idfixProg;
         std::map<lang::Address, std::string> variableDescriptions;
         std::set<lang::Address> exportedVariables;
         std::set<lang::Address> remanentVariables;

@@ -115,6 +115,10 @@ private:
             }
             if (std::string description = annotation->value("description"); !description.empty())
                 m_project.unitDescriptions[station] = std::move(description);
+            if (std::string idfix = annotation->value("idfix"); idfix == "prog")
+                m_project.idfixProg.insert(station);
+            else if (!idfix.empty())
+                error(at, "@unit idfix can only be prog (an IDFIX-PROG), not '" + idfix + "'");
             if (std::string list = annotation->value("remanent"); !list.empty()) {
                 try {
                     std::set<lang::Address> remanent = parseRemanentList(list, station);
@@ -195,6 +199,8 @@ std::vector<Line> unitRecords(const Project& project, int station) {
     if (auto it = project.unitDescriptions.find(station);
         it != project.unitDescriptions.end() && !it->second.empty())
         unit.attributes.emplace_back("description", it->second);
+    if (project.idfixProg.count(station))
+        unit.attributes.emplace_back("idfix", "prog");
     if (std::string remanent = formatRemanentList(project.remanentVariables, station);
         !remanent.empty())
         unit.attributes.emplace_back("remanent", std::move(remanent));
@@ -275,6 +281,7 @@ std::string writeProject(const Project& project) {
     std::set<int> stations;
     for (const auto& [station, text] : project.unitDescriptions)
         stations.insert(station);
+    stations.insert(project.idfixProg.begin(), project.idfixProg.end());
     for (const auto& [address, text] : project.variableDescriptions)
         stations.insert(address.unit);
     for (const auto* addresses : {&project.exportedVariables, &project.remanentVariables})

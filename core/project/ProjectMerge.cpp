@@ -124,6 +124,7 @@ MergeResult mergeProjects(const Project& into, const Project& other, bool ignore
                          return a.station() < b.station();
                      });
     merged.unitDescriptions.insert(other.unitDescriptions.begin(), other.unitDescriptions.end());
+    merged.idfixProg.insert(other.idfixProg.begin(), other.idfixProg.end());
     merged.variableDescriptions.insert(other.variableDescriptions.begin(),
                                        other.variableDescriptions.end());
     merged.exportedVariables.insert(other.exportedVariables.begin(), other.exportedVariables.end());

@@ -142,6 +142,7 @@ std::optional<UnitSettings> unitSettings(const Project& project, int station) {
     }
     if (auto it = project.unitDescriptions.find(station); it != project.unitDescriptions.end())
         settings.description = it->second;
+    settings.idfixProg = project.idfixProg.count(station) > 0;
     return settings;
 }
 
@@ -215,6 +216,8 @@ std::optional<std::string> addUnit(Project& project, const UnitSettings& request
         preamble.push_back(blankLine());
     if (!settings.description.empty())
         project.unitDescriptions[settings.station] = settings.description;
+    if (settings.idfixProg)
+        project.idfixProg.insert(settings.station);
     programOf(project, settings.station);
     tidyBlankLines(project.program);
     return std::nullopt;
@@ -268,6 +271,10 @@ std::optional<std::string> changeUnit(Project& project, const UnitSettings& requ
         project.unitDescriptions.erase(station);
     else
         project.unitDescriptions[station] = settings.description;
+    if (settings.idfixProg)
+        project.idfixProg.insert(station);
+    else
+        project.idfixProg.erase(station);
 
     // What the new type or instruction set cannot have goes with the change.
     const target::UnitTypeInfo& type = target::unitTypeInfo(settings.type);
@@ -348,6 +355,7 @@ void removeUnit(Project& project, int station) {
     std::erase_if(project.program.units,
                   [&](const lang::UnitProgram& unit) { return unit.station() == station; });
     project.unitDescriptions.erase(station);
+    project.idfixProg.erase(station);
     std::erase_if(project.variableDescriptions,
                   [&](const auto& entry) { return belongsToStation(entry.first, station); });
     std::erase_if(project.exportedVariables,

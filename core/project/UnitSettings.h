@@ -21,6 +21,9 @@ struct UnitSettings {
     target::UnitType type = target::UnitType::A20;
     int instructionSet = 2;
     std::string idfix{kNoIdfix}; // 12 upper-case hexadecimal digits
+    // The identifier is an IDFIX-PROG (Part 1, 5.1): a circuit the number is
+    // written to (Tools > Write IDFIX, which needs the hardware).
+    bool idfixProg = false;
     std::string description;
     bool declared = true; // false when the unit has code but no id_pluto line
 

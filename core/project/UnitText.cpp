@@ -28,6 +28,7 @@ Project headOf(const Project& project) {
     head.description = project.description;
     head.includeSource = project.includeSource;
     head.unitDescriptions = project.unitDescriptions;
+    head.idfixProg = project.idfixProg;
     head.variableDescriptions = project.variableDescriptions;
     head.exportedVariables = project.exportedVariables;
     head.remanentVariables = project.remanentVariables;
@@ -118,6 +119,7 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.description = read.project.description;
     result.project.includeSource = read.project.includeSource;
     result.project.unitDescriptions = std::move(read.project.unitDescriptions);
+    result.project.idfixProg = std::move(read.project.idfixProg);
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);
     result.project.remanentVariables = std::move(read.project.remanentVariables);

@@ -146,3 +146,34 @@ TEST(UnitSettings, RemovingAUnitTakesItsCodeNamesAndRecords) {
     EXPECT_EQ(textOf(p), textOf(onlyFirst));
     EXPECT_TRUE(isStable(p));
 }
+
+// Manual Part 1, 5.1: "IDFIX-PROG" beside an IDFIX number and No IDFIX,
+// kept as the unit record's idfix="prog" and gone with the unit.
+TEST(UnitSettings, AnIdfixProgIsKeptInTheUnitRecord) {
+    project::Project p = project::newProject("Press", "", false);
+    UnitSettings prog = unit(0, UnitType::B46, 3, "0000ABCD1234");
+    prog.idfixProg = true;
+    ASSERT_FALSE(project::addUnit(p, prog));
+    const std::string text = textOf(p);
+    EXPECT_NE(text.find("! id_pluto_Double:00=0000ABCD1234\n;@unit 00 idfix=\"prog\"\n"),
+              std::string::npos)
+        << text;
+    const project::Project read = projectFrom(text);
+    EXPECT_TRUE(project::unitSettings(read, 0)->idfixProg);
+    EXPECT_TRUE(isStable(read));
+    EXPECT_EQ(compileErrors(read), 0);
+
+    prog.idfixProg = false;
+    ASSERT_FALSE(project::changeUnit(p, prog));
+    EXPECT_EQ(textOf(p).find("idfix="), std::string::npos);
+    prog.idfixProg = true;
+    ASSERT_FALSE(project::changeUnit(p, prog));
+    project::removeUnit(p, 0);
+    EXPECT_TRUE(p.idfixProg.empty());
+
+    const auto wrong =
+        project::readProject("$name P\n! id_pluto:00=000000000000\n;@unit 00 idfix=\"yes\"\n");
+    ASSERT_EQ(wrong.diagnostics.size(), 1u);
+    EXPECT_EQ(wrong.diagnostics[0].line, 3);
+    EXPECT_NE(wrong.diagnostics[0].message.find("idfix can only be prog"), std::string::npos);
+}

@@ -21,7 +21,7 @@ QString display(const target::UnitTypeInfo& type) {
     return QString::fromUtf8(type.display.data(), static_cast<qsizetype>(type.display.size()));
 }
 
-enum IdfixKind { IdfixNumber = 0, NoIdfix = 1 };
+enum IdfixKind { IdfixNumber = 0, NoIdfix = 1, IdfixProg = 2 };
 
 } // namespace
 
@@ -53,6 +53,11 @@ UnitSettingsForm::UnitSettingsForm(QWidget* parent)
     m_setNote->setMinimumWidth(420);
     m_idfixKind->addItem(tr("IDFIX number"), IdfixNumber);
     m_idfixKind->addItem(tr("No IDFIX"), NoIdfix);
+    m_idfixKind->addItem(tr("IDFIX-PROG"), IdfixProg);
+    m_idfixKind->setItemData(IdfixProg,
+                             tr("A programmable identifier circuit: the number given here is the "
+                                "one written to it (Write IDFIX, on the unit)."),
+                             Qt::ToolTipRole);
     m_idfix->setValidator(new QRegularExpressionValidator(
         QRegularExpression(QStringLiteral("[0-9A-Fa-f]{0,12}")), m_idfix));
     m_idfix->setPlaceholderText(tr("12 hexadecimal digits, e.g. 000034AD4AE1"));
@@ -120,8 +125,8 @@ void UnitSettingsForm::setSettings(const project::UnitSettings& settings,
     m_station->setEnabled(!stationFixed);
     m_type->setCurrentIndex(m_type->findData(static_cast<int>(settings.type)));
     (settings.instructionSet >= 3 ? m_set3 : m_set2)->setChecked(true);
-    const bool noIdfix = settings.idfix == project::kNoIdfix;
-    m_idfixKind->setCurrentIndex(noIdfix ? NoIdfix : IdfixNumber);
+    const bool noIdfix = settings.idfix == project::kNoIdfix && !settings.idfixProg;
+    m_idfixKind->setCurrentIndex(settings.idfixProg ? IdfixProg : noIdfix ? NoIdfix : IdfixNumber);
     m_idfix->setText(noIdfix ? QString() : QString::fromStdString(settings.idfix));
     if (m_description->text() != QString::fromStdString(settings.description))
         m_description->setText(QString::fromStdString(settings.description));
@@ -138,12 +143,13 @@ project::UnitSettings UnitSettingsForm::settings() const {
     settings.idfix = m_idfixKind->currentData().toInt() == NoIdfix
                          ? std::string(project::kNoIdfix)
                          : m_idfix->text().toUpper().toStdString();
+    settings.idfixProg = m_idfixKind->currentData().toInt() == IdfixProg;
     settings.description = m_description->text().toStdString();
     return settings;
 }
 
 QString UnitSettingsForm::problem() const {
-    if (m_idfixKind->currentData().toInt() == IdfixNumber && m_idfix->text().size() != 12)
+    if (m_idfixKind->currentData().toInt() != NoIdfix && m_idfix->text().size() != 12)
         return tr("The IDFIX number has %n of its 12 hexadecimal digits. Choose \"No IDFIX\" if "
                   "the unit has no identifier circuit.",
                   nullptr, static_cast<int>(m_idfix->text().size()));
@@ -162,7 +168,7 @@ void UnitSettingsForm::updateInstructionSets() {
 }
 
 void UnitSettingsForm::updateIdfix() {
-    m_idfix->setEnabled(m_idfixKind->currentData().toInt() == IdfixNumber);
+    m_idfix->setEnabled(m_idfixKind->currentData().toInt() != NoIdfix);
     const QString text = problem();
     m_problem->setText(text);
     m_problem->setVisible(!text.isEmpty());
