@@ -2206,6 +2206,52 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
             <numerusform>%n Netzwerke hinzugefügt, geändert oder entfernt</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Protection:</source>
+        <translation>Schutz:</translation>
+    </message>
+    <message>
+        <source>changed outside Rungsmith after it was password protected (first at line %1): open read only</source>
+        <translation>außerhalb von Rungsmith geändert, nachdem es mit einem Passwort geschützt wurde (zuerst in Zeile %1): schreibgeschützt geöffnet</translation>
+    </message>
+    <message>
+        <source>none (File &gt; Password Protect)</source>
+        <translation>keiner (Datei &gt; Passwortschutz)</translation>
+    </message>
+    <message>
+        <source>only with the main password</source>
+        <translation>nur mit dem Hauptpasswort</translation>
+    </message>
+    <message>
+        <source>without a password</source>
+        <translation>ohne Passwort</translation>
+    </message>
+    <message>
+        <source>with their own password</source>
+        <translation>mit ihrem eigenen Passwort</translation>
+    </message>
+    <message>
+        <source>with full permission</source>
+        <translation>mit voller Berechtigung</translation>
+    </message>
+    <message>
+        <source>with permission to configure</source>
+        <translation>mit Berechtigung zum Konfigurieren</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>The protection&apos;s public key: %1</source>
+        <translation>Öffentlicher Schlüssel des Schutzes: %1</translation>
+    </message>
+    <message>
+        <source>password protected, key %1 …
+Config Options change %2; opened %3</source>
+        <translation>passwortgeschützt, Schlüssel %1 …
+Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>

@@ -2236,6 +2236,51 @@ Its text page (F6) shows and edits it.</source>
             <numerusform>%n networks added, changed or removed</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Protection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed outside Rungsmith after it was password protected (first at line %1): open read only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none (File &gt; Password Protect)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only with the main password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>without a password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with their own password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with full permission</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with permission to configure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The protection&apos;s public key: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>password protected, key %1 …
+Config Options change %2; opened %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>

@@ -2206,6 +2206,52 @@ Dess textsida (F6) visar och redigerar den.</translation>
             <numerusform>%n nätverk tillagda, ändrade eller borttagna</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Protection:</source>
+        <translation>Skydd:</translation>
+    </message>
+    <message>
+        <source>changed outside Rungsmith after it was password protected (first at line %1): open read only</source>
+        <translation>ändrat utanför Rungsmith efter att det lösenordsskyddades (först på rad %1): öppnat skrivskyddat</translation>
+    </message>
+    <message>
+        <source>none (File &gt; Password Protect)</source>
+        <translation>inget (Arkiv &gt; Lösenordsskydda)</translation>
+    </message>
+    <message>
+        <source>only with the main password</source>
+        <translation>endast med huvudlösenordet</translation>
+    </message>
+    <message>
+        <source>without a password</source>
+        <translation>utan lösenord</translation>
+    </message>
+    <message>
+        <source>with their own password</source>
+        <translation>med sitt eget lösenord</translation>
+    </message>
+    <message>
+        <source>with full permission</source>
+        <translation>med full behörighet</translation>
+    </message>
+    <message>
+        <source>with permission to configure</source>
+        <translation>med behörighet att konfigurera</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>skrivskyddat</translation>
+    </message>
+    <message>
+        <source>The protection&apos;s public key: %1</source>
+        <translation>Skyddets publika nyckel: %1</translation>
+    </message>
+    <message>
+        <source>password protected, key %1 …
+Config Options change %2; opened %3</source>
+        <translation>lösenordsskyddat, nyckel %1 …
+konfigurationsalternativen ändras %2; öppnat %3</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectTree</name>

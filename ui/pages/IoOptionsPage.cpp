@@ -115,6 +115,7 @@ void IoOptionsPage::showUnit(ProjectDocument* document, int station) {
     if (!document)
         return;
     connect(document, &ProjectDocument::changed, this, &IoOptionsPage::refresh);
+    connect(document, &ProjectDocument::permissionChanged, this, &IoOptionsPage::refresh);
     refresh();
 }
 
@@ -231,6 +232,8 @@ void IoOptionsPage::refresh() {
     for (auto& row : m_rows)
         fill(row, project::terminalSetting(p, row.terminal));
     m_filling = false;
+    // Password protected without full permission: the choices show, and stay as they are.
+    m_content->setEnabled(m_document->permission() == project::Permission::Full);
     showInstanceUses();
 }
 

@@ -43,8 +43,8 @@ ProjectPage::ProjectPage(QWidget* parent)
       m_nameProblem(new QLabel(this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
       m_file(new QLabel(this)), m_units(new QLabel(this)), m_signature(new SignatureLabel(this)),
-      m_validated(new QLabel(this)), m_sinceValidation(new QLabel(this)), m_form(new QFormLayout),
-      m_libraries(new QListWidget(this)),
+      m_validated(new QLabel(this)), m_sinceValidation(new QLabel(this)),
+      m_protection(new QLabel(this)), m_form(new QFormLayout), m_libraries(new QListWidget(this)),
       m_addStandard(new QPushButton(tr("Add &Standard Library"), this)),
       m_addUser(new QPushButton(tr("Add &User Library..."), this)),
       m_remove(new QPushButton(tr("&Remove Library"), this)) {
@@ -73,8 +73,10 @@ ProjectPage::ProjectPage(QWidget* parent)
     });
     connect(m_addUser, &QPushButton::clicked, this, &ProjectPage::addUserLibrary);
     connect(m_remove, &QPushButton::clicked, this, &ProjectPage::removeLibrary);
-    connect(m_libraries, &QListWidget::currentRowChanged, this,
-            [this](int row) { m_remove->setEnabled(row >= 0); });
+    connect(m_libraries, &QListWidget::currentRowChanged, this, [this](int row) {
+        m_remove->setEnabled(row >= 0 && m_document &&
+                             m_document->permission() == project::Permission::Full);
+    });
     m_name->setObjectName(QStringLiteral("projectNameEdit"));
     m_description->setObjectName(QStringLiteral("projectDescriptionEdit"));
     m_description->setTabChangesFocus(true);
@@ -101,6 +103,10 @@ ProjectPage::ProjectPage(QWidget* parent)
     m_sinceValidation->setObjectName(QStringLiteral("sinceValidationLabel"));
     m_sinceValidation->setTextInteractionFlags(Qt::TextSelectableByMouse);
     form->addRow(tr("Since then:"), m_sinceValidation);
+    m_protection->setObjectName(QStringLiteral("protectionLabel"));
+    m_protection->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Two lines of their own: a wrapping label in a form row is given one line's height.
+    form->addRow(tr("Protection:"), m_protection);
     auto* libraryButtons = new QHBoxLayout;
     libraryButtons->addWidget(m_addStandard);
     libraryButtons->addWidget(m_addUser);
@@ -155,6 +161,7 @@ void ProjectPage::showProject(ProjectDocument* document) {
     connect(m_compile, &SettledCompile::computed, this, &ProjectPage::refreshSinceValidation);
     connect(document, &ProjectDocument::changed, this, &ProjectPage::refresh);
     connect(document, &ProjectDocument::pathChanged, this, &ProjectPage::refresh);
+    connect(document, &ProjectDocument::permissionChanged, this, &ProjectPage::refresh);
     refresh();
 }
 
@@ -188,9 +195,51 @@ void ProjectPage::refresh() {
     } else {
         m_validated->setText(tr("not yet (Project > Mark as Validated)"));
     }
+    const bool editable = m_document->permission() == project::Permission::Full;
+    m_name->setReadOnly(!editable);
+    m_description->setReadOnly(!editable);
+    m_includeSource->setEnabled(editable);
+    m_addStandard->setEnabled(editable);
+    m_addUser->setEnabled(editable);
     refreshSinceValidation();
+    refreshProtection();
     refreshLibraries();
     m_refreshing = false;
+}
+
+void ProjectPage::refreshProtection() {
+    const project::Project& p = m_document->project();
+    if (const auto& tampering = m_document->tampering()) {
+        m_protection->setText(tr("changed outside Rungsmith after it was password protected "
+                                 "(first at line %1): open read only")
+                                  .arg(tampering->line));
+        m_protection->setToolTip({});
+        markAsError(m_protection);
+        return;
+    }
+    m_protection->setPalette(QPalette()); // as the page's
+    if (!p.protection) {
+        m_protection->setText(tr("none (File > Password Protect)"));
+        m_protection->setToolTip({});
+        return;
+    }
+    // The key tells one protection from another: who relies on the file keeps it to compare.
+    const QString key = QString::fromStdString(p.protection->key);
+    QStringList groups;
+    for (int i = 0; i < 16; i += 4)
+        groups << key.mid(i, 4);
+    const QString options =
+        p.protection->options == project::OptionsAccess::Main   ? tr("only with the main password")
+        : p.protection->options == project::OptionsAccess::Free ? tr("without a password")
+                                                                : tr("with their own password");
+    const project::Permission permission = m_document->permission();
+    const QString open = permission == project::Permission::Full ? tr("with full permission")
+                         : permission == project::Permission::Configure
+                             ? tr("with permission to configure")
+                             : tr("read only");
+    m_protection->setText(tr("password protected, key %1 …\nConfig Options change %2; opened %3")
+                              .arg(groups.join(QLatin1Char(' ')), options, open));
+    m_protection->setToolTip(tr("The protection's public key: %1").arg(key));
 }
 
 void ProjectPage::refreshSinceValidation() {
@@ -260,7 +309,8 @@ void ProjectPage::refreshLibraries() {
     }
     if (!p.libraries.empty())
         m_libraries->setCurrentRow(std::min(std::max(row, 0), m_libraries->count() - 1));
-    m_remove->setEnabled(!p.libraries.empty() && m_libraries->currentRow() >= 0);
+    m_remove->setEnabled(!p.libraries.empty() && m_libraries->currentRow() >= 0 &&
+                         m_document->permission() == project::Permission::Full);
 }
 
 void ProjectPage::addLibrary(const QString& entry) {

@@ -38,6 +38,7 @@ private:
     void refreshLibraries();
     // What changed since validation, as the document's SettledCompile found it.
     void refreshSinceValidation();
+    void refreshProtection();
     void addLibrary(const QString& entry);
     void addUserLibrary();
     void removeLibrary();
@@ -52,6 +53,7 @@ private:
     SignatureLabel* m_signature;
     QLabel* m_validated;
     QLabel* m_sinceValidation;
+    QLabel* m_protection;
     QFormLayout* m_form;
     QListWidget* m_libraries;
     QPushButton* m_addStandard;

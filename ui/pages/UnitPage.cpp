@@ -102,6 +102,7 @@ void UnitPage::showUnit(ProjectDocument* document, int station) {
     if (!document)
         return;
     connect(document, &ProjectDocument::changed, this, &UnitPage::refresh);
+    connect(document, &ProjectDocument::permissionChanged, this, &UnitPage::refresh);
     refresh();
 }
 
@@ -131,7 +132,9 @@ void UnitPage::refresh() {
     m_remanent->setText(!type.remanent     ? tr("this type has none")
                         : remanent.empty() ? tr("none")
                                            : QString::fromStdString(remanent));
-    m_remanentButton->setEnabled(type.remanent);
+    const bool editable = m_document->permission() == project::Permission::Full;
+    m_form->setEnabled(editable);
+    m_remanentButton->setEnabled(type.remanent && editable);
     const blocks::UnitResources resources = blocks::unitResources(p, m_station);
     m_timers->setText(resourceText(resources.timers));
     m_memories->setText(resourceText(resources.memories));

@@ -130,9 +130,22 @@ void VariablesPage::showUnit(ProjectDocument* document, int station) {
     m_document = document;
     m_station = station;
     m_groups.clear();
-    if (document)
+    if (document) {
         connect(document, &ProjectDocument::changed, this, &VariablesPage::refresh);
+        connect(document, &ProjectDocument::permissionChanged, this,
+                &VariablesPage::updateEditTriggers);
+    }
+    updateEditTriggers();
     refresh();
+}
+
+void VariablesPage::updateEditTriggers() {
+    // While simulating, a double click or a key acts on the simulation, not
+    // on the project (an edit would end the simulation); a project open
+    // without full permission takes no names or descriptions.
+    const bool editable =
+        !m_simulating && m_document && m_document->permission() == project::Permission::Full;
+    m_table->setEditTriggers(editable ? kEditTriggers : QAbstractItemView::NoEditTriggers);
 }
 
 void VariablesPage::refresh() {
@@ -183,9 +196,8 @@ void VariablesPage::showGroup(int tab) {
 
 void VariablesPage::setSimulation(const sim::Simulation* simulation) {
     m_model->setSimulation(simulation);
-    // While simulating, a double click or a key acts on the simulation, not
-    // on the project (an edit would end the simulation).
-    m_table->setEditTriggers(simulation ? QAbstractItemView::NoEditTriggers : kEditTriggers);
+    m_simulating = simulation != nullptr;
+    updateEditTriggers();
     // Room for a value and its force mark while simulating; the icon needs less.
     m_table->horizontalHeader()->resizeSection(VariableTableModel::StatusColumn,
                                                simulation ? 80 : 56);

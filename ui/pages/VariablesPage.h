@@ -65,6 +65,7 @@ signals:
 
 private:
     void refresh();
+    void updateEditTriggers();
     void showGroup(int tab);
     void showMessage(const QString& message);
     void showContextMenu(const QPoint& at);
@@ -74,6 +75,7 @@ private:
     PageTitle* m_title;
     QTabBar* m_tabs;
     QLineEdit* m_filter;
+    bool m_simulating = false;
     QTableView* m_table;
     QLabel* m_message;
     QLabel* m_exports;

@@ -6,6 +6,8 @@
 #include "document/ProjectDocument.h"
 #include "document/ProtectedOpenDialog.h"
 #include "ladder/LadderPage.h"
+#include "pages/IoOptionsPage.h"
+#include "pages/VariablesPage.h"
 #include "project/ProjectFile.h"
 #include "project/ProtectedText.h"
 #include "text/ProgramEditor.h"
@@ -13,6 +15,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -20,6 +23,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSignalSpy>
+#include <QTableView>
 #include <QToolBar>
 
 #include <gtest/gtest.h>
@@ -104,6 +108,25 @@ TEST_F(PasswordProtectionTest, ProtectReopenWithEachPermissionAndRemove) {
     EXPECT_EQ(refused.count(), 2);
     EXPECT_EQ(document()->undoStack()->count(), 0);
     EXPECT_FALSE(action("protectAction")->isEnabled());
+    // The project page says so, with the start of the key to compare.
+    ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::Project, 0));
+    const QString protection = window.findChild<QLabel*>(QStringLiteral("protectionLabel"))->text();
+    const QString key = QString::fromStdString(document()->project().protection->key);
+    EXPECT_TRUE(protection.contains(key.left(4) + QLatin1Char(' ') + key.mid(4, 4)))
+        << protection.toStdString();
+    EXPECT_TRUE(protection.contains(QStringLiteral("opened read only")))
+        << protection.toStdString();
+    // No page offers an edit: its fields show, and stay as they are.
+    EXPECT_TRUE(window.findChild<QLineEdit*>(QStringLiteral("projectNameEdit"))->isReadOnly());
+    ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::Unit, 0));
+    EXPECT_FALSE(window.findChild<QComboBox*>(QStringLiteral("typeCombo"))->isEnabled());
+    ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::Variables, 0));
+    EXPECT_EQ(window.findChild<rs::ui::VariablesPage*>()->table()->editTriggers(),
+              QAbstractItemView::NoEditTriggers);
+    ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::IoOptions, 0));
+    const auto boxes = window.findChild<rs::ui::IoOptionsPage*>()->findChildren<QComboBox*>();
+    ASSERT_FALSE(boxes.isEmpty());
+    EXPECT_FALSE(boxes.front()->isEnabled());
     ASSERT_TRUE(window.showUnit(0));
     EXPECT_TRUE(window.findChild<rs::ui::TextPage*>()->editor()->isReadOnly());
     closeProject();
@@ -192,6 +215,10 @@ TEST_F(PasswordProtectionTest, AFileEditedByHandIsReportedAtItsLineAndOpensReadO
         << answerer.informativeText().toStdString();
     EXPECT_EQ(document()->permission(), Permission::ReadOnly);
     EXPECT_FALSE(editText(document(), "Q0.3 = I0.7", "Q0.3 = I0.1"));
+    ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::Project, 0));
+    EXPECT_TRUE(window.findChild<QLabel*>(QStringLiteral("protectionLabel"))
+                    ->text()
+                    .contains(QStringLiteral("(first at line %1)").arg(line)));
 }
 
 } // namespace
