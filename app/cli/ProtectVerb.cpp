@@ -5,6 +5,7 @@
 #include "ProtectedWriting.h"
 #include "Verbs.h"
 #include "project/ProjectFile.h"
+#include "project/ProtectedText.h"
 
 #include <cstdio>
 
@@ -39,9 +40,17 @@ int runProtect(const Invocation& invocation) {
             "--options own takes --options-password-file, and only --options own takes it"));
 
     const QString path = invocation.arguments[0];
-    const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
+    LoadedProject loaded = loadProject(path, libraryFiles(invocation));
     if (loaded.status != Ok)
         return loaded.status;
+    // A change made by hand (a merge in version control, say) is taken as the
+    // password's holder's once they have looked at it and say so; the
+    // password below must still open the record as it stands.
+    if (invocation.options.isSet(QStringLiteral("accept-changes")))
+        if (const auto tampering = project::verifyProjectText(loaded.text))
+            std::erase_if(loaded.diagnostics, [&](const lang::Diagnostic& d) {
+                return d.line == tampering->line && d.message == tampering->message;
+            });
     printDiagnostics(path, loaded.diagnostics);
     if (!loaded.ok())
         return Failed;

@@ -110,7 +110,7 @@ const rs::cli::Verb kVerbs[] = {
      rs::cli::runMerge},
     {"protect",
      "protect FILE.sps -o OUT.sps --password-file F [--options main|free|own]\n"
-     "        [--options-password-file G] [--remove]\n"
+     "        [--options-password-file G] [--remove] [--accept-changes]\n"
      "                                 password protect the project (the manual's 4.1): it\n"
      "                                 reads freely, and writes only with the password",
      rs::cli::runProtect},
@@ -197,6 +197,9 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("main|free|own")});
     parser.addOption(
         {QStringLiteral("remove"), QStringLiteral("protect: take the password protection off.")});
+    parser.addOption({QStringLiteral("accept-changes"),
+                      QStringLiteral("protect: take a change made by hand since the project was "
+                                     "protected as the password holder's, once reviewed.")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

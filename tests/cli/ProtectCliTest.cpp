@@ -134,3 +134,31 @@ TEST(ProtectCli, OwnOptionsPasswordAndRemoval) {
 }
 
 } // namespace
+
+namespace {
+
+// A change made by hand (a merge, say) is refused until the password's holder
+// accepts it; then the file reads cleanly again.
+TEST(ProtectCli, AHandChangeIsAcceptedOnlyWithTheMainPasswordAndTheFlag) {
+    QTemporaryDir dir;
+    const Protected press = protectedPress(dir);
+    QByteArray text = readFile(press.path);
+    text.replace("Q0.3 = I0.1", "Q0.3 = I0.1 * I0.4");
+    const QString edited = writeFile(dir, "edited.sps", text);
+    const QString out = dir.filePath("accepted.sps");
+    EXPECT_EQ(runCli({"protect", edited, "-o", out, "--password-file", press.password}).exitCode,
+              1);
+    EXPECT_FALSE(QFile::exists(out));
+    const QString wrong = writeFile(dir, "wrong.txt", "not it\n");
+    EXPECT_EQ(runCli({"protect", edited, "-o", out, "--password-file", wrong, "--accept-changes"})
+                  .exitCode,
+              1);
+    EXPECT_FALSE(QFile::exists(out));
+    const auto accepted = runCli(
+        {"protect", edited, "-o", out, "--password-file", press.password, "--accept-changes"});
+    ASSERT_EQ(accepted.exitCode, 0) << accepted.errText().toStdString();
+    EXPECT_EQ(runCli({"check", out}).exitCode, 0);
+    EXPECT_TRUE(readFile(out).contains("Q0.3 = I0.1 * I0.4"));
+}
+
+} // namespace
