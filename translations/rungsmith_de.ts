@@ -1810,10 +1810,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>„%1“ wurde außerhalb von Rungsmith geändert, nachdem es mit einem Passwort geschützt wurde.</translation>
     </message>
     <message>
-        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
-        <translation>Die erste Änderung steht in Zeile %1: Die Signatur, die das Passwort erzeugt hat, deckt sie nicht. Das Projekt wird schreibgeschützt geöffnet; der Schutz macht Änderungen sichtbar, ist aber kein Schloss, und die Datei bleibt lesbarer Text.</translation>
-    </message>
-    <message>
         <source>Password Protect</source>
         <translation>Passwortschutz</translation>
     </message>
@@ -1828,6 +1824,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>The password protection is off once the project is saved.</source>
         <translation>Der Passwortschutz ist aufgehoben, sobald das Projekt gespeichert ist.</translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text. The holder of the main password can accept the change once it is reviewed.</source>
+        <translation>Die erste Änderung steht in Zeile %1: Die Signatur, die das Passwort erzeugt hat, deckt sie nicht. Das Projekt wird schreibgeschützt geöffnet; der Schutz macht Änderungen sichtbar, ist aber kein Schloss, und die Datei bleibt lesbarer Text. Wer das Hauptpasswort hat, kann die Änderung nach der Prüfung annehmen.</translation>
+    </message>
+    <message>
+        <source>Open &amp;Read Only</source>
+        <translation>&amp;Schreibgeschützt öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Accept the Change...</source>
+        <translation>Änderung &amp;annehmen …</translation>
     </message>
 </context>
 <context>
@@ -3824,6 +3832,10 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
             <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunde erneut.</numerusform>
             <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunden erneut.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation>Änderung annehmen</translation>
     </message>
 </context>
 </TS>

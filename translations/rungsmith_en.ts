@@ -1840,10 +1840,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Password Protect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1857,6 +1853,18 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>The password protection is off once the project is saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text. The holder of the main password can accept the change once it is reviewed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Read Only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Accept the Change...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3822,6 +3830,10 @@ Config Options change %2; opened %3</source>
             <numerusform>The password does not open the project with this permission. Try again in %n second.</numerusform>
             <numerusform>The password does not open the project with this permission. Try again in %n seconds.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

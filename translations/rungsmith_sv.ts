@@ -1810,10 +1810,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>”%1” har ändrats utanför Rungsmith efter att det lösenordsskyddades.</translation>
     </message>
     <message>
-        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text.</source>
-        <translation>Den första ändringen finns på rad %1: signaturen som lösenordet gjorde täcker den inte. Projektet öppnas skrivskyddat; skyddet visar ändringar men låser inget, och filen förblir läsbar text.</translation>
-    </message>
-    <message>
         <source>Password Protect</source>
         <translation>Lösenordsskydda</translation>
     </message>
@@ -1828,6 +1824,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>The password protection is off once the project is saved.</source>
         <translation>Lösenordsskyddet är borta när projektet har sparats.</translation>
+    </message>
+    <message>
+        <source>The first change is at line %1: the signature the password made does not cover it. The project opens read only; its protection is evidence of changes, not a lock, and the file stays readable text. The holder of the main password can accept the change once it is reviewed.</source>
+        <translation>Den första ändringen finns på rad %1: signaturen som lösenordet gjorde täcker den inte. Projektet öppnas skrivskyddat; skyddet visar ändringar men låser inget, och filen förblir läsbar text. Den som har huvudlösenordet kan godta ändringen när den är granskad.</translation>
+    </message>
+    <message>
+        <source>Open &amp;Read Only</source>
+        <translation>Öppna &amp;skrivskyddat</translation>
+    </message>
+    <message>
+        <source>&amp;Accept the Change...</source>
+        <translation>&amp;Godta ändringen …</translation>
     </message>
 </context>
 <context>
@@ -3824,6 +3832,10 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
             <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekund.</numerusform>
             <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekunder.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation>Godta ändringen</translation>
     </message>
 </context>
 </TS>

@@ -202,13 +202,23 @@ bool OpenProjects::askPermission(ProjectDocument* document) {
         QMessageBox box(QMessageBox::Warning, tr("Open Project"),
                         tr("“%1” was changed outside Rungsmith after it was password protected.")
                             .arg(document->displayName()),
-                        QMessageBox::Ok, m_window);
+                        QMessageBox::No | QMessageBox::Yes, m_window);
         box.setInformativeText(
             tr("The first change is at line %1: the signature the password made does not cover "
                "it. The project opens read only; its protection is evidence of changes, not a "
-               "lock, and the file stays readable text.")
+               "lock, and the file stays readable text. The holder of the main password can "
+               "accept the change once it is reviewed.")
                 .arg(tampering->line));
-        box.exec();
+        box.button(QMessageBox::No)->setText(tr("Open &Read Only"));
+        box.button(QMessageBox::Yes)->setText(tr("&Accept the Change..."));
+        box.setDefaultButton(QMessageBox::No);
+        if (box.exec() != QMessageBox::Yes || !document->project().protection)
+            return true;
+        ProtectedOpenDialog dialog(document->displayName(), *document->project().protection,
+                                   m_window);
+        dialog.askForFullPermissionOnly();
+        if (dialog.exec() == QDialog::Accepted)
+            document->acceptTampering(dialog.keys());
         return true;
     }
     if (!document->project().protection)

@@ -168,6 +168,13 @@ void ProjectDocument::setPermission(project::Permission permission, const projec
     emit permissionChanged();
 }
 
+void ProjectDocument::acceptTampering(const project::Keyring& keys) {
+    m_tampering.reset();
+    m_modifiedWithoutUndo = true;
+    setPermission(project::Permission::Full, keys);
+    emitModification();
+}
+
 void ProjectDocument::addKeys(const project::Keyring& keys) {
     m_keys.add(keys);
 }

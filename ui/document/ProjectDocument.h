@@ -63,6 +63,9 @@ public:
     // A protected file changed outside Rungsmith: where, as reading it found.
     // Such a file opens read only.
     const std::optional<lang::Diagnostic>& tampering() const { return m_tampering; }
+    // The holder of the main password takes such a change as theirs: full
+    // permission, and saving seals the file again.
+    void acceptTampering(const project::Keyring& keys);
 
     // Called by the undo commands.
     void applyChange(const project::ProjectChange& change, bool forward);

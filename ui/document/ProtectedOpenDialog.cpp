@@ -75,6 +75,14 @@ ProtectedOpenDialog::ProtectedOpenDialog(const QString& fileName,
     updateFields();
 }
 
+void ProtectedOpenDialog::askForFullPermissionOnly() {
+    setWindowTitle(tr("Accept the Change"));
+    m_full->setChecked(true);
+    m_configure->setEnabled(false);
+    m_readOnly->setEnabled(false);
+    updateFields();
+}
+
 project::Permission ProtectedOpenDialog::chosen() const {
     if (m_full->isChecked())
         return project::Permission::Full;

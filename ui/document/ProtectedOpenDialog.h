@@ -27,6 +27,8 @@ public:
 
     ProtectedOpenDialog(const QString& fileName, const project::Protection& protection,
                         QWidget* parent = nullptr);
+    // Offers full permission alone: accepting a change made outside Rungsmith.
+    void askForFullPermissionOnly();
 
     project::Permission permission() const { return m_permission; }
     const project::Keyring& keys() const { return m_keys; }

@@ -222,3 +222,39 @@ TEST_F(PasswordProtectionTest, AFileEditedByHandIsReportedAtItsLineAndOpensReadO
 }
 
 } // namespace
+
+namespace {
+
+// The main password's holder can take a reviewed hand change as theirs: the
+// project opens with full permission and saving seals it again.
+TEST_F(PasswordProtectionTest, TheMainPasswordAcceptsAHandChange) {
+    rs::project::Project project = rs::project::readProject(kPress.toStdString()).project;
+    rs::project::NewProtection fresh =
+        rs::project::protectWith(kMain.toStdString(), rs::project::OptionsAccess::Main, "");
+    project.protection = fresh.record;
+    QByteArray text = QByteArray::fromStdString(
+        rs::project::sealProjectText(rs::project::writeProject(project), fresh.keys));
+    text.replace("Q0.3 = I0.1", "Q0.3 = I0.1 * I0.4");
+    const QString path = writeFile(QStringLiteral("press.sps"), text);
+    bool onlyFull = false;
+    DialogDriver driver(
+        {[](QDialog& dialog) {
+             auto& box = static_cast<QMessageBox&>(dialog);
+             box.button(QMessageBox::Yes)->click();
+         },
+         [&](QDialog& dialog) {
+             onlyFull = !dialog.findChild<QRadioButton*>(QStringLiteral("readOnly"))->isEnabled();
+             dialog.findChild<QLineEdit*>(QStringLiteral("password"))->setText(kMain);
+             dialog.accept();
+         }});
+    ASSERT_TRUE(openFile(path));
+    EXPECT_EQ(driver.handled(), 2);
+    EXPECT_TRUE(onlyFull);
+    EXPECT_EQ(document()->permission(), Permission::Full);
+    EXPECT_FALSE(document()->tampering().has_value());
+    action("saveAction")->trigger();
+    EXPECT_EQ(rs::project::verifyProjectText(readFile(path).toStdString()), std::nullopt);
+    EXPECT_TRUE(readFile(path).contains("Q0.3 = I0.1 * I0.4"));
+}
+
+} // namespace
