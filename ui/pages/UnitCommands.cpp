@@ -66,12 +66,14 @@ void UnitCommands::updateActions(const PageRef& current) {
     const bool healthy = document && !document->isDamaged();
     const bool inUnit = healthy && current.station >= 0 &&
                         project::unitSettings(document->project(), current.station).has_value();
-    m_actions.newUnit->setEnabled(healthy && !project::freeStations(document->project()).empty());
-    m_actions.newSequence->setEnabled(inUnit);
-    m_actions.removeUnit->setEnabled(inUnit);
+    // Password protected without full permission: what changes the project is not offered.
+    const bool writable = healthy && document->permission() == project::Permission::Full;
+    m_actions.newUnit->setEnabled(writable && !project::freeStations(document->project()).empty());
+    m_actions.newSequence->setEnabled(inUnit && writable);
+    m_actions.removeUnit->setEnabled(inUnit && writable);
     m_actions.remanent->setEnabled(
-        inUnit && project::unitTypeOf(document->project(), current.station).remanent);
-    m_actions.importCsv->setEnabled(inUnit);
+        inUnit && writable && project::unitTypeOf(document->project(), current.station).remanent);
+    m_actions.importCsv->setEnabled(inUnit && writable);
     m_actions.exportCsv->setEnabled(inUnit);
 }
 

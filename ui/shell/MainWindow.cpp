@@ -622,8 +622,10 @@ void MainWindow::updateActions() {
     shown.document = document;
     m_units->updateActions(shown);
     m_compileAction->setEnabled(document != nullptr && !isCompiling());
-    m_formatAction->setEnabled(onText);
-    m_markValidatedAction->setEnabled(document != nullptr && !document->isDamaged());
+    const bool writable =
+        document != nullptr && document->permission() == project::Permission::Full;
+    m_formatAction->setEnabled(onText && writable);
+    m_markValidatedAction->setEnabled(writable && !document->isDamaged());
     m_compareAction->setEnabled(document != nullptr && !document->isDamaged());
     m_compareValidatedAction->setEnabled(document != nullptr && !document->isDamaged() &&
                                          document->project().baseline.has_value());

@@ -108,6 +108,8 @@ TEST_F(PasswordProtectionTest, ProtectReopenWithEachPermissionAndRemove) {
     EXPECT_EQ(refused.count(), 2);
     EXPECT_EQ(document()->undoStack()->count(), 0);
     EXPECT_FALSE(action("protectAction")->isEnabled());
+    EXPECT_FALSE(action("markValidatedAction")->isEnabled());
+    EXPECT_FALSE(action("newUnitAction")->isEnabled());
     // The project page says so, with the start of the key to compare.
     ASSERT_TRUE(window.showPage(rs::ui::PageRef::Kind::Project, 0));
     const QString protection = window.findChild<QLabel*>(QStringLiteral("protectionLabel"))->text();
