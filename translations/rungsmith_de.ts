@@ -1317,10 +1317,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Kopieren: vor oder nach einem Element ablegen. Umschalt halten zum Verschieben.</translation>
     </message>
     <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
-    </message>
-    <message>
         <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
         <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Ein Klick oder %1 auf das Kästchen einer Konfigurationsoption setzt oder löscht es; sonst kann sich nichts ändern.</translation>
     </message>
@@ -2603,14 +2599,6 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
         <source>Show this code as ladder networks</source>
         <translation>Diesen Code als Kontaktplan-Netzwerke zeigen</translation>
     </message>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
-        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
-    </message>
 </context>
 <context>
     <name>rs::ui::UnitCommands</name>
@@ -3836,6 +3824,17 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>Accept the Change</source>
         <translation>Änderung annehmen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
     </message>
 </context>
 </TS>

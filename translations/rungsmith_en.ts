@@ -1347,10 +1347,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2601,14 +2597,6 @@ Config Options change %2; opened %3</source>
         <source>Show this code as ladder networks</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>rs::ui::UnitCommands</name>
@@ -3833,6 +3821,17 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>Accept the Change</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

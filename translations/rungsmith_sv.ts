@@ -1317,10 +1317,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Kopierar: släpp det före eller efter ett element. Håll ned Skift för att flytta.</translation>
     </message>
     <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
-    </message>
-    <message>
         <source>Password protected, open with permission to configure: a click or %1 on a Config Option&apos;s box checks or unchecks it; nothing else can change.</source>
         <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: ett klick eller %1 på ett konfigurationsalternativs ruta markerar eller avmarkerar det; inget annat kan ändras.</translation>
     </message>
@@ -2603,14 +2599,6 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
         <source>Show this code as ladder networks</source>
         <translation>Visa koden som stegdiagramnätverk</translation>
     </message>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
-        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
-    </message>
 </context>
 <context>
     <name>rs::ui::UnitCommands</name>
@@ -3836,6 +3824,17 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>Accept the Change</source>
         <translation>Godta ändringen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
     </message>
 </context>
 </TS>

@@ -10,6 +10,7 @@
 #include "NetworkEditTool.h"
 #include "NetworkItem.h"
 #include "StepHeaderItem.h"
+#include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
 #include "output/SettledCompile.h"
@@ -263,7 +264,7 @@ void LadderPage::updateTitle() {
     const project::Permission permission = m_document->permission();
     m_toolBar->setVisible(permission == project::Permission::Full);
     if (permission == project::Permission::ReadOnly) {
-        m_title->setSubtitle(tr("Password protected, open read only: nothing can change."));
+        m_title->setSubtitle(permissionNote(permission));
         return;
     }
     if (permission == project::Permission::Configure) {

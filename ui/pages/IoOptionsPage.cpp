@@ -2,6 +2,7 @@
 #include "pages/IoOptionsPage.h"
 
 #include "blocks/InstanceVariables.h"
+#include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "pages/InstanceVariableText.h"
 #include "project/UnitSettings.h"
@@ -224,8 +225,11 @@ void IoOptionsPage::refresh() {
     if (!project::unitSettings(p, m_station))
         return;
     m_title->setTitle(tr("%1 — I/O Options").arg(unitCaption(p, m_station)));
-    m_title->setSubtitle(tr("Choose from the lists what each terminal is wired for; "
-                            "combinations the unit cannot take are not offered."));
+    const QString note = permissionNote(m_document->permission());
+    m_title->setSubtitle(note.isEmpty()
+                             ? tr("Choose from the lists what each terminal is wired for; "
+                                  "combinations the unit cannot take are not offered.")
+                             : note);
     if (m_builtType != static_cast<int>(project::unitTypeOf(p, m_station).type))
         rebuild();
     m_filling = true;

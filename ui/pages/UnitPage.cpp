@@ -2,6 +2,7 @@
 #include "pages/UnitPage.h"
 
 #include "blocks/UnitResources.h"
+#include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "pages/SignatureLabel.h"
 #include "pages/UnitSettingsForm.h"
@@ -114,8 +115,10 @@ void UnitPage::refresh() {
     if (!unit)
         return;
     m_title->setTitle(unitCaption(*unit));
+    const QString note = permissionNote(m_document->permission());
     m_title->setSubtitle(
-        tr("Station %1 of project %2").arg(m_station).arg(QString::fromStdString(p.name())));
+        tr("Station %1 of project %2").arg(m_station).arg(QString::fromStdString(p.name())) +
+        (note.isEmpty() ? QString() : QStringLiteral(" — ") + note));
     m_undeclared->setVisible(!unit->declared);
     m_form->setSettings(*unit, project::freeStations(p), true);
     if (unit->instructionSet < 3)

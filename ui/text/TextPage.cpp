@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "text/TextPage.h"
 
+#include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "project/ProjectFile.h"
 #include "project/UnitText.h"
@@ -101,10 +102,7 @@ void TextPage::updateTitle() {
     const bool readOnly = m_document->permission() != project::Permission::Full;
     m_editor->setReadOnly(readOnly);
     if (readOnly)
-        m_title->setSubtitle(m_document->permission() == project::Permission::ReadOnly
-                                 ? tr("Password protected, open read only: nothing can change.")
-                                 : tr("Password protected, open with permission to configure: "
-                                      "only Config Options can change, on the ladder."));
+        m_title->setSubtitle(permissionNote(m_document->permission()));
 }
 
 bool TextPage::showSequence(int sequence) {
