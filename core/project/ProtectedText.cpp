@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProtectedText.h"
 
+#include "ProjectFile.h"
+
 #include <sodium.h>
 
 #include <regex>
@@ -165,6 +167,10 @@ lang::Diagnostic errorAt(std::size_t line, std::string message) {
 
 std::string withoutOptionStates(std::string_view text) {
     return mask(splitLines(text), text.ends_with('\n')).text;
+}
+
+bool changesOnlyOptions(const Project& before, const Project& after) {
+    return withoutOptionStates(writeProject(before)) == withoutOptionStates(writeProject(after));
 }
 
 std::string sealProjectText(std::string_view text, const Keyring& keys) {

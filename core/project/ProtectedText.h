@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "Project.h"
 #include "ProtectionKeys.h"
 #include "lang/Diagnostic.h"
 
@@ -19,6 +20,10 @@ namespace rs::project {
 // option="on|off" directly followed by its S(...) or R(...) alone on a line):
 // two texts whose masks are equal differ in their options' states only.
 std::string withoutOptionStates(std::string_view text);
+
+// Whether `after` differs from `before` in its Config Options' states alone
+// (or not at all): what permission to configure may change.
+bool changesOnlyOptions(const Project& before, const Project& after);
 
 // The text with its ;@protected record (as writeProject writes it) sealed: its
 // line digest and signatures made by the keys held. Without the main key the

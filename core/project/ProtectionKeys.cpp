@@ -5,6 +5,7 @@
 
 #include <sodium.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace rs::project {
@@ -137,6 +138,10 @@ NewProtection protectWith(std::string_view mainPassword, OptionsAccess options,
         result.keys.add(own);
     }
     return result;
+}
+
+int waitAfterRefusal(int refusals) {
+    return refusals <= 0 ? 0 : std::min(30, 1 << std::min(refusals - 1, 5));
 }
 
 bool needsPassword(const Protection& protection, Permission permission) {

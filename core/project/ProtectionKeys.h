@@ -68,6 +68,10 @@ NewProtection protectWith(std::string_view mainPassword, OptionsAccess options,
 std::optional<Keyring> unlock(const Protection& protection, Permission permission,
                               std::string_view password);
 
+// Seconds the n-th wrong password in a row makes the user wait before the
+// next try: 1, 2, 4 ... up to 30.
+int waitAfterRefusal(int refusals);
+
 // Whether a permission needs a password at all.
 bool needsPassword(const Protection& protection, Permission permission);
 

@@ -96,8 +96,7 @@ bool ProjectDocument::replace(const QString& text, const project::Project& after
         return false;
     }
     if (m_permission == project::Permission::Configure &&
-        project::withoutOptionStates(project::writeProject(m_project)) !=
-            project::withoutOptionStates(project::writeProject(after))) {
+        !project::changesOnlyOptions(m_project, after)) {
         refuse(tr("The project is open with permission to configure: only its Config Options "
                   "can change."));
         return false;

@@ -12,13 +12,7 @@
 #include <QRadioButton>
 #include <QVBoxLayout>
 
-#include <algorithm>
-
 namespace rs::ui {
-
-int ProtectedOpenDialog::waitAfterRefusal(int refusals) {
-    return refusals <= 0 ? 0 : std::min(30, 1 << std::min(refusals - 1, 5));
-}
 
 ProtectedOpenDialog::ProtectedOpenDialog(const QString& fileName,
                                          const project::Protection& protection, QWidget* parent)
@@ -123,7 +117,7 @@ void ProtectedOpenDialog::accept() {
     QApplication::restoreOverrideCursor();
     if (!keys) {
         m_password->selectAll();
-        m_secondsLeft = waitAfterRefusal(++m_refusals) + 1;
+        m_secondsLeft = project::waitAfterRefusal(++m_refusals) + 1;
         m_wait.start();
         tick();
         return;

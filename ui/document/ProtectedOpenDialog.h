@@ -22,9 +22,6 @@ namespace rs::ui {
 class ProtectedOpenDialog : public QDialog {
     Q_OBJECT
 public:
-    // Seconds the n-th refusal makes the user wait: 1, 2, 4 ... up to 30.
-    static int waitAfterRefusal(int refusals);
-
     ProtectedOpenDialog(const QString& fileName, const project::Protection& protection,
                         QWidget* parent = nullptr);
     // Offers full permission alone: accepting a change made outside Rungsmith.

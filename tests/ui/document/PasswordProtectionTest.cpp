@@ -4,7 +4,6 @@
 #include "DialogDriver.h"
 #include "MessageBoxAnswerer.h"
 #include "document/ProjectDocument.h"
-#include "document/ProtectedOpenDialog.h"
 #include "ladder/LadderPage.h"
 #include "pages/IoOptionsPage.h"
 #include "pages/VariablesPage.h"
@@ -49,6 +48,15 @@ const QByteArray kPress = "$name Press\n"
 
 const QString kMain = QStringLiteral("Kärnan 7 main");
 const QString kOptions = QStringLiteral("options 12");
+
+// kPress protected with the main password kMain, as a saved file holds it.
+QByteArray sealedPress(rs::project::OptionsAccess options) {
+    rs::project::Project project = rs::project::readProject(kPress.toStdString()).project;
+    rs::project::NewProtection fresh = rs::project::protectWith(kMain.toStdString(), options, "");
+    project.protection = fresh.record;
+    return QByteArray::fromStdString(
+        rs::project::sealProjectText(rs::project::writeProject(project), fresh.keys));
+}
 
 // The current project with `from` replaced by `to` in its text, as an edit would make it.
 bool editText(ProjectDocument* document, const std::string& from, const std::string& to) {
@@ -166,16 +174,11 @@ TEST_F(PasswordProtectionTest, ProtectReopenWithEachPermissionAndRemove) {
 }
 
 TEST_F(PasswordProtectionTest, AWrongPasswordIsRefusedWithoutSayingWhichExistsAndWaits) {
-    EXPECT_EQ(rs::ui::ProtectedOpenDialog::waitAfterRefusal(1), 1);
-    EXPECT_EQ(rs::ui::ProtectedOpenDialog::waitAfterRefusal(3), 4);
-    EXPECT_EQ(rs::ui::ProtectedOpenDialog::waitAfterRefusal(9), 30);
-    rs::project::Project project = rs::project::readProject(kPress.toStdString()).project;
-    rs::project::NewProtection fresh =
-        rs::project::protectWith(kMain.toStdString(), rs::project::OptionsAccess::Main, "");
-    project.protection = fresh.record;
-    const QString path = writeFile(QStringLiteral("press.sps"),
-                                   QByteArray::fromStdString(rs::project::sealProjectText(
-                                       rs::project::writeProject(project), fresh.keys)));
+    EXPECT_EQ(rs::project::waitAfterRefusal(1), 1);
+    EXPECT_EQ(rs::project::waitAfterRefusal(3), 4);
+    EXPECT_EQ(rs::project::waitAfterRefusal(9), 30);
+    const QString path =
+        writeFile(QStringLiteral("press.sps"), sealedPress(rs::project::OptionsAccess::Main));
     QString problem;
     bool okWaits = false;
     DialogDriver driver({[&](QDialog& dialog) {
@@ -200,12 +203,7 @@ TEST_F(PasswordProtectionTest, AWrongPasswordIsRefusedWithoutSayingWhichExistsAn
 }
 
 TEST_F(PasswordProtectionTest, AFileEditedByHandIsReportedAtItsLineAndOpensReadOnly) {
-    rs::project::Project project = rs::project::readProject(kPress.toStdString()).project;
-    rs::project::NewProtection fresh =
-        rs::project::protectWith(kMain.toStdString(), rs::project::OptionsAccess::Free, "");
-    project.protection = fresh.record;
-    QByteArray text = QByteArray::fromStdString(
-        rs::project::sealProjectText(rs::project::writeProject(project), fresh.keys));
+    QByteArray text = sealedPress(rs::project::OptionsAccess::Free);
     text.replace("Q0.3 = I0.1", "Q0.3 = I0.7");
     const int line = 1 + static_cast<int>(text.left(text.indexOf("Q0.3 = I0.7")).count('\n'));
     const QString path = writeFile(QStringLiteral("press.sps"), text);
@@ -230,12 +228,7 @@ namespace {
 // The main password's holder can take a reviewed hand change as theirs: the
 // project opens with full permission and saving seals it again.
 TEST_F(PasswordProtectionTest, TheMainPasswordAcceptsAHandChange) {
-    rs::project::Project project = rs::project::readProject(kPress.toStdString()).project;
-    rs::project::NewProtection fresh =
-        rs::project::protectWith(kMain.toStdString(), rs::project::OptionsAccess::Main, "");
-    project.protection = fresh.record;
-    QByteArray text = QByteArray::fromStdString(
-        rs::project::sealProjectText(rs::project::writeProject(project), fresh.keys));
+    QByteArray text = sealedPress(rs::project::OptionsAccess::Main);
     text.replace("Q0.3 = I0.1", "Q0.3 = I0.1 * I0.4");
     const QString path = writeFile(QStringLiteral("press.sps"), text);
     bool onlyFull = false;
