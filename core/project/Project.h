@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "AsiOptions.h"
 #include "Baseline.h"
 #include "Protection.h"
 #include "lang/Ast.h"
@@ -22,6 +23,9 @@ struct Project {
     std::map<int, std::string> unitDescriptions; // by station
     // Units whose identifier circuit is an IDFIX-PROG (manual Part 1, 5.1).
     std::set<int> idfixProg;
+    // The AS-i Options page of the AS-i units that differ from the defaults
+    // (manual Part 1, 7.1), by station.
+    std::map<int, AsiOptions> asiOptions;
     std::map<lang::Address, std::string> variableDescriptions; // by address
     // The manual's [E]: local variables made visible to the other units (10.2.1).
     std::set<lang::Address> exportedVariables;

@@ -22,6 +22,7 @@ ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
             project.includeSource,
             project.unitDescriptions,
             project.idfixProg,
+            project.asiOptions,
             project.variableDescriptions,
             project.exportedVariables,
             project.remanentVariables,
@@ -35,6 +36,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.includeSource = records.includeSource;
     project.unitDescriptions = records.unitDescriptions;
     project.idfixProg = records.idfixProg;
+    project.asiOptions = records.asiOptions;
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;

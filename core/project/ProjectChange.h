@@ -33,6 +33,7 @@ private:
         bool includeSource = false;
         std::map<int, std::string> unitDescriptions;
         std::set<int> idfixProg;
+        std::map<int, AsiOptions> asiOptions;
         std::map<lang::Address, std::string> variableDescriptions;
         std::set<lang::Address> exportedVariables;
         std::set<lang::Address> remanentVariables;

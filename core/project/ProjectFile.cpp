@@ -2,6 +2,7 @@
 #include "ProjectFile.h"
 
 #include "Annotation.h"
+#include "AsiRecords.h"
 #include "Baseline.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
@@ -158,6 +159,15 @@ private:
             m_project.baseline = std::move(baseline);
             return true;
         }
+        if (kind == "asi" || kind == "asi_slave") {
+            try {
+                readAsiRecord(*annotation, m_project.asiOptions);
+            } catch (const AsiRecordError& problem) {
+                error(at, problem.message);
+                return false;
+            }
+            return true;
+        }
         if (kind == "protected") {
             try {
                 m_project.protection = readProtectionRecord(*annotation);
@@ -192,7 +202,7 @@ std::string stationText(int station) {
 }
 
 // The records of one unit: its description and remanent variables, then its
-// variables' descriptions and export marks.
+// variables' descriptions and export marks, then its AS-i options.
 std::vector<Line> unitRecords(const Project& project, int station) {
     std::vector<Line> lines;
     Annotation unit{"unit", {stationText(station)}, {}};
@@ -222,6 +232,9 @@ std::vector<Line> unitRecords(const Project& project, int station) {
             record.attributes.emplace_back("export", "yes");
         lines.push_back(commentLine(record));
     }
+    if (auto it = project.asiOptions.find(station); it != project.asiOptions.end())
+        for (const Annotation& record : asiRecords(station, it->second))
+            lines.push_back(commentLine(record));
     return lines;
 }
 
@@ -239,6 +252,8 @@ ProjectReadResult readProject(std::string_view text) {
         for (const auto& step : unit.steps)
             records.check(step.lines);
     }
+    std::erase_if(result.project.asiOptions,
+                  [](const auto& entry) { return entry.second == AsiOptions{}; });
     auto resolved = lang::resolveNames(result.project.program);
     result.diagnostics.insert(result.diagnostics.end(), resolved.begin(), resolved.end());
     std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
@@ -282,6 +297,8 @@ std::string writeProject(const Project& project) {
     for (const auto& [station, text] : project.unitDescriptions)
         stations.insert(station);
     stations.insert(project.idfixProg.begin(), project.idfixProg.end());
+    for (const auto& [station, options] : project.asiOptions)
+        stations.insert(station);
     for (const auto& [address, text] : project.variableDescriptions)
         stations.insert(address.unit);
     for (const auto* addresses : {&project.exportedVariables, &project.remanentVariables})

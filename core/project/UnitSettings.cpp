@@ -275,6 +275,8 @@ std::optional<std::string> changeUnit(Project& project, const UnitSettings& requ
         project.idfixProg.insert(station);
     else
         project.idfixProg.erase(station);
+    if (!target::unitTypeInfo(settings.type).asiSlaves)
+        project.asiOptions.erase(station);
 
     // What the new type or instruction set cannot have goes with the change.
     const target::UnitTypeInfo& type = target::unitTypeInfo(settings.type);
@@ -356,6 +358,7 @@ void removeUnit(Project& project, int station) {
                   [&](const lang::UnitProgram& unit) { return unit.station() == station; });
     project.unitDescriptions.erase(station);
     project.idfixProg.erase(station);
+    project.asiOptions.erase(station);
     std::erase_if(project.variableDescriptions,
                   [&](const auto& entry) { return belongsToStation(entry.first, station); });
     std::erase_if(project.exportedVariables,

@@ -29,6 +29,7 @@ Project headOf(const Project& project) {
     head.includeSource = project.includeSource;
     head.unitDescriptions = project.unitDescriptions;
     head.idfixProg = project.idfixProg;
+    head.asiOptions = project.asiOptions;
     head.variableDescriptions = project.variableDescriptions;
     head.exportedVariables = project.exportedVariables;
     head.remanentVariables = project.remanentVariables;
@@ -120,6 +121,7 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.includeSource = read.project.includeSource;
     result.project.unitDescriptions = std::move(read.project.unitDescriptions);
     result.project.idfixProg = std::move(read.project.idfixProg);
+    result.project.asiOptions = std::move(read.project.asiOptions);
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);
     result.project.remanentVariables = std::move(read.project.remanentVariables);

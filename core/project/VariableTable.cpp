@@ -2,6 +2,7 @@
 #include "VariableTable.h"
 
 #include "BlankLines.h"
+#include "UnitAsiOptions.h"
 #include "UnitSettings.h"
 #include "lang/SymbolicName.h"
 
@@ -303,8 +304,17 @@ std::vector<Variable> variableTable(const Project& project, int station, Variabl
     const int instructionSet = instructionSetOf(project, station);
     const std::map<Address, std::string> names = namesOf(project, station);
     const std::set<Address> used = usedVariables(project, station);
+    const std::set<Address> slaves = configuredAsiVariables(project, station);
     std::vector<Variable> rows;
     for (const Address& address : variablesIn(type, station, instructionSet, group)) {
+        // An AS-i variable is listed when its slave is defined on the AS-i
+        // Options page, or when the project already names, describes or uses it.
+        const bool asi =
+            address.kind == AddressKind::AsiInput || address.kind == AddressKind::AsiOutput;
+        if (asi && !slaves.count(address) && !used.count(address) && !names.count(address) &&
+            !project.variableDescriptions.count(address) &&
+            !project.exportedVariables.count(address))
+            continue;
         Variable row;
         row.address = address;
         row.global = target::isGlobal(type, address);
