@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Compiler.h"
 
+#include "AsiCheck.h"
 #include "CodeGenerator.h"
 #include "ExportCheck.h"
 #include "ImageCodec.h"
@@ -19,6 +20,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     UnitSetups units = collectUnits(project.program, result.diagnostics);
     collectExports(project, units, result.diagnostics);
     collectSystemCalls(project.program, units, result.diagnostics);
+    checkAsiSlaves(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
     result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
     lang::sortByPlace(result.diagnostics);

@@ -112,6 +112,31 @@ struct TerminalSetup {
     friend bool operator==(const TerminalSetup&, const TerminalSetup&) = default;
 };
 
+// One defined slave of the AS-i Options page (project::AsiSlave in numbers).
+struct AsiSlaveSetup {
+    std::uint8_t number = 1; // 1-31
+    bool b = false;
+    std::uint8_t type = 0;  // project::AsiSlaveType, never Undefined
+    std::uint8_t model = 0; // index in project::asiSafeInputModels()
+    std::uint8_t parameter = 0xF;
+    std::uint8_t profile[4] = {0, 0xB, 0xF, 0xF}; // I/O configuration, ID code, ID2, ID1
+    std::uint8_t monitoring = 0;                  // project::ChannelMonitoring
+    std::uint32_t timeLimitMs = 0;
+
+    friend bool operator==(const AsiSlaveSetup&, const AsiSlaveSetup&) = default;
+};
+
+// How an AS-i unit works on its AS-i bus (manual Part 1, 7.1); all zero and
+// no slaves for the defaults and for every other unit type.
+struct AsiSetup {
+    std::uint8_t mode = 0;             // project::AsiMode
+    std::uint8_t optimisation = 0;     // project::AsiOptimisation
+    std::uint8_t slaveAddress = 0;     // in the monitor/slave modes, else 0
+    std::vector<AsiSlaveSetup> slaves; // by number, A before B
+
+    friend bool operator==(const AsiSetup&, const AsiSetup&) = default;
+};
+
 struct UnitImage {
     // Descriptive: they name the source, and change with its text.
     std::string projectName;
@@ -128,6 +153,7 @@ struct UnitImage {
     std::vector<TerminalSetup> terminals; // by group, then number
     std::vector<lang::Address> exported;  // the manual's [E], in address order
     std::vector<lang::Address> remanent;  // the manual's [R] of this unit, in address order
+    AsiSetup asi;
     // Descriptive again.
     std::string source; // the canonical project text when "include source" is set, else empty
 

@@ -3,20 +3,23 @@
 
 #include "IntelHex.h"
 #include "SystemInstruction.h"
+#include "project/AsiOptions.h"
 #include "project/ProjectFile.h"
 
 #include <zlib.h>
 
 #include <optional>
+#include <utility>
 
 namespace rs::compiler {
 
 namespace {
 
 constexpr char kMagic[4] = {'R', 'S', 'I', 'M'};
-constexpr std::uint16_t kVersion = 2;
+constexpr std::uint16_t kVersion = 3;
 constexpr std::size_t kInstructionSize = 28;
 constexpr std::size_t kAddressSize = 6;
+constexpr std::size_t kAsiSlaveSize = 13;
 constexpr std::uint8_t kHasSource = 1;
 // The included source was a project file, which no reader takes above this;
 // a damaged length must not make the reader allocate gigabytes.
@@ -164,8 +167,57 @@ void writeSetup(Writer& w, const UnitImage& image) {
     }
 }
 
+void writeAsiSetup(Writer& w, const AsiSetup& asi) {
+    w.u8(asi.mode);
+    w.u8(asi.optimisation);
+    w.u8(asi.slaveAddress);
+    w.u8(static_cast<std::uint8_t>(asi.slaves.size()));
+    for (const auto& slave : asi.slaves) {
+        w.u8(slave.number);
+        w.u8(slave.b ? 1 : 0);
+        w.u8(slave.type);
+        w.u8(slave.model);
+        w.u8(slave.parameter);
+        for (std::uint8_t digit : slave.profile)
+            w.u8(digit);
+        w.u8(slave.monitoring);
+        w.u32(slave.timeLimitMs);
+    }
+}
+
+// What a damaged image could put in the AS-i setup that the simulator must
+// not meet; nothing when it is sound.
+std::optional<std::string> asiSetupProblem(const AsiSetup& asi) {
+    if (asi.mode > static_cast<std::uint8_t>(project::AsiMode::Unused) ||
+        asi.optimisation >
+            static_cast<std::uint8_t>(project::AsiOptimisation::DisturbanceImmunity) ||
+        asi.slaveAddress > project::kAsiSlaveCount)
+        return "the AS-i options are damaged";
+    for (std::size_t i = 1; i < asi.slaves.size(); ++i) {
+        const auto& before = asi.slaves[i - 1];
+        const auto& slave = asi.slaves[i];
+        if (std::pair(before.number, before.b) >= std::pair(slave.number, slave.b))
+            return "the AS-i slaves of the image are out of order";
+    }
+    for (const auto& slave : asi.slaves) {
+        const bool digits = slave.parameter <= 0xF && slave.profile[0] <= 0xF &&
+                            slave.profile[1] <= 0xF && slave.profile[2] <= 0xF &&
+                            slave.profile[3] <= 0xF;
+        if (slave.number < 1 || slave.number > project::kAsiSlaveCount || slave.type == 0 ||
+            slave.type > static_cast<std::uint8_t>(project::AsiSlaveType::PlutoAsSafeInput) ||
+            slave.model >= project::asiSafeInputModels().size() || !digits ||
+            slave.monitoring >
+                static_cast<std::uint8_t>(project::ChannelMonitoring::SimultaneousDebounce) ||
+            slave.timeLimitMs > project::kMaxAsiTimeLimitMs)
+            return "AS-i slave " + std::to_string(slave.number) + (slave.b ? "B" : "") +
+                   " of the image is damaged";
+    }
+    return std::nullopt;
+}
+
 std::size_t setupSize(const UnitImage& image) {
-    std::size_t size = 3 * 4 + (image.exported.size() + image.remanent.size()) * kAddressSize;
+    std::size_t size = 3 * 4 + (image.exported.size() + image.remanent.size()) * kAddressSize + 4 +
+                       image.asi.slaves.size() * kAsiSlaveSize;
     for (const auto& terminal : image.terminals) {
         size += 5;
         for (const auto& option : terminal.options)
@@ -244,6 +296,7 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
         w.u32(in.statement);
     }
     writeSetup(w, image);
+    writeAsiSetup(w, image.asi);
     if (!image.source.empty()) {
         const std::string packed = compress(image.source);
         w.u32(static_cast<std::uint32_t>(image.source.size()));
@@ -355,6 +408,28 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
                 address = *read;
             }
         }
+        image.asi.mode = r.u8();
+        image.asi.optimisation = r.u8();
+        image.asi.slaveAddress = r.u8();
+        image.asi.slaves.resize(r.u8());
+        bool flagsSound = true; // the B flag is written as 0 or 1
+        for (auto& slave : image.asi.slaves) {
+            slave.number = r.u8();
+            const std::uint8_t b = r.u8();
+            flagsSound = flagsSound && b <= 1;
+            slave.b = b == 1;
+            slave.type = r.u8();
+            slave.model = r.u8();
+            slave.parameter = r.u8();
+            for (std::uint8_t& digit : slave.profile)
+                digit = r.u8();
+            slave.monitoring = r.u8();
+            slave.timeLimitMs = r.u32();
+        }
+        if (!flagsSound)
+            return ImageError{0, 0, "the AS-i options are damaged"};
+        if (auto problem = asiSetupProblem(image.asi))
+            return ImageError{0, 0, *problem};
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();
             if (length > kMaxIncludedSourceBytes)
@@ -381,6 +456,10 @@ std::string behaviourBytes(const UnitImage& image) {
     for (const auto& in : image.code)
         writeInstructionAction(w, in);
     writeSetup(w, image);
+    // Only when set: the signature of every unit without AS-i options stays
+    // what it was before images carried them, and so do validated versions.
+    if (!(image.asi == AsiSetup{}))
+        writeAsiSetup(w, image.asi);
     const auto& bytes = w.data();
     return std::string(bytes.begin(), bytes.end());
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ImageSetup.h"
 
+#include "project/UnitAsiOptions.h"
+
 #include <algorithm>
 
 namespace rs::compiler {
@@ -17,6 +19,33 @@ void addTerminals(UnitImage& image, TerminalSetup::Group group,
     }
 }
 
+AsiSetup asiSetup(const project::AsiOptions& options) {
+    using project::AsiMode;
+    AsiSetup setup;
+    setup.mode = static_cast<std::uint8_t>(options.mode);
+    setup.optimisation = static_cast<std::uint8_t>(options.optimisation);
+    if (options.mode == AsiMode::MonitorSlave || options.mode == AsiMode::MonitorSlaveExtra)
+        setup.slaveAddress = static_cast<std::uint8_t>(options.slaveAddress);
+    const auto& models = project::asiSafeInputModels();
+    for (const auto& [address, slave] : options.slaves) {
+        AsiSlaveSetup s;
+        s.number = static_cast<std::uint8_t>(address.number);
+        s.b = address.b;
+        s.type = static_cast<std::uint8_t>(slave.type);
+        s.model = static_cast<std::uint8_t>(std::find(models.begin(), models.end(), slave.model) -
+                                            models.begin());
+        s.parameter = static_cast<std::uint8_t>(slave.parameter);
+        s.profile[0] = static_cast<std::uint8_t>(slave.profile.io);
+        s.profile[1] = static_cast<std::uint8_t>(slave.profile.id);
+        s.profile[2] = static_cast<std::uint8_t>(slave.profile.id2);
+        s.profile[3] = static_cast<std::uint8_t>(slave.profile.id1);
+        s.monitoring = static_cast<std::uint8_t>(slave.monitoring);
+        s.timeLimitMs = static_cast<std::uint32_t>(slave.timeLimitMs);
+        setup.slaves.push_back(s);
+    }
+    return setup;
+}
+
 } // namespace
 
 void addSetup(UnitImage& image, const UnitSetup& unit, const project::Project& project) {
@@ -27,6 +56,8 @@ void addSetup(UnitImage& image, const UnitSetup& unit, const project::Project& p
     for (const auto& address : project.remanentVariables)
         if (address.unit == unit.station)
             image.remanent.push_back(address);
+    if (unit.type && unit.type->asiSlaves)
+        image.asi = asiSetup(project::asiOptionsOf(project, unit.station));
 }
 
 } // namespace rs::compiler

@@ -3,13 +3,18 @@
 
 #include "Ast.h"
 
+#include <concepts>
+#include <type_traits>
+
 namespace rs::lang {
 
 // Calls `visit` on every operand a statement writes or reads: its target,
 // an assignment's target and values, and every operand of its condition
 // (contacts, edges, comparisons and their values, a timer's register
-// preset), in that order.
-template <typename Visit> void forEachOperand(Expr& expr, Visit&& visit) {
+// preset), in that order. Const or not, as the statement is.
+template <typename E, typename Visit>
+requires std::same_as<std::remove_const_t<E>, Expr>
+void forEachOperand(E& expr, Visit&& visit) {
     for (auto& child : expr.children)
         forEachOperand(child, visit);
     visit(expr.operand);
@@ -19,10 +24,12 @@ template <typename Visit> void forEachOperand(Expr& expr, Visit&& visit) {
         visit(*expr.preset.registerOperand);
 }
 
-template <typename Visit> void forEachOperand(Statement& statement, Visit&& visit) {
+template <typename S, typename Visit>
+requires std::same_as<std::remove_const_t<S>, Statement>
+void forEachOperand(S& statement, Visit&& visit) {
     visit(statement.target);
     visit(statement.assignment.target);
-    for (Value* value : {&statement.assignment.left, &statement.assignment.right})
+    for (auto* value : {&statement.assignment.left, &statement.assignment.right})
         if (value->operand)
             visit(*value->operand);
     if (statement.condition)

@@ -297,6 +297,20 @@ AsiSlaveAddress slaveOf(const Address& address) {
     return {address.index, address.asiB};
 }
 
+std::string_view slaveTypeName(AsiSlaveType type) {
+    constexpr std::array<std::pair<AsiSlaveType, std::string_view>, 8> kNames{{
+        {AsiSlaveType::Undefined, "Undefined"},
+        {AsiSlaveType::SafeInput, "Safe Input"},
+        {AsiSlaveType::NonsafeStandard, "Nonsafe Std"},
+        {AsiSlaveType::NonsafeAB, "Nonsafe A/B"},
+        {AsiSlaveType::CombinedTransaction, "Combined Transaction A/B"},
+        {AsiSlaveType::Analogue, "Analog"},
+        {AsiSlaveType::SafeOutput, "Safe Output"},
+        {AsiSlaveType::PlutoAsSafeInput, "Pluto as Safe Input"},
+    }};
+    return wordOf(kNames, type);
+}
+
 std::string_view modeWord(AsiMode mode) {
     return wordOf(kModeWords, mode);
 }

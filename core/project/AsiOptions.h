@@ -136,6 +136,9 @@ std::vector<lang::Address> slaveVariables(const target::UnitTypeInfo& type, int 
 // The slave an AS-i variable belongs to.
 AsiSlaveAddress slaveOf(const lang::Address& address);
 
+// The manual's name of a type: "Safe Input", "Nonsafe Std".
+std::string_view slaveTypeName(AsiSlaveType type);
+
 // Words of the project file's records (docs/file-format.md).
 std::string_view modeWord(AsiMode mode);
 std::string_view optimisationWord(AsiOptimisation optimisation);

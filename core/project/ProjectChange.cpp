@@ -18,17 +18,10 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,
-            project.includeSource,
-            project.unitDescriptions,
-            project.idfixProg,
-            project.asiOptions,
-            project.variableDescriptions,
-            project.exportedVariables,
-            project.remanentVariables,
-            project.libraries,
-            project.baseline,
-            project.protection};
+    return {project.description,       project.includeSource,     project.unitDescriptions,
+            project.idfixProg,         project.asiOptions,        project.variableDescriptions,
+            project.exportedVariables, project.remanentVariables, project.libraries,
+            project.baseline,          project.protection};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {

@@ -795,7 +795,16 @@ TEST(AddressCheck, AsISlaves) {
     EXPECT_EQ(checkUnit("ASi,is3", {"S0.0_0", "M0.1 = ASi0.1 * ASi0.31 * ASi0.1.4 * ASi0.31B.1",
                                     "ASq0.1.1 = M0.0", "ASq0.1B.4 = M0.0",
                                     "M0.2 = ASi0.32 * ASi0.1.5 * ASi0.0.1"}),
-              (Lines{"8:8: error: ASi0.32 does not exist on unit 0, an AS-i",
+              // No slave is defined on the AS-i Options page: each is a warning, once.
+              (Lines{"5:8: warning: ASi0.1: AS-i slave ASi0.1 is not defined on the AS-i "
+                     "Options page",
+                     "5:17: warning: ASi0.31: AS-i slave ASi0.31 is not defined on the AS-i "
+                     "Options page",
+                     "5:38: warning: ASi0.31B.1: AS-i slave ASi0.31B is not defined on the AS-i "
+                     "Options page",
+                     "7:1: warning: ASq0.1B.4: AS-i slave ASi0.1B is not defined on the AS-i "
+                     "Options page",
+                     "8:8: error: ASi0.32 does not exist on unit 0, an AS-i",
                      "8:18: error: ASi0.1.5 does not exist on unit 0, an AS-i",
                      "8:29: error: ASi0.0.1 does not exist on unit 0, an AS-i"}));
 }
@@ -934,7 +943,8 @@ TEST(AccessCheck, WritingAnInput) {
                      "12:3: error: I0.6" + input}));
     EXPECT_EQ(
         checkUnit("ASi,is3", {"S0.0_0", "ASi0.1 = M0.0", "ASq0.1.1 = M0.0", "ASi0.1.1 = M0.0"}),
-        (Lines{"5:1: error: ASi0.1" + input, "7:1: error: ASi0.1.1" + input}));
+        (Lines{"5:1: warning: ASi0.1: AS-i slave ASi0.1 is not defined on the AS-i Options page",
+               "5:1: error: ASi0.1" + input, "7:1: error: ASi0.1.1" + input}));
 }
 
 TEST(AccessCheck, ReadOnlySystemMemoriesAndRegisters) {
