@@ -3,6 +3,7 @@
 
 #include "lang/SymbolicName.h"
 #include "lang/TextCase.h"
+#include "project/UnitAsiOptions.h"
 #include "project/Utf8Text.h"
 
 #include <algorithm>
@@ -170,6 +171,15 @@ OperandNames::OperandNames(const project::Project& project) {
     add(project.program.preamble);
     for (const auto& unit : project.program.units)
         add(unit.declarations);
+    for (const auto& [station, options] : project.asiOptions)
+        for (const auto& [slave, setup] : options.slaves)
+            if (project::hasChannels(setup.type) && !slave.b)
+                m_channelSlaves.push_back({lang::AddressKind::AsiInput, station, slave.number});
+}
+
+bool OperandNames::hasChannels(const lang::Address& address) const {
+    return std::find(m_channelSlaves.begin(), m_channelSlaves.end(), address) !=
+           m_channelSlaves.end();
 }
 
 bool OperandNames::hasStation(int station) const {
@@ -307,7 +317,24 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
         bool ok = false;
         if (verb == "set") {
             step.kind = ScenarioStep::Kind::Set;
-            ok = expectCount(3, "set OPERAND VALUE") && operand(words[1]) && value(words[2]);
+            ok = expectCount(3, "set OPERAND VALUE");
+            if (ok) {
+                // OPERAND.ch1 and OPERAND.ch2: one channel of a safe AS-i slave.
+                Word target = words[1];
+                const std::string folded = lang::toLower(target.text);
+                if (target.text.size() > 4 &&
+                    (folded.ends_with(".ch1") || folded.ends_with(".ch2"))) {
+                    step.channel = folded.back() - '0';
+                    target.text.remove_suffix(4);
+                }
+                ok = operand(target) && value(words[2]);
+            }
+            if (ok && step.channel && !names.hasChannels(step.operand)) {
+                fail(words[1], lang::toString(step.operand) +
+                                   " is no safe input slave of the AS-i Options page; only "
+                                   "those have the channels ch1 and ch2");
+                ok = false;
+            }
         } else if (verb == "release") {
             step.kind = ScenarioStep::Kind::Release;
             ok = expectCount(2, "release OPERAND") && operand(words[1]);

@@ -30,6 +30,7 @@ struct ScenarioStep {
     std::int64_t value = 0;
     std::int64_t durationMs = 0; // Run, Cycle; Expect with `within` (0 without)
     std::int64_t count = 0;      // Scans
+    int channel = 0;             // Set of one channel (1 or 2) of a safe AS-i slave; 0 the operand
     int line = 0;
     std::string text; // the line as written, without its comment
 };
@@ -53,6 +54,8 @@ public:
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
     bool hasStation(int station) const;
+    // A safe input slave the AS-i Options page defines, with two channels.
+    bool hasChannels(const lang::Address& address) const;
 
 private:
     struct Entry {
@@ -61,6 +64,7 @@ private:
     };
     std::vector<std::pair<std::string, Entry>> m_names; // folded name -> address
     std::vector<int> m_stations;
+    std::vector<lang::Address> m_channelSlaves;
 };
 
 // Lines end at LF, CRLF or a lone CR; a leading byte-order mark is skipped.

@@ -61,7 +61,10 @@ ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario
             simulation.setCycleMs(static_cast<int>(step.durationMs));
             break;
         case ScenarioStep::Kind::Set:
-            simulation.set(step.operand, step.value);
+            if (step.channel)
+                simulation.setChannel(step.operand, step.channel, step.value != 0);
+            else
+                simulation.set(step.operand, step.value);
             break;
         case ScenarioStep::Kind::Release:
             simulation.release(step.operand);

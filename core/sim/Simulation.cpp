@@ -24,8 +24,15 @@ Simulation::Simulation(std::vector<compiler::UnitImage> images, int cycleMs)
     : m_bus(std::make_unique<UnitEngine::Bus>()), m_cycleMs(cycleMs) {
     std::sort(images.begin(), images.end(),
               [](const auto& a, const auto& b) { return a.station < b.station; });
-    for (auto& image : images)
+    for (auto& image : images) {
+        for (const auto& slave : image.asi.slaves)
+            if (project::hasChannels(static_cast<project::AsiSlaveType>(slave.type)) && !slave.b)
+                m_channels.push_back(
+                    {{lang::AddressKind::AsiInput, image.station, slave.number},
+                     SafeInputChannels(static_cast<project::ChannelMonitoring>(slave.monitoring),
+                                       slave.timeLimitMs)});
         m_units.push_back(std::make_unique<UnitEngine>(std::move(image), *m_bus));
+    }
     tellPresence();
     publish();
 }
@@ -81,6 +88,8 @@ void Simulation::setRemanent(int station, std::vector<lang::Address> addresses) 
 void Simulation::restart() {
     m_offBus = {};
     tellPresence();
+    for (auto& slave : m_channels)
+        slave.channels.powerOn();
     for (auto& unit : m_units)
         unit->powerOn(m_remanent[unit->image().station % 32]);
     m_timeMs = 0;
@@ -93,7 +102,31 @@ void Simulation::publish() {
         (*m_bus)[unit->image().station % 32] = unit->memory();
 }
 
+// Each safe slave's input from its channels, and each AS-i unit's
+// SR_ASi_Slave_Chanf: the lowest slave in channel fault, 0 when none is.
+void Simulation::updateChannels() {
+    constexpr int kSlaveChannelFault = 16;
+    UnitEngine* engine = nullptr;
+    int firstFault = 0;
+    for (std::size_t i = 0; i < m_channels.size(); ++i) {
+        SlaveChannels& slave = m_channels[i];
+        if (!engine)
+            engine = unit(slave.input.unit);
+        slave.channels.update(m_timeMs);
+        engine->write(slave.input, slave.channels.input() ? 1 : 0);
+        if (slave.channels.fault() && firstFault == 0)
+            firstFault = slave.input.index;
+        if (i + 1 == m_channels.size() || m_channels[i + 1].input.unit != slave.input.unit) {
+            engine->write({lang::AddressKind::SystemRegister, slave.input.unit, kSlaveChannelFault},
+                          firstFault);
+            engine = nullptr;
+            firstFault = 0;
+        }
+    }
+}
+
 void Simulation::scan() {
+    updateChannels();
     for (auto& unit : m_units)
         unit->scan(m_timeMs, m_cycleMs);
     publish();
@@ -117,7 +150,37 @@ std::int64_t Simulation::value(const lang::Address& address) const {
     return bitRef((*m_bus)[static_cast<std::size_t>(address.unit)], address, false).read();
 }
 
+Simulation::SlaveChannels* Simulation::slaveChannels(const lang::Address& address) {
+    if (address.kind != lang::AddressKind::AsiInput || address.bit != -1 || address.asiB)
+        return nullptr;
+    for (auto& slave : m_channels)
+        if (slave.input == address)
+            return &slave;
+    return nullptr;
+}
+
+bool Simulation::hasChannels(const lang::Address& address) const {
+    return const_cast<Simulation*>(this)->slaveChannels(address) != nullptr;
+}
+
+bool Simulation::setChannel(const lang::Address& address, int channel, bool closed) {
+    SlaveChannels* slave = slaveChannels(address);
+    if (slave)
+        slave->channels.setChannel(channel, closed);
+    return slave != nullptr;
+}
+
+bool Simulation::channel(const lang::Address& address, int channel) const {
+    const SlaveChannels* slave = const_cast<Simulation*>(this)->slaveChannels(address);
+    return slave && slave->channels.channel(channel);
+}
+
 void Simulation::set(const lang::Address& address, std::int64_t value) {
+    if (SlaveChannels* slave = slaveChannels(address)) {
+        slave->channels.setChannel(1, value != 0);
+        slave->channels.setChannel(2, value != 0);
+        return;
+    }
     UnitEngine* engine = unit(address.unit);
     if (!engine) {
         if (address.unit >= 0 && address.unit <= 31)

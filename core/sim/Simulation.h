@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "SafeInputChannels.h"
 #include "UnitEngine.h"
 
 #include <memory>
@@ -42,6 +43,13 @@ public:
     void force(const lang::Address& address, std::int64_t value);
     void release(const lang::Address& address);
 
+    // The two channels of a safe input slave that the unit's AS-i options
+    // define (ASi<u>.<x>, `address`): set() of its input sets both. False, and
+    // nothing set, for any other address.
+    bool setChannel(const lang::Address& address, int channel, bool closed);
+    bool hasChannels(const lang::Address& address) const;
+    bool channel(const lang::Address& address, int channel) const;
+
     // Remanent variables (R100..R131, M100..M131 as configured) of a unit,
     // kept by restart().
     void setRemanent(int station, std::vector<lang::Address> addresses);
@@ -54,13 +62,21 @@ public:
     bool isOnBus(int station) const;
 
 private:
+    struct SlaveChannels {
+        lang::Address input; // ASi<u>.<x>
+        SafeInputChannels channels;
+    };
+
     void publish();
+    void updateChannels();
+    SlaveChannels* slaveChannels(const lang::Address& address);
     void tellPresence();
 
     std::unique_ptr<UnitEngine::Bus> m_bus; // stable address: engines point into it
     std::vector<std::unique_ptr<UnitEngine>> m_units;
     std::array<std::vector<lang::Address>, 32> m_remanent;
     std::array<bool, 32> m_offBus{};
+    std::vector<SlaveChannels> m_channels; // by station and slave
     int m_cycleMs;
     std::int64_t m_timeMs = 0;
     std::uint64_t m_scans = 0;
