@@ -45,14 +45,14 @@ struct Page {
     int sequence = 0;
 };
 
-// "ladder:N", "text:N", "io:N", "variables:N" and "unit:N": a page of the unit
+// "ladder:N", "text:N", "io:N", "asi:N", "variables:N" and "unit:N": a page of the unit
 // with station number N; "ladder:N.S" and "text:N.S" its sequence S, as the
 // language writes a sequence (S0.1); "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
     static const QRegularExpression form(QStringLiteral(
-        "^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|variables|unit):(\\d{1,2}))$"));
+        "^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|asi|variables|unit):(\\d{1,2}))$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
@@ -62,6 +62,7 @@ std::optional<Page> pageOf(const QString& text) {
     return Page{kind == QLatin1String("ladder") ? Kind::Ladder
                 : kind == QLatin1String("text") ? Kind::Code
                 : kind == QLatin1String("io")   ? Kind::IoOptions
+                : kind == QLatin1String("asi")  ? Kind::AsiOptions
                 : kind == QLatin1String("unit") ? Kind::Unit
                                                 : Kind::Variables,
                 (code ? match.captured(2) : match.captured(5)).toInt(),
@@ -154,7 +155,7 @@ int main(int argc, char* argv[]) {
         QStringLiteral("page"),
         CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
                         "text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), "
-                        "variables:N, unit:N, or project."),
+                        "asi:N (its AS-i options), variables:N, unit:N, or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -184,7 +185,7 @@ int main(int argc, char* argv[]) {
         page = pageOf(parser.value(pageOption));
         if (!page)
             return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
-                                              "io:N, variables:N and unit:N for unit N, "
+                                              "io:N, asi:N, variables:N and unit:N for unit N, "
                                               "ladder:N.S and text:N.S for its sequence S, and "
                                               "project")
                                   .arg(parser.value(pageOption)));

@@ -177,9 +177,24 @@ OperandNames::OperandNames(const project::Project& project) {
                 m_channelSlaves.push_back({lang::AddressKind::AsiInput, station, slave.number});
 }
 
-bool OperandNames::hasChannels(const lang::Address& address) const {
-    return std::find(m_channelSlaves.begin(), m_channelSlaves.end(), address) !=
-           m_channelSlaves.end();
+bool OperandNames::resolveChannel(std::string_view word, lang::Address& address, int& channel,
+                                  std::string& error) const {
+    channel = 0;
+    const std::string folded = lang::toLower(word);
+    if (word.size() > 4 && (folded.ends_with(".ch1") || folded.ends_with(".ch2"))) {
+        channel = folded.back() - '0';
+        word.remove_suffix(4);
+    }
+    if (!resolve(word, address, error))
+        return false;
+    if (channel && std::find(m_channelSlaves.begin(), m_channelSlaves.end(), address) ==
+                       m_channelSlaves.end()) {
+        error = lang::toString(address) +
+                " is no safe input slave of the AS-i Options page; only those have the "
+                "channels ch1 and ch2";
+        return false;
+    }
+    return true;
 }
 
 bool OperandNames::hasStation(int station) const {
@@ -319,21 +334,11 @@ Scenario parseScenario(std::string_view text, const OperandNames& names) {
             step.kind = ScenarioStep::Kind::Set;
             ok = expectCount(3, "set OPERAND VALUE");
             if (ok) {
-                // OPERAND.ch1 and OPERAND.ch2: one channel of a safe AS-i slave.
-                Word target = words[1];
-                const std::string folded = lang::toLower(target.text);
-                if (target.text.size() > 4 &&
-                    (folded.ends_with(".ch1") || folded.ends_with(".ch2"))) {
-                    step.channel = folded.back() - '0';
-                    target.text.remove_suffix(4);
-                }
-                ok = operand(target) && value(words[2]);
-            }
-            if (ok && step.channel && !names.hasChannels(step.operand)) {
-                fail(words[1], lang::toString(step.operand) +
-                                   " is no safe input slave of the AS-i Options page; only "
-                                   "those have the channels ch1 and ch2");
-                ok = false;
+                std::string error;
+                ok = names.resolveChannel(words[1].text, step.operand, step.channel, error);
+                if (!ok)
+                    fail(words[1], error);
+                ok = ok && value(words[2]);
             }
         } else if (verb == "release") {
             step.kind = ScenarioStep::Kind::Release;

@@ -54,8 +54,10 @@ public:
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
     bool hasStation(int station) const;
-    // A safe input slave the AS-i Options page defines, with two channels.
-    bool hasChannels(const lang::Address& address) const;
+    // As resolve(), and OPERAND.ch1 or OPERAND.ch2 for one channel of a safe
+    // input slave the AS-i Options page defines: `channel` is 1 or 2, else 0.
+    bool resolveChannel(std::string_view word, lang::Address& address, int& channel,
+                        std::string& error) const;
 
 private:
     struct Entry {

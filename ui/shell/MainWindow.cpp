@@ -8,6 +8,7 @@
 #include "ladder/LadderPage.h"
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
+#include "pages/AsiOptionsPage.h"
 #include "pages/IoOptionsPage.h"
 #include "pages/MarkValidatedDialog.h"
 #include "pages/ProjectPage.h"
@@ -71,12 +72,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_projectPage = new ProjectPage(m_pages);
     m_unitPage = new UnitPage(m_pages);
     m_ioPage = new IoOptionsPage(m_pages);
+    m_asiPage = new AsiOptionsPage(m_pages);
     m_variablesPage = new VariablesPage(m_pages);
     m_textPage = new TextPage(m_pages);
     m_ladderPage = new LadderPage(m_pages);
     for (QWidget* page :
          std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage, m_ioPage,
-                                         m_variablesPage, m_textPage, m_ladderPage})
+                                         m_asiPage, m_variablesPage, m_textPage, m_ladderPage})
         m_pages->addWidget(page);
 
     createCommands();
@@ -546,6 +548,10 @@ bool MainWindow::showPage(const PageRef& page) {
         m_ioPage->showUnit(document, page.station);
         m_pages->setCurrentWidget(m_ioPage);
         break;
+    case PageRef::Kind::AsiOptions:
+        m_asiPage->showUnit(document, page.station);
+        m_pages->setCurrentWidget(m_asiPage);
+        break;
     case PageRef::Kind::Variables:
         m_variablesPage->showUnit(document, page.station);
         m_pages->setCurrentWidget(m_variablesPage);
@@ -755,6 +761,7 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
         break;
     case PageRef::Kind::Unit:
     case PageRef::Kind::IoOptions:
+    case PageRef::Kind::AsiOptions:
     case PageRef::Kind::Code:
     case PageRef::Kind::Ladder:
         add(tr("New &Sequence..."),

@@ -29,6 +29,7 @@ struct TextPlace;
 namespace rs::ui {
 
 class CompileOutput;
+class AsiOptionsPage;
 class IoOptionsPage;
 class LadderPage;
 class ProblemsView;
@@ -103,6 +104,7 @@ public:
     ProjectPage* projectPage() const { return m_projectPage; }
     UnitPage* unitPage() const { return m_unitPage; }
     IoOptionsPage* ioOptionsPage() const { return m_ioPage; }
+    AsiOptionsPage* asiOptionsPage() const { return m_asiPage; }
     VariablesPage* variablesPage() const { return m_variablesPage; }
     ProjectTree* projectTree() const { return m_tree; }
     CompileOutput* compileOutput() const { return m_output; }
@@ -156,6 +158,7 @@ private:
     ProjectPage* m_projectPage = nullptr;
     UnitPage* m_unitPage = nullptr;
     IoOptionsPage* m_ioPage = nullptr;
+    AsiOptionsPage* m_asiPage = nullptr;
     VariablesPage* m_variablesPage = nullptr;
     TextPage* m_textPage = nullptr;
     LadderPage* m_ladderPage = nullptr;

@@ -10,7 +10,17 @@ class ProjectDocument;
 // Which page the window shows: a node of the project tree.
 struct PageRef {
     // Code is the unit's code as text; Ladder the same code as ladder networks.
-    enum class Kind { None, Project, ProjectText, Unit, IoOptions, Variables, Code, Ladder };
+    enum class Kind {
+        None,
+        Project,
+        ProjectText,
+        Unit,
+        IoOptions,
+        AsiOptions,
+        Variables,
+        Code,
+        Ladder
+    };
 
     Kind kind = Kind::None;
     QPointer<ProjectDocument> document;

@@ -121,6 +121,9 @@ void ProjectTree::setDocuments(const std::vector<ProjectDocument*>& documents) {
                 expanded.insert(keyOf(pageOf(unitItem)));
             add(unitItem, tr("I/O Options"), QStringLiteral("io-options"),
                 {PageRef::Kind::IoOptions, document, station});
+            if (project::unitTypeOf(p, station).asiSlaves)
+                add(unitItem, tr("AS-i Options"), QStringLiteral("asi-options"),
+                    {PageRef::Kind::AsiOptions, document, station});
             add(unitItem, tr("Variables"), QStringLiteral("variables"),
                 {PageRef::Kind::Variables, document, station});
             add(unitItem, tr("PLC Code"), QStringLiteral("code"),

@@ -242,6 +242,13 @@ void SimulationSession::set(const lang::Address& address, std::int64_t value) {
     changed();
 }
 
+void SimulationSession::setChannel(const lang::Address& address, int channel, bool closed) {
+    if (!m_simulation || !m_simulation->setChannel(address, channel, closed))
+        return;
+    m_recorder.add(address, m_simulation.get());
+    changed();
+}
+
 void SimulationSession::force(const lang::Address& address, std::int64_t value) {
     if (!m_simulation)
         return;
@@ -304,6 +311,20 @@ bool SimulationSession::resolve(const QString& word, lang::Address& address, QSt
     return false;
 }
 
+bool SimulationSession::resolveChannel(const QString& word, lang::Address& address, int& channel,
+                                       QString& error) const {
+    if (!m_document) {
+        error = tr("The simulation is not running.");
+        return false;
+    }
+    std::string message;
+    if (sim::OperandNames(m_document->project())
+            .resolveChannel(word.trimmed().toStdString(), address, channel, message))
+        return true;
+    error = QString::fromStdString(message);
+    return false;
+}
+
 QStringList SimulationSession::operandWords() const {
     std::set<QString> words;
     if (m_document) {
@@ -312,10 +333,25 @@ QStringList SimulationSession::operandWords() const {
             for (const lang::Address& address : project::namedAddresses(project, station))
                 words.insert(QString::fromStdString(project::variableName(project, address)));
     }
-    for (const auto& image : m_images)
+    for (const auto& image : m_images) {
         for (const auto& instruction : image.code)
             if (instruction.operand.valid())
                 words.insert(QString::fromStdString(lang::toString(instruction.operand)));
+        // The two channels of each safe AS-i slave, by address and by name.
+        for (const auto& slave : image.asi.slaves) {
+            const lang::Address input{lang::AddressKind::AsiInput, image.station, slave.number};
+            if (!m_simulation || !m_simulation->hasChannels(input))
+                continue;
+            QStringList stems{QString::fromStdString(lang::toString(input))};
+            if (m_document)
+                if (const std::string name = project::variableName(m_document->project(), input);
+                    !name.empty())
+                    stems << QString::fromStdString(name);
+            for (const QString& stem : stems)
+                for (const char* channel : {".ch1", ".ch2"})
+                    words.insert(stem + QLatin1String(channel));
+        }
+    }
     return {words.begin(), words.end()};
 }
 

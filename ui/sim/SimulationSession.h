@@ -74,6 +74,8 @@ public:
     // anything else is forced.
     void set(const lang::Address& address, std::int64_t value);
     void force(const lang::Address& address, std::int64_t value);
+    // One channel (1 or 2) of a safe AS-i input slave the unit's AS-i options define.
+    void setChannel(const lang::Address& address, int channel, bool closed);
     void release(const lang::Address& address);
     void releaseAll();
     // A click on a contact: an input or a forced variable changes between 0
@@ -86,6 +88,10 @@ public:
     // Resolves a symbolic name or an address as a scenario does; the message
     // when it cannot.
     bool resolve(const QString& word, lang::Address& address, QString& error) const;
+    // The same, with NAME.ch1 and NAME.ch2 for a channel of a safe AS-i slave
+    // (`channel` 1 or 2, else 0).
+    bool resolveChannel(const QString& word, lang::Address& address, int& channel,
+                        QString& error) const;
     // The project's symbolic names and every operand of the compiled code, for completion.
     QStringList operandWords() const;
 

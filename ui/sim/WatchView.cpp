@@ -84,18 +84,18 @@ WatchView::WatchView(SimulationSession* session, QWidget* parent)
 QString WatchView::add(const QString& word) {
     if (word.trimmed().isEmpty())
         return tr("Type a symbolic name or an address.");
-    lang::Address address;
+    Entry entry;
     QString error;
-    if (!m_session->resolve(word, address, error))
+    if (!m_session->resolveChannel(word, entry.address, entry.channel, error))
         return error;
-    if (std::find(m_variables.begin(), m_variables.end(), address) == m_variables.end())
-        m_variables.push_back(address);
+    if (std::find(m_variables.begin(), m_variables.end(), entry) == m_variables.end())
+        m_variables.push_back(entry);
     rebuild();
     return {};
 }
 
-void WatchView::remove(const lang::Address& address) {
-    std::erase(m_variables, address);
+void WatchView::remove(const Entry& entry) {
+    std::erase(m_variables, entry);
     rebuild();
 }
 
@@ -104,11 +104,16 @@ void WatchView::rebuild() {
     m_table->setRowCount(static_cast<int>(m_variables.size()));
     const ProjectDocument* document = m_session->document();
     for (int row = 0; row < static_cast<int>(m_variables.size()); ++row) {
-        const lang::Address& address = m_variables[static_cast<std::size_t>(row)];
-        auto* variable = new QTableWidgetItem(QString::fromStdString(lang::toString(address)));
-        auto* name = new QTableWidgetItem(
-            document ? QString::fromStdString(project::variableName(document->project(), address))
-                     : QString());
+        const Entry& entry = m_variables[static_cast<std::size_t>(row)];
+        const QString channel =
+            entry.channel ? QStringLiteral(".ch%1").arg(entry.channel) : QString();
+        auto* variable =
+            new QTableWidgetItem(QString::fromStdString(lang::toString(entry.address)) + channel);
+        const QString declared =
+            document
+                ? QString::fromStdString(project::variableName(document->project(), entry.address))
+                : QString();
+        auto* name = new QTableWidgetItem(declared.isEmpty() ? declared : declared + channel);
         for (QTableWidgetItem* item : {variable, name})
             item->setFlags(item->flags() & ~Qt::ItemIsEditable);
         m_table->setItem(row, VariableColumn, variable);
@@ -124,15 +129,18 @@ void WatchView::refresh() {
     m_refreshing = true;
     for (int row = 0; row < m_table->rowCount(); ++row) {
         QTableWidgetItem* item = m_table->item(row, ValueColumn);
-        const lang::Address& address = m_variables[static_cast<std::size_t>(row)];
+        const Entry& entry = m_variables[static_cast<std::size_t>(row)];
+        const lang::Address& address = entry.address;
         if (!simulation) {
             item->setText({});
             item->setFlags(item->flags() & ~Qt::ItemIsEditable);
             continue;
         }
         item->setFlags(item->flags() | Qt::ItemIsEditable);
-        const bool forced = m_session->isForced(address);
-        const QString value = QString::number(simulation->value(address));
+        const bool forced = !entry.channel && m_session->isForced(address);
+        const QString value =
+            QString::number(entry.channel ? simulation->channel(address, entry.channel)
+                                          : simulation->value(address));
         item->setText(forced ? tr("%1 F", "a forced value").arg(value) : value);
         item->setForeground(forced ? errorTextColor(palette()) : palette().color(QPalette::Text));
         item->setToolTip(forced ? tr("Forced") : QString());
@@ -145,28 +153,33 @@ void WatchView::valueEdited(QTableWidgetItem* item) {
         return;
     bool ok = false;
     const qlonglong value = item->text().section(QLatin1Char(' '), 0, 0).toLongLong(&ok);
-    const lang::Address address = m_variables[static_cast<std::size_t>(item->row())];
-    if (!ok) {
-        m_message->setText(tr("“%1” is not a number.").arg(item->text()));
+    const Entry entry = m_variables[static_cast<std::size_t>(item->row())];
+    if (!ok || (entry.channel && value != 0 && value != 1)) {
+        m_message->setText(ok ? tr("A channel is open (0) or closed (1).")
+                              : tr("“%1” is not a number.").arg(item->text()));
         m_message->show();
         refresh();
         return;
     }
     m_message->hide();
-    m_session->set(address, value);
+    if (entry.channel)
+        m_session->setChannel(entry.address, entry.channel, value != 0);
+    else
+        m_session->set(entry.address, value);
 }
 
 void WatchView::showMenu(const QPoint& at) {
     const int row = m_table->rowAt(at.y());
     if (row < 0)
         return;
-    const lang::Address address = m_variables[static_cast<std::size_t>(row)];
+    const Entry entry = m_variables[static_cast<std::size_t>(row)];
     QMenu menu(this);
     QAction* release = menu.addAction(tr("&Release Force"));
-    release->setEnabled(m_session->isForced(address));
-    connect(release, &QAction::triggered, this, [this, address] { m_session->release(address); });
+    release->setEnabled(!entry.channel && m_session->isForced(entry.address));
+    connect(release, &QAction::triggered, this,
+            [this, entry] { m_session->release(entry.address); });
     connect(menu.addAction(tr("Stop &Watching")), &QAction::triggered, this,
-            [this, address] { remove(address); });
+            [this, entry] { remove(entry); });
     menu.exec(m_table->viewport()->mapToGlobal(at));
 }
 

@@ -29,12 +29,20 @@ class WatchView : public QWidget {
 public:
     enum Column { VariableColumn, NameColumn, ValueColumn };
 
+    // A watched variable, or one channel (1 or 2) of a safe AS-i input slave.
+    struct Entry {
+        lang::Address address;
+        int channel = 0;
+        friend bool operator==(const Entry&, const Entry&) = default;
+    };
+
     explicit WatchView(SimulationSession* session, QWidget* parent = nullptr);
 
-    // Adds the variable by name or address; the reason when it cannot.
+    // Adds the variable by name or address, or NAME.ch1 for a channel of a
+    // safe AS-i slave; the reason when it cannot.
     QString add(const QString& word);
-    void remove(const lang::Address& address);
-    const std::vector<lang::Address>& variables() const { return m_variables; }
+    void remove(const Entry& entry);
+    const std::vector<Entry>& variables() const { return m_variables; }
 
     QLineEdit* input() const { return m_input; }
     QTableWidget* table() const { return m_table; }
@@ -50,7 +58,7 @@ private:
     QCompleter* m_completer;
     QLabel* m_message;
     QTableWidget* m_table;
-    std::vector<lang::Address> m_variables;
+    std::vector<Entry> m_variables;
     bool m_refreshing = false;
 };
 

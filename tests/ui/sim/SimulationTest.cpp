@@ -613,3 +613,44 @@ TEST_F(SimulationTest, LinesOffAreTheColourOfUnpoweredLinesWhileSimulating) {
     action("simulateAction")->trigger();
     EXPECT_EQ(ladder()->drawing().style.ink, chosen.lines);
 }
+
+// Issue 19: the Watch dock sets one channel of a safe AS-i slave, and the
+// slave's input follows its channel monitoring.
+TEST_F(SimulationTest, WatchSetsTheChannelsOfASafeAsiSlave) {
+    ASSERT_TRUE(
+        window.loadFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/tests/scenarios/asi_channels.sps"))
+            .isEmpty());
+    ASSERT_TRUE(window.showPage(PageRef{PageRef::Kind::Ladder, document(), 0, 0}));
+    begin();
+    ui::WatchView* watch = mode()->watchView();
+    EXPECT_TRUE(session()->operandWords().contains(QStringLiteral("Door.ch2")));
+    ASSERT_TRUE(watch->add(QStringLiteral("Door.ch1")).isEmpty());
+    ASSERT_TRUE(watch->add(QStringLiteral("asi0.2.CH2")).isEmpty());
+    ASSERT_TRUE(watch->add(QStringLiteral("Door")).isEmpty());
+    EXPECT_FALSE(watch->add(QStringLiteral("DoorOn.ch1")).isEmpty()); // a memory has no channels
+    ASSERT_EQ(watch->table()->rowCount(), 3);
+    EXPECT_EQ(watch->table()->item(0, ui::WatchView::VariableColumn)->text(),
+              QStringLiteral("ASi0.2.ch1"));
+    EXPECT_EQ(watch->table()->item(1, ui::WatchView::NameColumn)->text(),
+              QStringLiteral("Door.ch2"));
+    auto value = [&](int row) {
+        return watch->table()->item(row, ui::WatchView::ValueColumn)->text();
+    };
+    watch->table()->item(0, ui::WatchView::ValueColumn)->setText(QStringLiteral("1"));
+    singleScan();
+    EXPECT_EQ(value(0), QStringLiteral("1"));
+    EXPECT_EQ(value(2), QStringLiteral("0")); // one channel is not enough
+    watch->table()->item(1, ui::WatchView::ValueColumn)->setText(QStringLiteral("1"));
+    singleScan();
+    EXPECT_EQ(value(2), QStringLiteral("1"));
+    // Channel monitoring: one channel opening drops the input until both have opened.
+    watch->table()->item(0, ui::WatchView::ValueColumn)->setText(QStringLiteral("0"));
+    singleScan();
+    watch->table()->item(0, ui::WatchView::ValueColumn)->setText(QStringLiteral("1"));
+    singleScan();
+    EXPECT_EQ(value(2), QStringLiteral("0"));
+    EXPECT_EQ(simulation().value(addressOf("SR0.16")), 2);
+    watch->table()->item(0, ui::WatchView::ValueColumn)->setText(QStringLiteral("2"));
+    EXPECT_EQ(value(0), QStringLiteral("1")); // refused: a channel is 0 or 1
+    EXPECT_FALSE(document()->isModified());
+}
