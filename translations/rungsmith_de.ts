@@ -2,6 +2,174 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>BlockDocumentation</name>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation>Bibliothek %1, Version %2. Bausteinversion %3.</translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation>Ein Systembaustein: Der Simulator führt seine Anweisung %1 aus, die die Sprache nicht ausdrücken kann.</translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation>Anschlüsse</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Anschluss</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation>Wenn nicht beschaltet</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>Vorgabe %1</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>muss beschaltet werden</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>darf offen bleiben</translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation>Zeitdiagramm</translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation>Kein Zeitdiagramm: %1</translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation>Die Anschlüsse des Beispielprojekts %1, während sein Szenario %2 läuft, ab dem Einschalten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>Die eine Erwartung des Szenarios traf zu.</numerusform>
+            <numerusform>Alle %n Erwartungen des Szenarios trafen zu.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n Erwartung des Szenarios traf nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
+            <numerusform>%n Erwartungen des Szenarios trafen nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Zustände</translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation>DiagCode enthält den Zustand als 16-Bit-Muster (16#8000 liest sich in einem Register als -32768). Die Ausgänge, die jeder Zustand einschaltet:</translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation>Die Ausgänge, die jeder Zustand einschaltet:</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation>Jeder Zyklus nimmt höchstens einen Übergang: den ersten der Liste des Zustands, dessen Bedingung erfüllt ist. Die Ausgänge folgen dann dem neuen Zustand. In den Bedingungen ist * UND, + ODER und / NICHT, wie im Programm.</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>Im Zustand</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation>Nächster Zustand</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>immer</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>jeder</translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation>Die übrigen Zeilen des Bausteins, die die Bedingungen und Ausgänge verwenden:</translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation>Ein Systembaustein: der Simulator führt seinen Befehl %1 aus.</translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation>Bibliothek %1, Version %2</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>darf offen bleiben</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>muss beschaltet werden</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>Vorgabe %1</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation>Konstante</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation>Doppelregister</translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation>Bit</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>Eingang</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>IDE for Pluto safety PLCs.</source>
@@ -44,16 +212,16 @@
         <translation>Zuerst das Szenario im Simulator ausführen, damit das Fenster den Zustand zeigt, in dem es endet.</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Die Seite, die gezeigt wird: ladder:N (der Code von Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), variables:N, unit:N oder project.</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
-        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, variables:N und unit:N für Einheit N, ladder:N.S und text:N.S für ihre Sequenz S sowie project</translation>
-    </message>
-    <message>
         <source>%1 has no sequence %2 in unit %3</source>
         <translation>%1 hat keine Sequenz %2 in Einheit %3</translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
+        <translation>Die anzuzeigende Seite: ladder:N (der Code der Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), asi:N (ihre AS-i-Optionen), variables:N, unit:N oder project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <translation>unbekannte Seite „%1“; die Seiten sind ladder:N, text:N, io:N, asi:N, variables:N und unit:N für die Einheit N, ladder:N.S und text:N.S für ihre Sequenz S, und project</translation>
     </message>
 </context>
 <context>
@@ -413,6 +581,47 @@
     </message>
 </context>
 <context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet ihn auf.</numerusform>
+            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet sie auf.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation>Das Projekt</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation>Projekt zusammenführen</translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation>Öffnen Sie zuerst das Projekt, das zusammengeführt werden soll (Datei &gt; Öffnen); seine Einheiten werden dann zu %1 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation>Die Einheiten dieses Projekts zu %1 hinzufügen:</translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation>%1 kann nicht mit %2 zusammengeführt werden: Jede Einheit muss ihre Station behalten, und jeder symbolische Name darf nur in einem der Projekte vorkommen.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation>%1 ist mit %2 zusammengeführt. Jeder Name, den beide verwendeten, bleibt nur in den Einheiten, die ihn definieren; anderswo wird seine Variable mit ihrer Adresse geschrieben.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
+        <translation>%1 ist mit %2 zusammengeführt.</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -432,6 +641,81 @@
     </message>
 </context>
 <context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Save All</source>
+        <translation>Alle speichern</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Ja</translation>
+    </message>
+    <message>
+        <source>Yes to &amp;All</source>
+        <translation>Ja, &amp;alle</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Nein</translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation>N&amp;ein, keine</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation>Ignorieren</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Hilfe</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Voreinstellungen</translation>
+    </message>
+</context>
+<context>
     <name>UnitCaption</name>
     <message>
         <source>Pluto %1 — %2</source>
@@ -440,6 +724,288 @@
     <message>
         <source>Pluto %1</source>
         <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiOptionsPage</name>
+    <message>
+        <source>Bus Master</source>
+        <translation>Bus-Master</translation>
+    </message>
+    <message>
+        <source>Monitor only</source>
+        <translation>Nur Monitor</translation>
+    </message>
+    <message>
+        <source>Monitor / Slave</source>
+        <translation>Monitor / Slave</translation>
+    </message>
+    <message>
+        <source>Monitor / Slave with 3 extra virtual slaves</source>
+        <translation>Monitor / Slave mit 3 zusätzlichen virtuellen Slaves</translation>
+    </message>
+    <message>
+        <source>AS-i bus not used</source>
+        <translation>AS-i-Bus nicht benutzt</translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation>Undefiniert</translation>
+    </message>
+    <message>
+        <source>Safe Input</source>
+        <translation>Sicherer Eingang</translation>
+    </message>
+    <message>
+        <source>Nonsafe Std</source>
+        <translation>Nicht sicher, Standard</translation>
+    </message>
+    <message>
+        <source>Nonsafe B</source>
+        <translation>Nicht sicher, B</translation>
+    </message>
+    <message>
+        <source>Nonsafe A</source>
+        <translation>Nicht sicher, A</translation>
+    </message>
+    <message>
+        <source>Combined Transaction B</source>
+        <translation>Combined Transaction B</translation>
+    </message>
+    <message>
+        <source>Combined Transaction A</source>
+        <translation>Combined Transaction A</translation>
+    </message>
+    <message>
+        <source>Analog</source>
+        <translation>Analog</translation>
+    </message>
+    <message>
+        <source>Safe Output</source>
+        <translation>Sicherer Ausgang</translation>
+    </message>
+    <message>
+        <source>Pluto as Safe Input</source>
+        <translation>Pluto als sicherer Eingang</translation>
+    </message>
+    <message>
+        <source>No channel monitoring</source>
+        <translation>Keine Kanalüberwachung</translation>
+    </message>
+    <message>
+        <source>Channel monitoring</source>
+        <translation>Kanalüberwachung</translation>
+    </message>
+    <message>
+        <source>Chan mon &amp; debounce filter</source>
+        <translation>Kanalüberw. &amp; Entprellfilter</translation>
+    </message>
+    <message>
+        <source>Simultaneously</source>
+        <translation>Gleichzeitig</translation>
+    </message>
+    <message>
+        <source>Simultaneously &amp; debounce</source>
+        <translation>Gleichzeitig &amp; Entprellung</translation>
+    </message>
+    <message>
+        <source>AS-i general options</source>
+        <translation>Allgemeine AS-i-Optionen</translation>
+    </message>
+    <message>
+        <source>AS-i bus working mode</source>
+        <translation>Betriebsart des AS-i-Busses</translation>
+    </message>
+    <message>
+        <source>Set AS-i bus working mode</source>
+        <translation>AS-i-Betriebsart setzen</translation>
+    </message>
+    <message>
+        <source>ASi &amp;slave address:</source>
+        <translation>ASi-&amp;Slave-Adresse:</translation>
+    </message>
+    <message>
+        <source>Set AS-i slave address</source>
+        <translation>AS-i-Slave-Adresse setzen</translation>
+    </message>
+    <message>
+        <source>Optimize for</source>
+        <translation>Optimieren für</translation>
+    </message>
+    <message>
+        <source>Short stop time (worst case, when error)</source>
+        <translation>Kurze Abschaltzeit (schlimmster Fall, bei Fehler)</translation>
+    </message>
+    <message>
+        <source>Disturbance immunity</source>
+        <translation>Störfestigkeit</translation>
+    </message>
+    <message>
+        <source>Disturbance immunity is not recommended when fewer than 20 slaves are used: the worst case stop time grows by 10 ms.</source>
+        <translation>Störfestigkeit wird bei weniger als 20 Slaves nicht empfohlen: Die Abschaltzeit im schlimmsten Fall wächst um 10 ms.</translation>
+    </message>
+    <message>
+        <source>Set AS-i optimisation</source>
+        <translation>AS-i-Optimierung setzen</translation>
+    </message>
+    <message>
+        <source>AS-i slaves</source>
+        <translation>AS-i-Slaves</translation>
+    </message>
+    <message>
+        <source>Slave No</source>
+        <translation>Slave-Nr.</translation>
+    </message>
+    <message>
+        <source>Type of Slave</source>
+        <translation>Art des Slaves</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Param</source>
+        <translation>Param</translation>
+    </message>
+    <message>
+        <source>Profile/ID1</source>
+        <translation>Profil/ID1</translation>
+    </message>
+    <message>
+        <source>Channel Monitoring</source>
+        <translation>Kanalüberwachung</translation>
+    </message>
+    <message>
+        <source>Time limit</source>
+        <translation>Zeitgrenze</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Reading the slaves from the bus, teaching safety codes, the code tables and changing a slave&apos;s address need a Pluto on a real AS-i bus, and are not in Rungsmith. A slave the code uses but this table does not define is a warning when compiling; the simulator gives each safe input slave two channels that follow its channel monitoring.</source>
+        <translation>Das Einlesen der Slaves vom Bus, das Einlernen der Sicherheitscodes, die Codetabellen und das Ändern der Adresse eines Slaves brauchen einen Pluto an einem echten AS-i-Bus und sind nicht in Rungsmith. Ein Slave, den der Code benutzt, den diese Tabelle aber nicht definiert, ist beim Kompilieren eine Warnung; der Simulator gibt jedem sicheren Eingangsslave zwei Kanäle, die seiner Kanalüberwachung folgen.</translation>
+    </message>
+    <message>
+        <source>%1 — AS-i Options</source>
+        <translation>%1 — AS-i-Optionen</translation>
+    </message>
+    <message>
+        <source>How the unit works on its AS-i bus, and what each slave address holds (manual Part 1, 7.1).</source>
+        <translation>Wie die Einheit an ihrem AS-i-Bus arbeitet und was jede Slave-Adresse enthält (Handbuch Teil 1, 7.1).</translation>
+    </message>
+    <message>
+        <source>%1 of %2 slaves are Safe Output or Pluto as Safe Input, the most a Pluto takes.</source>
+        <translation>%1 von %2 Slaves sind sichere Ausgänge oder Pluto als sicherer Eingang, die Höchstzahl, die ein Pluto nimmt.</translation>
+    </message>
+    <message>
+        <source>%1 takes the whole address: a B slave only goes beside an A/B slave.</source>
+        <translation>%1 belegt die ganze Adresse: Ein B-Slave steht nur neben einem A/B-Slave.</translation>
+    </message>
+    <message>
+        <source>%1 monitors its channels itself.</source>
+        <translation>%1 überwacht seine Kanäle selbst.</translation>
+    </message>
+    <message>
+        <source>Set AS-i slave %1</source>
+        <translation>AS-i-Slave %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiProfileDialog</name>
+    <message>
+        <source>%1 (Outputs)</source>
+        <translation>%1 (Ausgänge)</translation>
+    </message>
+    <message>
+        <source>%1 (Safe slave)</source>
+        <translation>%1 (Sicherer Slave)</translation>
+    </message>
+    <message>
+        <source>%1 (Standard slave)</source>
+        <translation>%1 (Standard-Slave)</translation>
+    </message>
+    <message>
+        <source>AS-i Profile</source>
+        <translation>AS-i-Profil</translation>
+    </message>
+    <message>
+        <source>&amp;I/O configuration:</source>
+        <translation>&amp;E/A-Konfiguration:</translation>
+    </message>
+    <message>
+        <source>I&amp;D code:</source>
+        <translation>I&amp;D-Code:</translation>
+    </message>
+    <message>
+        <source>ID&amp;2:</source>
+        <translation>ID&amp;2:</translation>
+    </message>
+    <message>
+        <source>ID&amp;1:</source>
+        <translation>ID&amp;1:</translation>
+    </message>
+    <message>
+        <source>Examples from the manual: S-0.B… a safe slave; S-7.B… a safe slave with outputs; S-7.0… a standard non-safe slave with 4 inputs and 4 outputs. The slave&apos;s own manual gives its profile.</source>
+        <translation>Beispiele aus dem Handbuch: S-0.B… ein sicherer Slave; S-7.B… ein sicherer Slave mit Ausgängen; S-7.0… ein nicht sicherer Standard-Slave mit 4 Eingängen und 4 Ausgängen. Das Handbuch des Slaves nennt sein Profil.</translation>
+    </message>
+    <message>
+        <source>Profile for %1 = %2</source>
+        <translation>Profil für %1 = %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation>Die Bibliotheken des Projekts enthalten keine Bausteine. Fügen Sie auf der Projektseite eine Bibliothek hinzu (Funktionsbibliotheken).</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Suchen:</translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation>Tippen, um nach Name oder Beschreibung zu filtern</translation>
+    </message>
+    <message>
+        <source>Insert Function Block</source>
+        <translation>Funktionsbaustein einfügen</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation>Die Dokumentation des Bausteins: Zustände, Übergänge und ein Zeitdiagramm</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation>%1 — Bausteindokumentation</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation>Anschlüsse von %1</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
     </message>
 </context>
 <context>
@@ -495,6 +1061,117 @@
     <message>
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
         <translation>Die Programmsignatur des kompilierten Codes der Einheit, wie rungsmith-cli signature sie ausgibt; sie ändert sich genau dann, wenn sich ändert, was die Einheit tut</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation>Einheit hinzugefügt</translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation>Einheit entfernt</translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation>Typ geändert</translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation>ID-Code geändert</translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation>E/A-Optionen geändert</translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation>exportierte und remanente Variablen geändert</translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation>Namen und Beschreibungen geändert</translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation>Kommentare geändert</translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation>Prüfbericht als &amp;PDF speichern …</translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation>Änderungen seit der Validierung</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Vergleichen mit</translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation>%1 im jetzigen Stand, verglichen mit der am %2 von %3 validierten Version</translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation>%1 im jetzigen Stand (neu), verglichen mit %2 (alt)</translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation>Eingabetaste oder Doppelklick öffnet ein Netzwerk im Kontaktplan</translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation>Wird verglichen …</translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation>Pluto %1: %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation>Pluto %1 %2 Netzwerk %3: hinzugefügt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation>Pluto %1 %2 Netzwerk %3: entfernt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation>Pluto %1 %2 Netzwerk %3: geändert</translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation>Kein Netzwerk, keine Einheit und keine Option unterscheidet sich.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation>Kein geändertes Verhalten; nur der Text hat sich geändert.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation>Kein geändertes Verhalten.</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation>Verhalten geändert in %1 (Projektsignatur %2, war %3).</translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation>Es gibt noch nichts zu speichern.</translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation>Prüfbericht als PDF speichern</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -1610,6 +2287,94 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation>Die Bibliotheksdatei ist ein Name aus Buchstaben, Ziffern und &apos;_&apos; im Ordner des Projekts, etwa Meine_Bausteine.rslib.</translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation>privater Merker</translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation>Steht für</translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation>Anschluss oder private Variable</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation>Was die Netzwerke lesen, wird ein Eingang, was sie schreiben, ein Ausgang; ein Merker, den nur sie verwenden, wird der eigene des Bausteins. Benennen Sie die Anschlüsse so, wie die Anwender des Bausteins sie sehen sollen. Kommentare an den Anweisungen kommen nicht in den Baustein.</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>Beschrei&amp;bung:</translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation>&amp;Bibliotheksdatei:</translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation>Baustein&amp;name:</translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation>Was der Baustein tut, für seine Anwender</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Baustein erstellen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation>Als validiert markieren</translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation>Hält die Programmsignaturen dieser Version als validierte Basislinie fest: Von nun an sagt die Prüfung, was sich seitdem geändert hat. Es ändert nichts an dem, was die Einheiten tun.</translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation>Validiert &amp;von:</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation>Als validiert &amp;markieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt ihn.</numerusform>
+            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt sie.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation>Netzwerkkommentar</translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation>Eingabe beginnt eine neue Zeile; Strg+Eingabe bestätigt.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::NewProjectDialog</name>
     <message>
         <source>New project</source>
@@ -1832,6 +2597,84 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>&amp;Accept the Change...</source>
         <translation>Änderung &amp;annehmen …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation>Quelldatei mit &amp;Passwort schützen</translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation>Ändern der Konfigurationsoptionen</translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation>Nur mit dem &amp;Hauptpasswort möglich</translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation>Ohne Passwort mö&amp;glich</translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation>Passwort für Konfigurations&amp;optionen erforderlich</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Passwortschutz</translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation>Die Datei speichert kein Passwort, nur eine Signatur, die nur das Passwort erzeugen kann, sodass eine Änderung außerhalb von Rungsmith sichtbar wird. Jeder kann die Datei weiterhin öffnen und lesen.</translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation>Ha&amp;uptpasswort:</translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation>&amp;Wiederholen:</translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation>Pa&amp;sswort für Konfigurationsoptionen:</translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation>Wi&amp;ederholen:</translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation>Geben Sie das Hauptpasswort ein.</translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation>Hauptpasswort und Wiederholung stimmen nicht überein.</translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation>Geben Sie das Passwort für die Konfigurationsoptionen ein.</translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation>Passwort für die Konfigurationsoptionen und Wiederholung stimmen nicht überein.</translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation>Das Passwort für die Konfigurationsoptionen muss sich vom Hauptpasswort unterscheiden, sonst gäbe es volle Berechtigung.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
     </message>
 </context>
 <context>
@@ -2287,6 +3130,68 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>AS-i Options</source>
+        <translation>AS-i-Optionen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation>Mit &amp;voller Berechtigung öffnen</translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation>Mit Berechtigung zum &amp;Konfigurieren öffnen</translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation>&amp;Schreibgeschützt öffnen</translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation>Geschütztes Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation>„%1“ ist mit einem Passwort geschützt. Es lässt sich ohne Passwort öffnen, aber dann kann sich nichts darin ändern.</translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation>Erfordert das Hauptpasswort; alles kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation>Erfordert kein Passwort; nur die Konfigurationsoptionen können sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation>Erfordert das Passwort für die Konfigurationsoptionen oder das Hauptpasswort; nur die Konfigurationsoptionen können sich ändern.</translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation>Erfordert kein Passwort; nichts kann sich ändern.</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunde erneut.</numerusform>
+            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunden erneut.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation>Änderung annehmen</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::RemanentDialog</name>
@@ -2351,6 +3256,21 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
         <translation>%1: abgebrochen bei t = %2 s, bis dahin %3 bestanden, %4 fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation>Ändert sich genau dann, wenn sich ändert, was das Programm tut; Formatierung, Kommentare, Namen und Beschreibungen lassen sie, wie sie ist</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>wird berechnet …</translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>keine, solange das Projekt Fehler hat (Erstellen &gt; Kompilieren zeigt sie)</translation>
     </message>
 </context>
 <context>
@@ -3073,6 +3993,10 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
         <source>Stop &amp;Watching</source>
         <translation>&amp;Nicht mehr beobachten</translation>
     </message>
+    <message>
+        <source>A channel is open (0) or closed (1).</source>
+        <translation>Ein Kanal ist offen (0) oder geschlossen (1).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformPanel</name>
@@ -3149,692 +4073,6 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
         <translation>&lt;b&gt;&amp;Zuletzt geöffnete Projekte&lt;/b&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>BlockText</name>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1.</source>
-        <translation>Ein Systembaustein: der Simulator führt seinen Befehl %1 aus.</translation>
-    </message>
-    <message>
-        <source>library %1, version %2</source>
-        <translation>Bibliothek %1, Version %2</translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation>darf offen bleiben</translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation>muss beschaltet werden</translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation>Vorgabe %1</translation>
-    </message>
-    <message>
-        <source>constant</source>
-        <translation>Konstante</translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <source>double register</source>
-        <translation>Doppelregister</translation>
-    </message>
-    <message>
-        <source>register</source>
-        <translation>Register</translation>
-    </message>
-    <message>
-        <source>bit</source>
-        <translation>Bit</translation>
-    </message>
-    <message>
-        <source>output</source>
-        <translation>Ausgang</translation>
-    </message>
-    <message>
-        <source>input</source>
-        <translation>Eingang</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockChooserDialog</name>
-    <message>
-        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
-        <translation>Die Bibliotheken des Projekts enthalten keine Bausteine. Fügen Sie auf der Projektseite eine Bibliothek hinzu (Funktionsbibliotheken).</translation>
-    </message>
-    <message>
-        <source>&amp;Find:</source>
-        <translation>&amp;Suchen:</translation>
-    </message>
-    <message>
-        <source>Type to filter by name or description</source>
-        <translation>Tippen, um nach Name oder Beschreibung zu filtern</translation>
-    </message>
-    <message>
-        <source>Insert Function Block</source>
-        <translation>Funktionsbaustein einfügen</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation>&amp;Dokumentation...</translation>
-    </message>
-    <message>
-        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
-        <translation>Die Dokumentation des Bausteins: Zustände, Übergänge und ein Zeitdiagramm</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockPinsDialog</name>
-    <message>
-        <source>%1 Pins</source>
-        <translation>Anschlüsse von %1</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation>&amp;Dokumentation...</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MakeBlockDialog</name>
-    <message>
-        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
-        <translation>Die Bibliotheksdatei ist ein Name aus Buchstaben, Ziffern und &apos;_&apos; im Ordner des Projekts, etwa Meine_Bausteine.rslib.</translation>
-    </message>
-    <message>
-        <source>private memory</source>
-        <translation>privater Merker</translation>
-    </message>
-    <message>
-        <source>Stands for</source>
-        <translation>Steht für</translation>
-    </message>
-    <message>
-        <source>Pin or private variable</source>
-        <translation>Anschluss oder private Variable</translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
-        <translation>Was die Netzwerke lesen, wird ein Eingang, was sie schreiben, ein Ausgang; ein Merker, den nur sie verwenden, wird der eigene des Bausteins. Benennen Sie die Anschlüsse so, wie die Anwender des Bausteins sie sehen sollen. Kommentare an den Anweisungen kommen nicht in den Baustein.</translation>
-    </message>
-    <message>
-        <source>&amp;Description:</source>
-        <translation>Beschrei&amp;bung:</translation>
-    </message>
-    <message>
-        <source>&amp;Library file:</source>
-        <translation>&amp;Bibliotheksdatei:</translation>
-    </message>
-    <message>
-        <source>Block &amp;name:</source>
-        <translation>Baustein&amp;name:</translation>
-    </message>
-    <message>
-        <source>What the block does, for its users</source>
-        <translation>Was der Baustein tut, für seine Anwender</translation>
-    </message>
-    <message>
-        <source>Make Block</source>
-        <translation>Baustein erstellen</translation>
-    </message>
-</context>
-<context>
-    <name>BlockDocumentation</name>
-    <message>
-        <source>Library %1, version %2. Block version %3.</source>
-        <translation>Bibliothek %1, Version %2. Bausteinversion %3.</translation>
-    </message>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
-        <translation>Ein Systembaustein: Der Simulator führt seine Anweisung %1 aus, die die Sprache nicht ausdrücken kann.</translation>
-    </message>
-    <message>
-        <source>Pins</source>
-        <translation>Anschlüsse</translation>
-    </message>
-    <message>
-        <source>Pin</source>
-        <translation>Anschluss</translation>
-    </message>
-    <message>
-        <source>Kind</source>
-        <translation>Art</translation>
-    </message>
-    <message>
-        <source>When not bound</source>
-        <translation>Wenn nicht beschaltet</translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation>Vorgabe %1</translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation>muss beschaltet werden</translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation>darf offen bleiben</translation>
-    </message>
-    <message>
-        <source>Timing diagram</source>
-        <translation>Zeitdiagramm</translation>
-    </message>
-    <message>
-        <source>No timing diagram: %1</source>
-        <translation>Kein Zeitdiagramm: %1</translation>
-    </message>
-    <message>
-        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
-        <translation>Die Anschlüsse des Beispielprojekts %1, während sein Szenario %2 läuft, ab dem Einschalten.</translation>
-    </message>
-    <message numerus="yes">
-        <source>All %n expectation(s) of the scenario held.</source>
-        <translation>
-            <numerusform>Die eine Erwartung des Szenarios traf zu.</numerusform>
-            <numerusform>Alle %n Erwartungen des Szenarios trafen zu.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
-        <translation>
-            <numerusform>%n Erwartung des Szenarios traf nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
-            <numerusform>%n Erwartungen des Szenarios trafen nicht zu: Das Diagramm zeigt, was der Baustein tat, nicht was das Beispiel erwartet.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>States</source>
-        <translation>Zustände</translation>
-    </message>
-    <message>
-        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
-        <translation>DiagCode enthält den Zustand als 16-Bit-Muster (16#8000 liest sich in einem Register als -32768). Die Ausgänge, die jeder Zustand einschaltet:</translation>
-    </message>
-    <message>
-        <source>The outputs each state switches on:</source>
-        <translation>Die Ausgänge, die jeder Zustand einschaltet:</translation>
-    </message>
-    <message>
-        <source>State</source>
-        <translation>Zustand</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>Bedeutung</translation>
-    </message>
-    <message>
-        <source>Transitions</source>
-        <translation>Übergänge</translation>
-    </message>
-    <message>
-        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
-        <translation>Jeder Zyklus nimmt höchstens einen Übergang: den ersten der Liste des Zustands, dessen Bedingung erfüllt ist. Die Ausgänge folgen dann dem neuen Zustand. In den Bedingungen ist * UND, + ODER und / NICHT, wie im Programm.</translation>
-    </message>
-    <message>
-        <source>In state</source>
-        <translation>Im Zustand</translation>
-    </message>
-    <message>
-        <source>Condition</source>
-        <translation>Bedingung</translation>
-    </message>
-    <message>
-        <source>Next state</source>
-        <translation>Nächster Zustand</translation>
-    </message>
-    <message>
-        <source>always</source>
-        <translation>immer</translation>
-    </message>
-    <message>
-        <source>any</source>
-        <translation>jeder</translation>
-    </message>
-    <message>
-        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
-        <translation>Die übrigen Zeilen des Bausteins, die die Bedingungen und Ausgänge verwenden:</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockDocumentationDialog</name>
-    <message>
-        <source>%1 — Block Documentation</source>
-        <translation>%1 — Bausteindokumentation</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Speichern</translation>
-    </message>
-    <message>
-        <source>Save All</source>
-        <translation>Alle speichern</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Öffnen</translation>
-    </message>
-    <message>
-        <source>&amp;Yes</source>
-        <translation>&amp;Ja</translation>
-    </message>
-    <message>
-        <source>Yes to &amp;All</source>
-        <translation>Ja, &amp;alle</translation>
-    </message>
-    <message>
-        <source>&amp;No</source>
-        <translation>&amp;Nein</translation>
-    </message>
-    <message>
-        <source>N&amp;o to All</source>
-        <translation>N&amp;ein, keine</translation>
-    </message>
-    <message>
-        <source>Abort</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <source>Retry</source>
-        <translation>Wiederholen</translation>
-    </message>
-    <message>
-        <source>Ignore</source>
-        <translation>Ignorieren</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>Schließen</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Verwerfen</translation>
-    </message>
-    <message>
-        <source>Help</source>
-        <translation>Hilfe</translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation>Anwenden</translation>
-    </message>
-    <message>
-        <source>Reset</source>
-        <translation>Zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Restore Defaults</source>
-        <translation>Voreinstellungen</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ladder::Layout</name>
-    <message>
-        <source>step %1</source>
-        <translation>Schritt %1</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::NetworkCommentDialog</name>
-    <message>
-        <source>Network Comment</source>
-        <translation>Netzwerkkommentar</translation>
-    </message>
-    <message>
-        <source>Return starts a new line; Ctrl+Return confirms.</source>
-        <translation>Eingabe beginnt eine neue Zeile; Strg+Eingabe bestätigt.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::SignatureLabel</name>
-    <message>
-        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
-        <translation>Ändert sich genau dann, wenn sich ändert, was das Programm tut; Formatierung, Kommentare, Namen und Beschreibungen lassen sie, wie sie ist</translation>
-    </message>
-    <message>
-        <source>computing...</source>
-        <translation>wird berechnet …</translation>
-    </message>
-    <message>
-        <source>none while the project has errors (Build &gt; Compile shows them)</source>
-        <translation>keine, solange das Projekt Fehler hat (Erstellen &gt; Kompilieren zeigt sie)</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MarkValidatedDialog</name>
-    <message>
-        <source>Mark as Validated</source>
-        <translation>Als validiert markieren</translation>
-    </message>
-    <message>
-        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
-        <translation>Hält die Programmsignaturen dieser Version als validierte Basislinie fest: Von nun an sagt die Prüfung, was sich seitdem geändert hat. Es ändert nichts an dem, was die Einheiten tun.</translation>
-    </message>
-    <message>
-        <source>Validated &amp;by:</source>
-        <translation>Validiert &amp;von:</translation>
-    </message>
-    <message>
-        <source>&amp;Comment:</source>
-        <translation>&amp;Kommentar:</translation>
-    </message>
-    <message>
-        <source>&amp;Mark as Validated</source>
-        <translation>Als validiert &amp;markieren</translation>
-    </message>
-    <message numerus="yes">
-        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
-        <translation>
-            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt ihn.</numerusform>
-            <numerusform>Das Projekt hat %n Fehler und kann nicht validiert werden. Erstellen &gt; Kompilieren (F7) zeigt sie.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>ProjectComparison</name>
-    <message numerus="yes">
-        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
-        <translation>
-            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet ihn auf.</numerusform>
-            <numerusform>%1 hat %n Fehler, daher kann sein Verhalten nicht verglichen werden. Erstellen &gt; Kompilieren listet sie auf.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The project</source>
-        <translation>Das Projekt</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::CompareDialog</name>
-    <message>
-        <source>unit added</source>
-        <translation>Einheit hinzugefügt</translation>
-    </message>
-    <message>
-        <source>unit removed</source>
-        <translation>Einheit entfernt</translation>
-    </message>
-    <message>
-        <source>type changed</source>
-        <translation>Typ geändert</translation>
-    </message>
-    <message>
-        <source>ID code changed</source>
-        <translation>ID-Code geändert</translation>
-    </message>
-    <message>
-        <source>I/O options changed</source>
-        <translation>E/A-Optionen geändert</translation>
-    </message>
-    <message>
-        <source>exported and remanent variables changed</source>
-        <translation>exportierte und remanente Variablen geändert</translation>
-    </message>
-    <message>
-        <source>names and descriptions changed</source>
-        <translation>Namen und Beschreibungen geändert</translation>
-    </message>
-    <message>
-        <source>comments changed</source>
-        <translation>Kommentare geändert</translation>
-    </message>
-    <message>
-        <source>Save Review as &amp;PDF...</source>
-        <translation>Prüfbericht als &amp;PDF speichern …</translation>
-    </message>
-    <message>
-        <source>Changes Since Validation</source>
-        <translation>Änderungen seit der Validierung</translation>
-    </message>
-    <message>
-        <source>Compare With</source>
-        <translation>Vergleichen mit</translation>
-    </message>
-    <message>
-        <source>%1 as it is now, against the version validated on %2 by %3</source>
-        <translation>%1 im jetzigen Stand, verglichen mit der am %2 von %3 validierten Version</translation>
-    </message>
-    <message>
-        <source>%1 as it is now (new), against %2 (old)</source>
-        <translation>%1 im jetzigen Stand (neu), verglichen mit %2 (alt)</translation>
-    </message>
-    <message>
-        <source>Enter or a double click opens a network in the ladder</source>
-        <translation>Eingabetaste oder Doppelklick öffnet ein Netzwerk im Kontaktplan</translation>
-    </message>
-    <message>
-        <source>Comparing...</source>
-        <translation>Wird verglichen …</translation>
-    </message>
-    <message>
-        <source>Pluto %1: %2</source>
-        <translation>Pluto %1: %2</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: added</source>
-        <translation>Pluto %1 %2 Netzwerk %3: hinzugefügt</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: removed</source>
-        <translation>Pluto %1 %2 Netzwerk %3: entfernt</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: changed</source>
-        <translation>Pluto %1 %2 Netzwerk %3: geändert</translation>
-    </message>
-    <message>
-        <source>No network, unit or option differs.</source>
-        <translation>Kein Netzwerk, keine Einheit und keine Option unterscheidet sich.</translation>
-    </message>
-    <message>
-        <source>No change in behaviour; only the text changed.</source>
-        <translation>Kein geändertes Verhalten; nur der Text hat sich geändert.</translation>
-    </message>
-    <message>
-        <source>No change in behaviour.</source>
-        <translation>Kein geändertes Verhalten.</translation>
-    </message>
-    <message>
-        <source>Pluto %1</source>
-        <translation>Pluto %1</translation>
-    </message>
-    <message>
-        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
-        <translation>Verhalten geändert in %1 (Projektsignatur %2, war %3).</translation>
-    </message>
-    <message>
-        <source>There is nothing to save yet.</source>
-        <translation>Es gibt noch nichts zu speichern.</translation>
-    </message>
-    <message>
-        <source>Save Review as PDF</source>
-        <translation>Prüfbericht als PDF speichern</translation>
-    </message>
-    <message>
-        <source>PDF files (*.pdf)</source>
-        <translation>PDF-Dateien (*.pdf)</translation>
-    </message>
-</context>
-<context>
-    <name>ProjectMerging</name>
-    <message>
-        <source>Merge Project</source>
-        <translation>Projekt zusammenführen</translation>
-    </message>
-    <message>
-        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
-        <translation>Öffnen Sie zuerst das Projekt, das zusammengeführt werden soll (Datei &gt; Öffnen); seine Einheiten werden dann zu %1 hinzugefügt.</translation>
-    </message>
-    <message>
-        <source>Add the units of this project to %1:</source>
-        <translation>Die Einheiten dieses Projekts zu %1 hinzufügen:</translation>
-    </message>
-    <message>
-        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
-        <translation>%1 kann nicht mit %2 zusammengeführt werden: Jede Einheit muss ihre Station behalten, und jeder symbolische Name darf nur in einem der Projekte vorkommen.</translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
-        <translation>%1 ist mit %2 zusammengeführt. Jeder Name, den beide verwendeten, bleibt nur in den Einheiten, die ihn definieren; anderswo wird seine Variable mit ihrer Adresse geschrieben.</translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2.</source>
-        <translation>%1 ist mit %2 zusammengeführt.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PasswordProtectDialog</name>
-    <message>
-        <source>&amp;Password protect source file</source>
-        <translation>Quelldatei mit &amp;Passwort schützen</translation>
-    </message>
-    <message>
-        <source>Change of config options</source>
-        <translation>Ändern der Konfigurationsoptionen</translation>
-    </message>
-    <message>
-        <source>Only possible with &amp;main password</source>
-        <translation>Nur mit dem &amp;Hauptpasswort möglich</translation>
-    </message>
-    <message>
-        <source>Possible &amp;without password</source>
-        <translation>Ohne Passwort mö&amp;glich</translation>
-    </message>
-    <message>
-        <source>Config &amp;options password required</source>
-        <translation>Passwort für Konfigurations&amp;optionen erforderlich</translation>
-    </message>
-    <message>
-        <source>Password Protect</source>
-        <translation>Passwortschutz</translation>
-    </message>
-    <message>
-        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
-        <translation>Die Datei speichert kein Passwort, nur eine Signatur, die nur das Passwort erzeugen kann, sodass eine Änderung außerhalb von Rungsmith sichtbar wird. Jeder kann die Datei weiterhin öffnen und lesen.</translation>
-    </message>
-    <message>
-        <source>Ma&amp;in password:</source>
-        <translation>Ha&amp;uptpasswort:</translation>
-    </message>
-    <message>
-        <source>&amp;Repeat:</source>
-        <translation>&amp;Wiederholen:</translation>
-    </message>
-    <message>
-        <source>Config options pa&amp;ssword:</source>
-        <translation>Pa&amp;sswort für Konfigurationsoptionen:</translation>
-    </message>
-    <message>
-        <source>R&amp;epeat:</source>
-        <translation>Wi&amp;ederholen:</translation>
-    </message>
-    <message>
-        <source>Give the main password.</source>
-        <translation>Geben Sie das Hauptpasswort ein.</translation>
-    </message>
-    <message>
-        <source>The main password and its repetition differ.</source>
-        <translation>Hauptpasswort und Wiederholung stimmen nicht überein.</translation>
-    </message>
-    <message>
-        <source>Give the config options password.</source>
-        <translation>Geben Sie das Passwort für die Konfigurationsoptionen ein.</translation>
-    </message>
-    <message>
-        <source>The config options password and its repetition differ.</source>
-        <translation>Passwort für die Konfigurationsoptionen und Wiederholung stimmen nicht überein.</translation>
-    </message>
-    <message>
-        <source>The config options password must differ from the main password, or it would give full permission.</source>
-        <translation>Das Passwort für die Konfigurationsoptionen muss sich vom Hauptpasswort unterscheiden, sonst gäbe es volle Berechtigung.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::ProtectedOpenDialog</name>
-    <message>
-        <source>Open with &amp;full permission</source>
-        <translation>Mit &amp;voller Berechtigung öffnen</translation>
-    </message>
-    <message>
-        <source>Open with permission to &amp;configure</source>
-        <translation>Mit Berechtigung zum &amp;Konfigurieren öffnen</translation>
-    </message>
-    <message>
-        <source>Open in &amp;read only mode</source>
-        <translation>&amp;Schreibgeschützt öffnen</translation>
-    </message>
-    <message>
-        <source>Open Protected Project</source>
-        <translation>Geschütztes Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
-        <translation>„%1“ ist mit einem Passwort geschützt. Es lässt sich ohne Passwort öffnen, aber dann kann sich nichts darin ändern.</translation>
-    </message>
-    <message>
-        <source>Takes the main password; everything can change.</source>
-        <translation>Erfordert das Hauptpasswort; alles kann sich ändern.</translation>
-    </message>
-    <message>
-        <source>Takes no password; only the Config Options can change.</source>
-        <translation>Erfordert kein Passwort; nur die Konfigurationsoptionen können sich ändern.</translation>
-    </message>
-    <message>
-        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
-        <translation>Erfordert das Passwort für die Konfigurationsoptionen oder das Hauptpasswort; nur die Konfigurationsoptionen können sich ändern.</translation>
-    </message>
-    <message>
-        <source>Takes no password; nothing can change.</source>
-        <translation>Erfordert kein Passwort; nichts kann sich ändern.</translation>
-    </message>
-    <message>
-        <source>&amp;Password:</source>
-        <translation>&amp;Passwort:</translation>
-    </message>
-    <message>
-        <source>The password does not open the project with this permission.</source>
-        <translation>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung.</translation>
-    </message>
-    <message numerus="yes">
-        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
-        <translation>
-            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunde erneut.</numerusform>
-            <numerusform>Das Passwort öffnet das Projekt nicht mit dieser Berechtigung. Versuchen Sie es in %n Sekunden erneut.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Accept the Change</source>
-        <translation>Änderung annehmen</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PermissionNote</name>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Passwortgeschützt, schreibgeschützt geöffnet: Nichts kann sich ändern.</translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
-        <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,174 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>BlockDocumentation</name>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>The scenario&apos;s one expectation held.</numerusform>
+            <numerusform>All %n expectations of the scenario held.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n expectation of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
+            <numerusform>%n expectations of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>IDE for Pluto safety PLCs.</source>
@@ -44,15 +212,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 has no sequence %2 in unit %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -413,6 +581,47 @@
     </message>
 </context>
 <context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 has %n error, so its behaviour cannot be compared. Build &gt; Compile lists it.</numerusform>
+            <numerusform>%1 has %n errors, so its behaviour cannot be compared. Build &gt; Compile lists them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -432,33 +641,77 @@
     </message>
 </context>
 <context>
-    <name>RemanentDialog</name>
+    <name>QPlatformTheme</name>
     <message>
-        <source>Remanent Variables of Pluto %1</source>
+        <source>OK</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <source>Save</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>All</source>
+        <source>Save All</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>None</source>
+        <source>Open</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Registers</source>
+        <source>&amp;Yes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Memories</source>
+        <source>Yes to &amp;All</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>All 32 registers are remanent, so no memory can be.</source>
+        <source>&amp;No</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -470,6 +723,288 @@
     </message>
     <message>
         <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiOptionsPage</name>
+    <message>
+        <source>Bus Master</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Monitor only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Monitor / Slave</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Monitor / Slave with 3 extra virtual slaves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i bus not used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safe Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nonsafe Std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nonsafe B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nonsafe A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Combined Transaction B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Combined Transaction A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safe Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto as Safe Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No channel monitoring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Channel monitoring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chan mon &amp; debounce filter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simultaneously</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simultaneously &amp; debounce</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i general options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i bus working mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set AS-i bus working mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ASi &amp;slave address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set AS-i slave address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Optimize for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Short stop time (worst case, when error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disturbance immunity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disturbance immunity is not recommended when fewer than 20 slaves are used: the worst case stop time grows by 10 ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set AS-i optimisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i slaves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slave No</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type of Slave</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Param</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile/ID1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Channel Monitoring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the slaves from the bus, teaching safety codes, the code tables and changing a slave&apos;s address need a Pluto on a real AS-i bus, and are not in Rungsmith. A slave the code uses but this table does not define is a warning when compiling; the simulator gives each safe input slave two channels that follow its channel monitoring.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — AS-i Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the unit works on its AS-i bus, and what each slave address holds (manual Part 1, 7.1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 slaves are Safe Output or Pluto as Safe Input, the most a Pluto takes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 takes the whole address: a B slave only goes beside an A/B slave.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 monitors its channels itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set AS-i slave %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiProfileDialog</name>
+    <message>
+        <source>%1 (Outputs)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (Safe slave)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (Standard slave)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AS-i Profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;I/O configuration:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I&amp;D code:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ID&amp;2:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ID&amp;1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Examples from the manual: S-0.B… a safe slave; S-7.B… a safe slave with outputs; S-7.0… a standard non-safe slave with 4 inputs and 4 outputs. The slave&apos;s own manual gives its profile.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile for %1 = %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>Insert Function Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -525,6 +1060,117 @@
     </message>
     <message>
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1640,6 +2286,94 @@ Its text page (F6) shows and edits it.</source>
     </message>
 </context>
 <context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>Make Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>The project has %n error and cannot be validated. Build &gt; Compile (F7) lists it.</numerusform>
+            <numerusform>The project has %n errors and cannot be validated. Build &gt; Compile (F7) lists them.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::NewProjectDialog</name>
     <message>
         <source>New project</source>
@@ -1861,6 +2595,84 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>&amp;Accept the Change...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2316,6 +3128,99 @@ Config Options change %2; opened %3</source>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>AS-i Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>The password does not open the project with this permission. Try again in %n second.</numerusform>
+            <numerusform>The password does not open the project with this permission. Try again in %n seconds.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::RemanentDialog</name>
+    <message>
+        <source>Remanent Variables of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remanent variables keep their value when the power is off. Registers R100-R131 and memories M100-M131 can be remanent in any combination, except that with all the registers no memory can be.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All 32 registers are remanent, so no memory can be.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ScenarioFileViewer</name>
@@ -2348,6 +3253,21 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3071,6 +3991,10 @@ Config Options change %2; opened %3</source>
         <source>Stop &amp;Watching</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>A channel is open (0) or closed (1).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformPanel</name>
@@ -3146,692 +4070,6 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>BlockDocumentation</name>
-    <message numerus="yes">
-        <source>All %n expectation(s) of the scenario held.</source>
-        <translation>
-            <numerusform>The scenario&apos;s one expectation held.</numerusform>
-            <numerusform>All %n expectations of the scenario held.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
-        <translation>
-            <numerusform>%n expectation of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
-            <numerusform>%n expectations of the scenario failed: the diagram shows what the block did, not what the example expects.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Library %1, version %2. Block version %3.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pins</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Kind</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>When not bound</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Timing diagram</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No timing diagram: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>States</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The outputs each state switches on:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>State</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Transitions</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>In state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Condition</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Next state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>always</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>any</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>BlockText</name>
-    <message>
-        <source>input</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>bit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>register</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>double register</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>constant</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>library %1, version %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>OK</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Yes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Yes to &amp;All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;No</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>N&amp;o to All</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Abort</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Retry</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ignore</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Help</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Restore Defaults</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ladder::Layout</name>
-    <message>
-        <source>step %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockChooserDialog</name>
-    <message>
-        <source>Insert Function Block</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Type to filter by name or description</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Find:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockDocumentationDialog</name>
-    <message>
-        <source>%1 — Block Documentation</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockPinsDialog</name>
-    <message>
-        <source>%1 Pins</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MakeBlockDialog</name>
-    <message>
-        <source>Make Block</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>What the block does, for its users</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Block &amp;name:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Library file:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Description:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pin or private variable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stands for</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>private memory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::NetworkCommentDialog</name>
-    <message>
-        <source>Network Comment</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Return starts a new line; Ctrl+Return confirms.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::SignatureLabel</name>
-    <message>
-        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>computing...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>none while the project has errors (Build &gt; Compile shows them)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MarkValidatedDialog</name>
-    <message>
-        <source>Mark as Validated</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Validated &amp;by:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Comment:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Mark as Validated</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
-        <translation>
-            <numerusform>The project has %n error and cannot be validated. Build &gt; Compile (F7) lists it.</numerusform>
-            <numerusform>The project has %n errors and cannot be validated. Build &gt; Compile (F7) lists them.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>ProjectComparison</name>
-    <message numerus="yes">
-        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
-        <translation>
-            <numerusform>%1 has %n error, so its behaviour cannot be compared. Build &gt; Compile lists it.</numerusform>
-            <numerusform>%1 has %n errors, so its behaviour cannot be compared. Build &gt; Compile lists them.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The project</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::CompareDialog</name>
-    <message>
-        <source>unit added</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unit removed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>type changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ID code changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>I/O options changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>exported and remanent variables changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>names and descriptions changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>comments changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Review as &amp;PDF...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Changes Since Validation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compare With</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 as it is now, against the version validated on %2 by %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 as it is now (new), against %2 (old)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Enter or a double click opens a network in the ladder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Comparing...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: added</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: removed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No network, unit or option differs.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No change in behaviour; only the text changed.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No change in behaviour.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pluto %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>There is nothing to save yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Review as PDF</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PDF files (*.pdf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>ProjectMerging</name>
-    <message>
-        <source>Merge Project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Add the units of this project to %1:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PasswordProtectDialog</name>
-    <message>
-        <source>&amp;Password protect source file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change of config options</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Only possible with &amp;main password</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Possible &amp;without password</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Config &amp;options password required</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Password Protect</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ma&amp;in password:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Repeat:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Config options pa&amp;ssword:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>R&amp;epeat:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Give the main password.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The main password and its repetition differ.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Give the config options password.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The config options password and its repetition differ.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The config options password must differ from the main password, or it would give full permission.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::ProtectedOpenDialog</name>
-    <message>
-        <source>Open with &amp;full permission</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open with permission to &amp;configure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open in &amp;read only mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open Protected Project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Takes the main password; everything can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Takes no password; only the Config Options can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Takes no password; nothing can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Password:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The password does not open the project with this permission.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
-        <translation>
-            <numerusform>The password does not open the project with this permission. Try again in %n second.</numerusform>
-            <numerusform>The password does not open the project with this permission. Try again in %n seconds.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Accept the Change</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PermissionNote</name>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2,6 +2,174 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sv">
 <context>
+    <name>BlockDocumentation</name>
+    <message>
+        <source>Library %1, version %2. Block version %3.</source>
+        <translation>Bibliotek %1, version %2. Blockversion %3.</translation>
+    </message>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
+        <translation>Ett systemblock: simulatorn utför dess instruktion %1, som språket inte kan uttrycka.</translation>
+    </message>
+    <message>
+        <source>Pins</source>
+        <translation>Anslutningar</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Anslutning</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Slag</translation>
+    </message>
+    <message>
+        <source>When not bound</source>
+        <translation>Om inte ansluten</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>standard %1</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>måste anslutas</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>får lämnas öppen</translation>
+    </message>
+    <message>
+        <source>Timing diagram</source>
+        <translation>Tidsdiagram</translation>
+    </message>
+    <message>
+        <source>No timing diagram: %1</source>
+        <translation>Inget tidsdiagram: %1</translation>
+    </message>
+    <message>
+        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
+        <translation>Exempelprojektets %1 anslutningar medan dess scenario %2 körs, från tillslag.</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n expectation(s) of the scenario held.</source>
+        <translation>
+            <numerusform>Scenariots enda förväntan höll.</numerusform>
+            <numerusform>Scenariots alla %n förväntningar höll.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
+        <translation>
+            <numerusform>%n förväntan i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
+            <numerusform>%n förväntningar i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Tillstånd</translation>
+    </message>
+    <message>
+        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
+        <translation>DiagCode håller tillståndet som dess 16-bitarsmönster (16#8000 läses -32768 i ett register). Utgångarna som varje tillstånd slår till:</translation>
+    </message>
+    <message>
+        <source>The outputs each state switches on:</source>
+        <translation>Utgångarna som varje tillstånd slår till:</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Tillstånd</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Betydelse</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Övergångar</translation>
+    </message>
+    <message>
+        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
+        <translation>Varje programcykel tar högst en övergång: den första i tillståndets lista vars villkor är uppfyllt. Utgångarna följer sedan det nya tillståndet. I villkoren är * OCH, + ELLER och / INTE, som i programmet.</translation>
+    </message>
+    <message>
+        <source>In state</source>
+        <translation>I tillstånd</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Villkor</translation>
+    </message>
+    <message>
+        <source>Next state</source>
+        <translation>Nästa tillstånd</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>alltid</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>alla</translation>
+    </message>
+    <message>
+        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
+        <translation>Blockets övriga rader, som villkoren och utgångarna använder:</translation>
+    </message>
+</context>
+<context>
+    <name>BlockText</name>
+    <message>
+        <source>A system block: the simulator carries out its instruction %1.</source>
+        <translation>Ett systemblock: simulatorn utför dess instruktion %1.</translation>
+    </message>
+    <message>
+        <source>library %1, version %2</source>
+        <translation>bibliotek %1, version %2</translation>
+    </message>
+    <message>
+        <source>may stay open</source>
+        <translation>får lämnas öppen</translation>
+    </message>
+    <message>
+        <source>must be bound</source>
+        <translation>måste kopplas</translation>
+    </message>
+    <message>
+        <source>default %1</source>
+        <translation>standard %1</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <translation>konstant</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>tid</translation>
+    </message>
+    <message>
+        <source>double register</source>
+        <translation>dubbelregister</translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation>register</translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation>bit</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>utgång</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>ingång</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>IDE for Pluto safety PLCs.</source>
@@ -44,16 +212,16 @@
         <translation>Kör först scenariot i simulatorn, så att fönstret visar det tillstånd som det slutar i.</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), variables:N, unit:N, or project.</source>
-        <translation>Sidan som ska visas: ladder:N (koden för enhet N som stegdiagram), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), variables:N, unit:N eller project.</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, samt project</translation>
-    </message>
-    <message>
         <source>%1 has no sequence %2 in unit %3</source>
         <translation>%1 har ingen sekvens %2 i enhet %3</translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
+        <translation>Sidan som visas: ladder:N (koden för enhet N som ladder), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), asi:N (dess AS-i-alternativ), variables:N, unit:N eller project.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, asi:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, och project</translation>
     </message>
 </context>
 <context>
@@ -413,6 +581,47 @@
     </message>
 </context>
 <context>
+    <name>ProjectComparison</name>
+    <message numerus="yes">
+        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
+        <translation>
+            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar det.</numerusform>
+            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar dem.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project</source>
+        <translation>Projektet</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectMerging</name>
+    <message>
+        <source>Merge Project</source>
+        <translation>Sammanfoga projekt</translation>
+    </message>
+    <message>
+        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
+        <translation>Öppna först projektet som ska sammanfogas (Arkiv &gt; Öppna); dess enheter läggs sedan till i %1.</translation>
+    </message>
+    <message>
+        <source>Add the units of this project to %1:</source>
+        <translation>Lägg till enheterna i det här projektet i %1:</translation>
+    </message>
+    <message>
+        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
+        <translation>%1 kan inte sammanfogas med %2: varje enhet måste behålla sin station och varje symboliskt namn får bara finnas i ett av projekten.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
+        <translation>%1 är sammanfogat med %2. Varje namn som båda använde finns kvar bara i de enheter som definierar det; på andra ställen skrivs variabeln med sin adress.</translation>
+    </message>
+    <message>
+        <source>%1 is merged into %2.</source>
+        <translation>%1 är sammanfogat med %2.</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Option on</source>
@@ -432,6 +641,81 @@
     </message>
 </context>
 <context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Spara</translation>
+    </message>
+    <message>
+        <source>Save All</source>
+        <translation>Spara alla</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öppna</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Ja</translation>
+    </message>
+    <message>
+        <source>Yes to &amp;All</source>
+        <translation>Ja till &amp;alla</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Nej</translation>
+    </message>
+    <message>
+        <source>N&amp;o to All</source>
+        <translation>N&amp;ej till alla</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Försök igen</translation>
+    </message>
+    <message>
+        <source>Ignore</source>
+        <translation>Ignorera</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Stäng</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Förkasta</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Hjälp</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Verkställ</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Återställ</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Återställ standardvärden</translation>
+    </message>
+</context>
+<context>
     <name>UnitCaption</name>
     <message>
         <source>Pluto %1 — %2</source>
@@ -440,6 +724,288 @@
     <message>
         <source>Pluto %1</source>
         <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ladder::Layout</name>
+    <message>
+        <source>step %1</source>
+        <translation>steg %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiOptionsPage</name>
+    <message>
+        <source>Bus Master</source>
+        <translation>Busmaster</translation>
+    </message>
+    <message>
+        <source>Monitor only</source>
+        <translation>Endast monitor</translation>
+    </message>
+    <message>
+        <source>Monitor / Slave</source>
+        <translation>Monitor / slav</translation>
+    </message>
+    <message>
+        <source>Monitor / Slave with 3 extra virtual slaves</source>
+        <translation>Monitor / slav med 3 extra virtuella slavar</translation>
+    </message>
+    <message>
+        <source>AS-i bus not used</source>
+        <translation>AS-i-bussen används inte</translation>
+    </message>
+    <message>
+        <source>Undefined</source>
+        <translation>Odefinierad</translation>
+    </message>
+    <message>
+        <source>Safe Input</source>
+        <translation>Säker ingång</translation>
+    </message>
+    <message>
+        <source>Nonsafe Std</source>
+        <translation>Icke säker std</translation>
+    </message>
+    <message>
+        <source>Nonsafe B</source>
+        <translation>Icke säker B</translation>
+    </message>
+    <message>
+        <source>Nonsafe A</source>
+        <translation>Icke säker A</translation>
+    </message>
+    <message>
+        <source>Combined Transaction B</source>
+        <translation>Combined Transaction B</translation>
+    </message>
+    <message>
+        <source>Combined Transaction A</source>
+        <translation>Combined Transaction A</translation>
+    </message>
+    <message>
+        <source>Analog</source>
+        <translation>Analog</translation>
+    </message>
+    <message>
+        <source>Safe Output</source>
+        <translation>Säker utgång</translation>
+    </message>
+    <message>
+        <source>Pluto as Safe Input</source>
+        <translation>Pluto som säker ingång</translation>
+    </message>
+    <message>
+        <source>No channel monitoring</source>
+        <translation>Ingen kanalövervakning</translation>
+    </message>
+    <message>
+        <source>Channel monitoring</source>
+        <translation>Kanalövervakning</translation>
+    </message>
+    <message>
+        <source>Chan mon &amp; debounce filter</source>
+        <translation>Kanalöv. &amp; avstudsfilter</translation>
+    </message>
+    <message>
+        <source>Simultaneously</source>
+        <translation>Samtidigt</translation>
+    </message>
+    <message>
+        <source>Simultaneously &amp; debounce</source>
+        <translation>Samtidigt &amp; avstudsning</translation>
+    </message>
+    <message>
+        <source>AS-i general options</source>
+        <translation>Allmänna AS-i-alternativ</translation>
+    </message>
+    <message>
+        <source>AS-i bus working mode</source>
+        <translation>AS-i-bussens driftläge</translation>
+    </message>
+    <message>
+        <source>Set AS-i bus working mode</source>
+        <translation>Ställ in AS-i-driftläge</translation>
+    </message>
+    <message>
+        <source>ASi &amp;slave address:</source>
+        <translation>ASi-&amp;slavadress:</translation>
+    </message>
+    <message>
+        <source>Set AS-i slave address</source>
+        <translation>Ställ in AS-i-slavadress</translation>
+    </message>
+    <message>
+        <source>Optimize for</source>
+        <translation>Optimera för</translation>
+    </message>
+    <message>
+        <source>Short stop time (worst case, when error)</source>
+        <translation>Kort stopptid (värsta fall, vid fel)</translation>
+    </message>
+    <message>
+        <source>Disturbance immunity</source>
+        <translation>Störtålighet</translation>
+    </message>
+    <message>
+        <source>Disturbance immunity is not recommended when fewer than 20 slaves are used: the worst case stop time grows by 10 ms.</source>
+        <translation>Störtålighet rekommenderas inte med färre än 20 slavar: stopptiden i värsta fall ökar med 10 ms.</translation>
+    </message>
+    <message>
+        <source>Set AS-i optimisation</source>
+        <translation>Ställ in AS-i-optimering</translation>
+    </message>
+    <message>
+        <source>AS-i slaves</source>
+        <translation>AS-i-slavar</translation>
+    </message>
+    <message>
+        <source>Slave No</source>
+        <translation>Slav nr</translation>
+    </message>
+    <message>
+        <source>Type of Slave</source>
+        <translation>Typ av slav</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Param</source>
+        <translation>Param</translation>
+    </message>
+    <message>
+        <source>Profile/ID1</source>
+        <translation>Profil/ID1</translation>
+    </message>
+    <message>
+        <source>Channel Monitoring</source>
+        <translation>Kanalövervakning</translation>
+    </message>
+    <message>
+        <source>Time limit</source>
+        <translation>Tidsgräns</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Reading the slaves from the bus, teaching safety codes, the code tables and changing a slave&apos;s address need a Pluto on a real AS-i bus, and are not in Rungsmith. A slave the code uses but this table does not define is a warning when compiling; the simulator gives each safe input slave two channels that follow its channel monitoring.</source>
+        <translation>Att läsa in slavarna från bussen, lära in säkerhetskoder, kodtabellerna och att byta en slavs adress kräver en Pluto på en riktig AS-i-buss och finns inte i Rungsmith. En slav som koden använder men som tabellen inte definierar ger en varning vid kompilering; simulatorn ger varje säker ingångsslav två kanaler som följer dess kanalövervakning.</translation>
+    </message>
+    <message>
+        <source>%1 — AS-i Options</source>
+        <translation>%1 — AS-i-alternativ</translation>
+    </message>
+    <message>
+        <source>How the unit works on its AS-i bus, and what each slave address holds (manual Part 1, 7.1).</source>
+        <translation>Hur enheten arbetar på sin AS-i-buss och vad varje slavadress rymmer (manualen del 1, 7.1).</translation>
+    </message>
+    <message>
+        <source>%1 of %2 slaves are Safe Output or Pluto as Safe Input, the most a Pluto takes.</source>
+        <translation>%1 av %2 slavar är säkra utgångar eller Pluto som säker ingång, det mesta en Pluto tar.</translation>
+    </message>
+    <message>
+        <source>%1 takes the whole address: a B slave only goes beside an A/B slave.</source>
+        <translation>%1 tar hela adressen: en B-slav kan bara stå bredvid en A/B-slav.</translation>
+    </message>
+    <message>
+        <source>%1 monitors its channels itself.</source>
+        <translation>%1 övervakar sina kanaler själv.</translation>
+    </message>
+    <message>
+        <source>Set AS-i slave %1</source>
+        <translation>Ställ in AS-i-slav %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::AsiProfileDialog</name>
+    <message>
+        <source>%1 (Outputs)</source>
+        <translation>%1 (Utgångar)</translation>
+    </message>
+    <message>
+        <source>%1 (Safe slave)</source>
+        <translation>%1 (Säker slav)</translation>
+    </message>
+    <message>
+        <source>%1 (Standard slave)</source>
+        <translation>%1 (Standardslav)</translation>
+    </message>
+    <message>
+        <source>AS-i Profile</source>
+        <translation>AS-i-profil</translation>
+    </message>
+    <message>
+        <source>&amp;I/O configuration:</source>
+        <translation>&amp;I/O-konfiguration:</translation>
+    </message>
+    <message>
+        <source>I&amp;D code:</source>
+        <translation>I&amp;D-kod:</translation>
+    </message>
+    <message>
+        <source>ID&amp;2:</source>
+        <translation>ID&amp;2:</translation>
+    </message>
+    <message>
+        <source>ID&amp;1:</source>
+        <translation>ID&amp;1:</translation>
+    </message>
+    <message>
+        <source>Examples from the manual: S-0.B… a safe slave; S-7.B… a safe slave with outputs; S-7.0… a standard non-safe slave with 4 inputs and 4 outputs. The slave&apos;s own manual gives its profile.</source>
+        <translation>Exempel ur manualen: S-0.B… en säker slav; S-7.B… en säker slav med utgångar; S-7.0… en icke säker standardslav med 4 ingångar och 4 utgångar. Slavens egen manual anger dess profil.</translation>
+    </message>
+    <message>
+        <source>Profile for %1 = %2</source>
+        <translation>Profil för %1 = %2</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockChooserDialog</name>
+    <message>
+        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
+        <translation>Projektets bibliotek innehåller inga block. Lägg till ett bibliotek på projektsidan (Funktionsbibliotek).</translation>
+    </message>
+    <message>
+        <source>&amp;Find:</source>
+        <translation>&amp;Sök:</translation>
+    </message>
+    <message>
+        <source>Type to filter by name or description</source>
+        <translation>Skriv för att filtrera på namn eller beskrivning</translation>
+    </message>
+    <message>
+        <source>Insert Function Block</source>
+        <translation>Infoga funktionsblock</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
+    </message>
+    <message>
+        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
+        <translation>Blockets dokumentation: tillstånd, övergångar och ett tidsdiagram</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockDocumentationDialog</name>
+    <message>
+        <source>%1 — Block Documentation</source>
+        <translation>%1 — Blockdokumentation</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::BlockPinsDialog</name>
+    <message>
+        <source>%1 Pins</source>
+        <translation>Anslutningar för %1</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation...</source>
+        <translation>&amp;Dokumentation...</translation>
     </message>
 </context>
 <context>
@@ -495,6 +1061,117 @@
     <message>
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
         <translation>Programsignaturen för enhetens kompilerade kod, som rungsmith-cli signature skriver ut den; den ändras precis när det enheten gör ändras</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompareDialog</name>
+    <message>
+        <source>unit added</source>
+        <translation>enhet tillagd</translation>
+    </message>
+    <message>
+        <source>unit removed</source>
+        <translation>enhet borttagen</translation>
+    </message>
+    <message>
+        <source>type changed</source>
+        <translation>typ ändrad</translation>
+    </message>
+    <message>
+        <source>ID code changed</source>
+        <translation>ID-kod ändrad</translation>
+    </message>
+    <message>
+        <source>I/O options changed</source>
+        <translation>I/O-alternativ ändrade</translation>
+    </message>
+    <message>
+        <source>exported and remanent variables changed</source>
+        <translation>exporterade och remanenta variabler ändrade</translation>
+    </message>
+    <message>
+        <source>names and descriptions changed</source>
+        <translation>namn och beskrivningar ändrade</translation>
+    </message>
+    <message>
+        <source>comments changed</source>
+        <translation>kommentarer ändrade</translation>
+    </message>
+    <message>
+        <source>Save Review as &amp;PDF...</source>
+        <translation>Spara granskning som &amp;PDF …</translation>
+    </message>
+    <message>
+        <source>Changes Since Validation</source>
+        <translation>Ändringar sedan valideringen</translation>
+    </message>
+    <message>
+        <source>Compare With</source>
+        <translation>Jämför med</translation>
+    </message>
+    <message>
+        <source>%1 as it is now, against the version validated on %2 by %3</source>
+        <translation>%1 som det är nu, mot versionen som validerades %2 av %3</translation>
+    </message>
+    <message>
+        <source>%1 as it is now (new), against %2 (old)</source>
+        <translation>%1 som det är nu (nytt), mot %2 (gammalt)</translation>
+    </message>
+    <message>
+        <source>Enter or a double click opens a network in the ladder</source>
+        <translation>Enter eller ett dubbelklick öppnar ett nätverk i stegdiagrammet</translation>
+    </message>
+    <message>
+        <source>Comparing...</source>
+        <translation>Jämför …</translation>
+    </message>
+    <message>
+        <source>Pluto %1: %2</source>
+        <translation>Pluto %1: %2</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: added</source>
+        <translation>Pluto %1 %2 nätverk %3: tillagt</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: removed</source>
+        <translation>Pluto %1 %2 nätverk %3: borttaget</translation>
+    </message>
+    <message>
+        <source>Pluto %1 %2 network %3: changed</source>
+        <translation>Pluto %1 %2 nätverk %3: ändrat</translation>
+    </message>
+    <message>
+        <source>No network, unit or option differs.</source>
+        <translation>Inget nätverk, ingen enhet och inget alternativ skiljer sig.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour; only the text changed.</source>
+        <translation>Inget ändrat beteende; bara texten har ändrats.</translation>
+    </message>
+    <message>
+        <source>No change in behaviour.</source>
+        <translation>Inget ändrat beteende.</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+    <message>
+        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
+        <translation>Beteendet har ändrats i %1 (projektsignatur %2, var %3).</translation>
+    </message>
+    <message>
+        <source>There is nothing to save yet.</source>
+        <translation>Det finns inget att spara än.</translation>
+    </message>
+    <message>
+        <source>Save Review as PDF</source>
+        <translation>Spara granskning som PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-filer (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -1610,6 +2287,94 @@ Dess textsida (F6) visar och redigerar den.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::MakeBlockDialog</name>
+    <message>
+        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
+        <translation>Biblioteksfilen är ett namn av bokstäver, siffror och &apos;_&apos; i projektets mapp, till exempel Mina_Block.rslib.</translation>
+    </message>
+    <message>
+        <source>private memory</source>
+        <translation>privat minne</translation>
+    </message>
+    <message>
+        <source>Stands for</source>
+        <translation>Står för</translation>
+    </message>
+    <message>
+        <source>Pin or private variable</source>
+        <translation>Anslutning eller privat variabel</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Namn</translation>
+    </message>
+    <message>
+        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
+        <translation>Det nätverken läser blir en ingång, det de skriver en utgång; ett minne som bara de använder blir blockets eget. Namnge anslutningarna som blockets användare ska se dem. Kommentarer på satserna följer inte med in i blocket.</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beskrivning:</translation>
+    </message>
+    <message>
+        <source>&amp;Library file:</source>
+        <translation>&amp;Biblioteksfil:</translation>
+    </message>
+    <message>
+        <source>Block &amp;name:</source>
+        <translation>Block&amp;namn:</translation>
+    </message>
+    <message>
+        <source>What the block does, for its users</source>
+        <translation>Vad blocket gör, för dess användare</translation>
+    </message>
+    <message>
+        <source>Make Block</source>
+        <translation>Gör block</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::MarkValidatedDialog</name>
+    <message>
+        <source>Mark as Validated</source>
+        <translation>Markera som validerat</translation>
+    </message>
+    <message>
+        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
+        <translation>Sparar den här versionens programsignaturer som den validerade baslinjen: från och med nu säger granskningen vad som har ändrats sedan dess. Det ändrar inget som enheterna gör.</translation>
+    </message>
+    <message>
+        <source>Validated &amp;by:</source>
+        <translation>Validerat &amp;av:</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>&amp;Mark as Validated</source>
+        <translation>&amp;Markera som validerat</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
+        <translation>
+            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar det.</numerusform>
+            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar dem.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::NetworkCommentDialog</name>
+    <message>
+        <source>Network Comment</source>
+        <translation>Nätverkskommentar</translation>
+    </message>
+    <message>
+        <source>Return starts a new line; Ctrl+Return confirms.</source>
+        <translation>Retur börjar en ny rad; Ctrl+Retur bekräftar.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::NewProjectDialog</name>
     <message>
         <source>New project</source>
@@ -1832,6 +2597,84 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>&amp;Accept the Change...</source>
         <translation>&amp;Godta ändringen …</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PasswordProtectDialog</name>
+    <message>
+        <source>&amp;Password protect source file</source>
+        <translation>&amp;Lösenordsskydda källfilen</translation>
+    </message>
+    <message>
+        <source>Change of config options</source>
+        <translation>Ändring av konfigurationsalternativ</translation>
+    </message>
+    <message>
+        <source>Only possible with &amp;main password</source>
+        <translation>Endast möjlig med &amp;huvudlösenordet</translation>
+    </message>
+    <message>
+        <source>Possible &amp;without password</source>
+        <translation>Möjlig &amp;utan lösenord</translation>
+    </message>
+    <message>
+        <source>Config &amp;options password required</source>
+        <translation>Lösenord för konfigurationsal&amp;ternativ krävs</translation>
+    </message>
+    <message>
+        <source>Password Protect</source>
+        <translation>Lösenordsskydda</translation>
+    </message>
+    <message>
+        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
+        <translation>Filen sparar inget lösenord, bara en signatur som endast lösenordet kan göra, så att en ändring gjord utanför Rungsmith syns. Vem som helst kan fortfarande öppna och läsa filen.</translation>
+    </message>
+    <message>
+        <source>Ma&amp;in password:</source>
+        <translation>Hu&amp;vudlösenord:</translation>
+    </message>
+    <message>
+        <source>&amp;Repeat:</source>
+        <translation>U&amp;pprepa:</translation>
+    </message>
+    <message>
+        <source>Config options pa&amp;ssword:</source>
+        <translation>Lö&amp;senord för konfigurationsalternativ:</translation>
+    </message>
+    <message>
+        <source>R&amp;epeat:</source>
+        <translation>Upp&amp;repa:</translation>
+    </message>
+    <message>
+        <source>Give the main password.</source>
+        <translation>Ange huvudlösenordet.</translation>
+    </message>
+    <message>
+        <source>The main password and its repetition differ.</source>
+        <translation>Huvudlösenordet och upprepningen skiljer sig åt.</translation>
+    </message>
+    <message>
+        <source>Give the config options password.</source>
+        <translation>Ange lösenordet för konfigurationsalternativen.</translation>
+    </message>
+    <message>
+        <source>The config options password and its repetition differ.</source>
+        <translation>Lösenordet för konfigurationsalternativen och upprepningen skiljer sig åt.</translation>
+    </message>
+    <message>
+        <source>The config options password must differ from the main password, or it would give full permission.</source>
+        <translation>Lösenordet för konfigurationsalternativen måste skilja sig från huvudlösenordet, annars skulle det ge full behörighet.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PermissionNote</name>
+    <message>
+        <source>Password protected, open read only: nothing can change.</source>
+        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
     </message>
 </context>
 <context>
@@ -2287,6 +3130,68 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>AS-i Options</source>
+        <translation>AS-i-alternativ</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProtectedOpenDialog</name>
+    <message>
+        <source>Open with &amp;full permission</source>
+        <translation>Öppna med &amp;full behörighet</translation>
+    </message>
+    <message>
+        <source>Open with permission to &amp;configure</source>
+        <translation>Öppna med behörighet att &amp;konfigurera</translation>
+    </message>
+    <message>
+        <source>Open in &amp;read only mode</source>
+        <translation>Öppna &amp;skrivskyddat</translation>
+    </message>
+    <message>
+        <source>Open Protected Project</source>
+        <translation>Öppna skyddat projekt</translation>
+    </message>
+    <message>
+        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
+        <translation>”%1” är lösenordsskyddat. Det öppnas utan lösenord, men då kan inget i det ändras.</translation>
+    </message>
+    <message>
+        <source>Takes the main password; everything can change.</source>
+        <translation>Kräver huvudlösenordet; allt kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes no password; only the Config Options can change.</source>
+        <translation>Kräver inget lösenord; bara konfigurationsalternativen kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
+        <translation>Kräver lösenordet för konfigurationsalternativen eller huvudlösenordet; bara konfigurationsalternativen kan ändras.</translation>
+    </message>
+    <message>
+        <source>Takes no password; nothing can change.</source>
+        <translation>Kräver inget lösenord; inget kan ändras.</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Lösenord:</translation>
+    </message>
+    <message>
+        <source>The password does not open the project with this permission.</source>
+        <translation>Lösenordet öppnar inte projektet med denna behörighet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
+        <translation>
+            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekund.</numerusform>
+            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekunder.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Accept the Change</source>
+        <translation>Godta ändringen</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::RemanentDialog</name>
@@ -2351,6 +3256,21 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>%1: cancelled at t = %2 s, %3 passed, %4 failed so far</source>
         <translation>%1: avbrutet vid t = %2 s, %3 godkända, %4 underkända hittills</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::SignatureLabel</name>
+    <message>
+        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
+        <translation>Ändras precis när det programmet gör ändras; formatering, kommentarer, namn och beskrivningar lämnar den som den är</translation>
+    </message>
+    <message>
+        <source>computing...</source>
+        <translation>beräknas …</translation>
+    </message>
+    <message>
+        <source>none while the project has errors (Build &gt; Compile shows them)</source>
+        <translation>ingen så länge projektet har fel (Bygg &gt; Kompilera visar dem)</translation>
     </message>
 </context>
 <context>
@@ -3073,6 +3993,10 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
         <source>Stop &amp;Watching</source>
         <translation>Sluta &amp;bevaka</translation>
     </message>
+    <message>
+        <source>A channel is open (0) or closed (1).</source>
+        <translation>En kanal är öppen (0) eller sluten (1).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::WaveformPanel</name>
@@ -3149,692 +4073,6 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>&lt;b&gt;&amp;Recent projects&lt;/b&gt;</source>
         <translation>&lt;b&gt;&amp;Senaste projekt&lt;/b&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>BlockText</name>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1.</source>
-        <translation>Ett systemblock: simulatorn utför dess instruktion %1.</translation>
-    </message>
-    <message>
-        <source>library %1, version %2</source>
-        <translation>bibliotek %1, version %2</translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation>får lämnas öppen</translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation>måste kopplas</translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation>standard %1</translation>
-    </message>
-    <message>
-        <source>constant</source>
-        <translation>konstant</translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation>tid</translation>
-    </message>
-    <message>
-        <source>double register</source>
-        <translation>dubbelregister</translation>
-    </message>
-    <message>
-        <source>register</source>
-        <translation>register</translation>
-    </message>
-    <message>
-        <source>bit</source>
-        <translation>bit</translation>
-    </message>
-    <message>
-        <source>output</source>
-        <translation>utgång</translation>
-    </message>
-    <message>
-        <source>input</source>
-        <translation>ingång</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockChooserDialog</name>
-    <message>
-        <source>The project&apos;s libraries hold no blocks. Add a library on the project page (Function libraries).</source>
-        <translation>Projektets bibliotek innehåller inga block. Lägg till ett bibliotek på projektsidan (Funktionsbibliotek).</translation>
-    </message>
-    <message>
-        <source>&amp;Find:</source>
-        <translation>&amp;Sök:</translation>
-    </message>
-    <message>
-        <source>Type to filter by name or description</source>
-        <translation>Skriv för att filtrera på namn eller beskrivning</translation>
-    </message>
-    <message>
-        <source>Insert Function Block</source>
-        <translation>Infoga funktionsblock</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation>&amp;Dokumentation...</translation>
-    </message>
-    <message>
-        <source>The block&apos;s documentation: states, transitions and a timing diagram</source>
-        <translation>Blockets dokumentation: tillstånd, övergångar och ett tidsdiagram</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockPinsDialog</name>
-    <message>
-        <source>%1 Pins</source>
-        <translation>Anslutningar för %1</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation...</source>
-        <translation>&amp;Dokumentation...</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MakeBlockDialog</name>
-    <message>
-        <source>The library file is a name of letters, digits and &apos;_&apos; in the project&apos;s folder, such as My_Blocks.rslib.</source>
-        <translation>Biblioteksfilen är ett namn av bokstäver, siffror och &apos;_&apos; i projektets mapp, till exempel Mina_Block.rslib.</translation>
-    </message>
-    <message>
-        <source>private memory</source>
-        <translation>privat minne</translation>
-    </message>
-    <message>
-        <source>Stands for</source>
-        <translation>Står för</translation>
-    </message>
-    <message>
-        <source>Pin or private variable</source>
-        <translation>Anslutning eller privat variabel</translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation>Namn</translation>
-    </message>
-    <message>
-        <source>What the networks read becomes an input, what they write an output; a memory only they use becomes the block&apos;s own. Name the pins as the block&apos;s users will see them. Comments on the statements do not go into the block.</source>
-        <translation>Det nätverken läser blir en ingång, det de skriver en utgång; ett minne som bara de använder blir blockets eget. Namnge anslutningarna som blockets användare ska se dem. Kommentarer på satserna följer inte med in i blocket.</translation>
-    </message>
-    <message>
-        <source>&amp;Description:</source>
-        <translation>&amp;Beskrivning:</translation>
-    </message>
-    <message>
-        <source>&amp;Library file:</source>
-        <translation>&amp;Biblioteksfil:</translation>
-    </message>
-    <message>
-        <source>Block &amp;name:</source>
-        <translation>Block&amp;namn:</translation>
-    </message>
-    <message>
-        <source>What the block does, for its users</source>
-        <translation>Vad blocket gör, för dess användare</translation>
-    </message>
-    <message>
-        <source>Make Block</source>
-        <translation>Gör block</translation>
-    </message>
-</context>
-<context>
-    <name>BlockDocumentation</name>
-    <message>
-        <source>Library %1, version %2. Block version %3.</source>
-        <translation>Bibliotek %1, version %2. Blockversion %3.</translation>
-    </message>
-    <message>
-        <source>A system block: the simulator carries out its instruction %1, which the language cannot say.</source>
-        <translation>Ett systemblock: simulatorn utför dess instruktion %1, som språket inte kan uttrycka.</translation>
-    </message>
-    <message>
-        <source>Pins</source>
-        <translation>Anslutningar</translation>
-    </message>
-    <message>
-        <source>Pin</source>
-        <translation>Anslutning</translation>
-    </message>
-    <message>
-        <source>Kind</source>
-        <translation>Slag</translation>
-    </message>
-    <message>
-        <source>When not bound</source>
-        <translation>Om inte ansluten</translation>
-    </message>
-    <message>
-        <source>default %1</source>
-        <translation>standard %1</translation>
-    </message>
-    <message>
-        <source>must be bound</source>
-        <translation>måste anslutas</translation>
-    </message>
-    <message>
-        <source>may stay open</source>
-        <translation>får lämnas öppen</translation>
-    </message>
-    <message>
-        <source>Timing diagram</source>
-        <translation>Tidsdiagram</translation>
-    </message>
-    <message>
-        <source>No timing diagram: %1</source>
-        <translation>Inget tidsdiagram: %1</translation>
-    </message>
-    <message>
-        <source>The pins of the example project %1 while its scenario %2 runs, from power on.</source>
-        <translation>Exempelprojektets %1 anslutningar medan dess scenario %2 körs, från tillslag.</translation>
-    </message>
-    <message numerus="yes">
-        <source>All %n expectation(s) of the scenario held.</source>
-        <translation>
-            <numerusform>Scenariots enda förväntan höll.</numerusform>
-            <numerusform>Scenariots alla %n förväntningar höll.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n expectation(s) of the scenario failed: the diagram shows what the block did, not what the example expects.</source>
-        <translation>
-            <numerusform>%n förväntan i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
-            <numerusform>%n förväntningar i scenariot höll inte: diagrammet visar vad blocket gjorde, inte vad exemplet väntar sig.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>States</source>
-        <translation>Tillstånd</translation>
-    </message>
-    <message>
-        <source>DiagCode holds the state as its 16-bit pattern (16#8000 reads -32768 in a register). The outputs each state switches on:</source>
-        <translation>DiagCode håller tillståndet som dess 16-bitarsmönster (16#8000 läses -32768 i ett register). Utgångarna som varje tillstånd slår till:</translation>
-    </message>
-    <message>
-        <source>The outputs each state switches on:</source>
-        <translation>Utgångarna som varje tillstånd slår till:</translation>
-    </message>
-    <message>
-        <source>State</source>
-        <translation>Tillstånd</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>Betydelse</translation>
-    </message>
-    <message>
-        <source>Transitions</source>
-        <translation>Övergångar</translation>
-    </message>
-    <message>
-        <source>Each scan takes at most one transition: the first of the state&apos;s list whose condition holds. The outputs then follow the new state. In the conditions * is AND, + is OR and / is NOT, as in the program.</source>
-        <translation>Varje programcykel tar högst en övergång: den första i tillståndets lista vars villkor är uppfyllt. Utgångarna följer sedan det nya tillståndet. I villkoren är * OCH, + ELLER och / INTE, som i programmet.</translation>
-    </message>
-    <message>
-        <source>In state</source>
-        <translation>I tillstånd</translation>
-    </message>
-    <message>
-        <source>Condition</source>
-        <translation>Villkor</translation>
-    </message>
-    <message>
-        <source>Next state</source>
-        <translation>Nästa tillstånd</translation>
-    </message>
-    <message>
-        <source>always</source>
-        <translation>alltid</translation>
-    </message>
-    <message>
-        <source>any</source>
-        <translation>alla</translation>
-    </message>
-    <message>
-        <source>The other lines of the block&apos;s body, which the conditions and outputs use:</source>
-        <translation>Blockets övriga rader, som villkoren och utgångarna använder:</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::BlockDocumentationDialog</name>
-    <message>
-        <source>%1 — Block Documentation</source>
-        <translation>%1 — Blockdokumentation</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Spara</translation>
-    </message>
-    <message>
-        <source>Save All</source>
-        <translation>Spara alla</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Öppna</translation>
-    </message>
-    <message>
-        <source>&amp;Yes</source>
-        <translation>&amp;Ja</translation>
-    </message>
-    <message>
-        <source>Yes to &amp;All</source>
-        <translation>Ja till &amp;alla</translation>
-    </message>
-    <message>
-        <source>&amp;No</source>
-        <translation>&amp;Nej</translation>
-    </message>
-    <message>
-        <source>N&amp;o to All</source>
-        <translation>N&amp;ej till alla</translation>
-    </message>
-    <message>
-        <source>Abort</source>
-        <translation>Avbryt</translation>
-    </message>
-    <message>
-        <source>Retry</source>
-        <translation>Försök igen</translation>
-    </message>
-    <message>
-        <source>Ignore</source>
-        <translation>Ignorera</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>Stäng</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Avbryt</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Förkasta</translation>
-    </message>
-    <message>
-        <source>Help</source>
-        <translation>Hjälp</translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation>Verkställ</translation>
-    </message>
-    <message>
-        <source>Reset</source>
-        <translation>Återställ</translation>
-    </message>
-    <message>
-        <source>Restore Defaults</source>
-        <translation>Återställ standardvärden</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ladder::Layout</name>
-    <message>
-        <source>step %1</source>
-        <translation>steg %1</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::NetworkCommentDialog</name>
-    <message>
-        <source>Network Comment</source>
-        <translation>Nätverkskommentar</translation>
-    </message>
-    <message>
-        <source>Return starts a new line; Ctrl+Return confirms.</source>
-        <translation>Retur börjar en ny rad; Ctrl+Retur bekräftar.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::SignatureLabel</name>
-    <message>
-        <source>Changes exactly when what the program does changes; formatting, comments, names and descriptions leave it as it is</source>
-        <translation>Ändras precis när det programmet gör ändras; formatering, kommentarer, namn och beskrivningar lämnar den som den är</translation>
-    </message>
-    <message>
-        <source>computing...</source>
-        <translation>beräknas …</translation>
-    </message>
-    <message>
-        <source>none while the project has errors (Build &gt; Compile shows them)</source>
-        <translation>ingen så länge projektet har fel (Bygg &gt; Kompilera visar dem)</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::MarkValidatedDialog</name>
-    <message>
-        <source>Mark as Validated</source>
-        <translation>Markera som validerat</translation>
-    </message>
-    <message>
-        <source>Records this version&apos;s program signatures as the validated baseline: from now on the review says what changed since. It changes nothing the units do.</source>
-        <translation>Sparar den här versionens programsignaturer som den validerade baslinjen: från och med nu säger granskningen vad som har ändrats sedan dess. Det ändrar inget som enheterna gör.</translation>
-    </message>
-    <message>
-        <source>Validated &amp;by:</source>
-        <translation>Validerat &amp;av:</translation>
-    </message>
-    <message>
-        <source>&amp;Comment:</source>
-        <translation>&amp;Kommentar:</translation>
-    </message>
-    <message>
-        <source>&amp;Mark as Validated</source>
-        <translation>&amp;Markera som validerat</translation>
-    </message>
-    <message numerus="yes">
-        <source>The project has %n error(s) and cannot be validated. Build &gt; Compile (F7) lists them.</source>
-        <translation>
-            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar det.</numerusform>
-            <numerusform>Projektet har %n fel och kan inte valideras. Bygg &gt; Kompilera (F7) listar dem.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>ProjectComparison</name>
-    <message numerus="yes">
-        <source>%1 has %n error(s), so its behaviour cannot be compared. Build &gt; Compile lists them.</source>
-        <translation>
-            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar det.</numerusform>
-            <numerusform>%1 har %n fel, så dess beteende kan inte jämföras. Bygg &gt; Kompilera listar dem.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The project</source>
-        <translation>Projektet</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::CompareDialog</name>
-    <message>
-        <source>unit added</source>
-        <translation>enhet tillagd</translation>
-    </message>
-    <message>
-        <source>unit removed</source>
-        <translation>enhet borttagen</translation>
-    </message>
-    <message>
-        <source>type changed</source>
-        <translation>typ ändrad</translation>
-    </message>
-    <message>
-        <source>ID code changed</source>
-        <translation>ID-kod ändrad</translation>
-    </message>
-    <message>
-        <source>I/O options changed</source>
-        <translation>I/O-alternativ ändrade</translation>
-    </message>
-    <message>
-        <source>exported and remanent variables changed</source>
-        <translation>exporterade och remanenta variabler ändrade</translation>
-    </message>
-    <message>
-        <source>names and descriptions changed</source>
-        <translation>namn och beskrivningar ändrade</translation>
-    </message>
-    <message>
-        <source>comments changed</source>
-        <translation>kommentarer ändrade</translation>
-    </message>
-    <message>
-        <source>Save Review as &amp;PDF...</source>
-        <translation>Spara granskning som &amp;PDF …</translation>
-    </message>
-    <message>
-        <source>Changes Since Validation</source>
-        <translation>Ändringar sedan valideringen</translation>
-    </message>
-    <message>
-        <source>Compare With</source>
-        <translation>Jämför med</translation>
-    </message>
-    <message>
-        <source>%1 as it is now, against the version validated on %2 by %3</source>
-        <translation>%1 som det är nu, mot versionen som validerades %2 av %3</translation>
-    </message>
-    <message>
-        <source>%1 as it is now (new), against %2 (old)</source>
-        <translation>%1 som det är nu (nytt), mot %2 (gammalt)</translation>
-    </message>
-    <message>
-        <source>Enter or a double click opens a network in the ladder</source>
-        <translation>Enter eller ett dubbelklick öppnar ett nätverk i stegdiagrammet</translation>
-    </message>
-    <message>
-        <source>Comparing...</source>
-        <translation>Jämför …</translation>
-    </message>
-    <message>
-        <source>Pluto %1: %2</source>
-        <translation>Pluto %1: %2</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: added</source>
-        <translation>Pluto %1 %2 nätverk %3: tillagt</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: removed</source>
-        <translation>Pluto %1 %2 nätverk %3: borttaget</translation>
-    </message>
-    <message>
-        <source>Pluto %1 %2 network %3: changed</source>
-        <translation>Pluto %1 %2 nätverk %3: ändrat</translation>
-    </message>
-    <message>
-        <source>No network, unit or option differs.</source>
-        <translation>Inget nätverk, ingen enhet och inget alternativ skiljer sig.</translation>
-    </message>
-    <message>
-        <source>No change in behaviour; only the text changed.</source>
-        <translation>Inget ändrat beteende; bara texten har ändrats.</translation>
-    </message>
-    <message>
-        <source>No change in behaviour.</source>
-        <translation>Inget ändrat beteende.</translation>
-    </message>
-    <message>
-        <source>Pluto %1</source>
-        <translation>Pluto %1</translation>
-    </message>
-    <message>
-        <source>Behaviour changed in %1 (project signature %2, was %3).</source>
-        <translation>Beteendet har ändrats i %1 (projektsignatur %2, var %3).</translation>
-    </message>
-    <message>
-        <source>There is nothing to save yet.</source>
-        <translation>Det finns inget att spara än.</translation>
-    </message>
-    <message>
-        <source>Save Review as PDF</source>
-        <translation>Spara granskning som PDF</translation>
-    </message>
-    <message>
-        <source>PDF files (*.pdf)</source>
-        <translation>PDF-filer (*.pdf)</translation>
-    </message>
-</context>
-<context>
-    <name>ProjectMerging</name>
-    <message>
-        <source>Merge Project</source>
-        <translation>Sammanfoga projekt</translation>
-    </message>
-    <message>
-        <source>Open the project to merge first (File &gt; Open); its units are then added to %1.</source>
-        <translation>Öppna först projektet som ska sammanfogas (Arkiv &gt; Öppna); dess enheter läggs sedan till i %1.</translation>
-    </message>
-    <message>
-        <source>Add the units of this project to %1:</source>
-        <translation>Lägg till enheterna i det här projektet i %1:</translation>
-    </message>
-    <message>
-        <source>%1 cannot be merged into %2: every unit must keep its station and every symbolic name must be one project&apos;s only.</source>
-        <translation>%1 kan inte sammanfogas med %2: varje enhet måste behålla sin station och varje symboliskt namn får bara finnas i ett av projekten.</translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2. Each name both used stays only in the units that define it; elsewhere its variable is written as its address.</source>
-        <translation>%1 är sammanfogat med %2. Varje namn som båda använde finns kvar bara i de enheter som definierar det; på andra ställen skrivs variabeln med sin adress.</translation>
-    </message>
-    <message>
-        <source>%1 is merged into %2.</source>
-        <translation>%1 är sammanfogat med %2.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PasswordProtectDialog</name>
-    <message>
-        <source>&amp;Password protect source file</source>
-        <translation>&amp;Lösenordsskydda källfilen</translation>
-    </message>
-    <message>
-        <source>Change of config options</source>
-        <translation>Ändring av konfigurationsalternativ</translation>
-    </message>
-    <message>
-        <source>Only possible with &amp;main password</source>
-        <translation>Endast möjlig med &amp;huvudlösenordet</translation>
-    </message>
-    <message>
-        <source>Possible &amp;without password</source>
-        <translation>Möjlig &amp;utan lösenord</translation>
-    </message>
-    <message>
-        <source>Config &amp;options password required</source>
-        <translation>Lösenord för konfigurationsal&amp;ternativ krävs</translation>
-    </message>
-    <message>
-        <source>Password Protect</source>
-        <translation>Lösenordsskydda</translation>
-    </message>
-    <message>
-        <source>The file keeps no password: it keeps a signature only the password can make, so a change made outside Rungsmith shows. Anybody can still open and read the file.</source>
-        <translation>Filen sparar inget lösenord, bara en signatur som endast lösenordet kan göra, så att en ändring gjord utanför Rungsmith syns. Vem som helst kan fortfarande öppna och läsa filen.</translation>
-    </message>
-    <message>
-        <source>Ma&amp;in password:</source>
-        <translation>Hu&amp;vudlösenord:</translation>
-    </message>
-    <message>
-        <source>&amp;Repeat:</source>
-        <translation>U&amp;pprepa:</translation>
-    </message>
-    <message>
-        <source>Config options pa&amp;ssword:</source>
-        <translation>Lö&amp;senord för konfigurationsalternativ:</translation>
-    </message>
-    <message>
-        <source>R&amp;epeat:</source>
-        <translation>Upp&amp;repa:</translation>
-    </message>
-    <message>
-        <source>Give the main password.</source>
-        <translation>Ange huvudlösenordet.</translation>
-    </message>
-    <message>
-        <source>The main password and its repetition differ.</source>
-        <translation>Huvudlösenordet och upprepningen skiljer sig åt.</translation>
-    </message>
-    <message>
-        <source>Give the config options password.</source>
-        <translation>Ange lösenordet för konfigurationsalternativen.</translation>
-    </message>
-    <message>
-        <source>The config options password and its repetition differ.</source>
-        <translation>Lösenordet för konfigurationsalternativen och upprepningen skiljer sig åt.</translation>
-    </message>
-    <message>
-        <source>The config options password must differ from the main password, or it would give full permission.</source>
-        <translation>Lösenordet för konfigurationsalternativen måste skilja sig från huvudlösenordet, annars skulle det ge full behörighet.</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::ProtectedOpenDialog</name>
-    <message>
-        <source>Open with &amp;full permission</source>
-        <translation>Öppna med &amp;full behörighet</translation>
-    </message>
-    <message>
-        <source>Open with permission to &amp;configure</source>
-        <translation>Öppna med behörighet att &amp;konfigurera</translation>
-    </message>
-    <message>
-        <source>Open in &amp;read only mode</source>
-        <translation>Öppna &amp;skrivskyddat</translation>
-    </message>
-    <message>
-        <source>Open Protected Project</source>
-        <translation>Öppna skyddat projekt</translation>
-    </message>
-    <message>
-        <source>“%1” is password protected. It opens without a password, but then nothing in it can change.</source>
-        <translation>”%1” är lösenordsskyddat. Det öppnas utan lösenord, men då kan inget i det ändras.</translation>
-    </message>
-    <message>
-        <source>Takes the main password; everything can change.</source>
-        <translation>Kräver huvudlösenordet; allt kan ändras.</translation>
-    </message>
-    <message>
-        <source>Takes no password; only the Config Options can change.</source>
-        <translation>Kräver inget lösenord; bara konfigurationsalternativen kan ändras.</translation>
-    </message>
-    <message>
-        <source>Takes the config options password, or the main one; only the Config Options can change.</source>
-        <translation>Kräver lösenordet för konfigurationsalternativen eller huvudlösenordet; bara konfigurationsalternativen kan ändras.</translation>
-    </message>
-    <message>
-        <source>Takes no password; nothing can change.</source>
-        <translation>Kräver inget lösenord; inget kan ändras.</translation>
-    </message>
-    <message>
-        <source>&amp;Password:</source>
-        <translation>&amp;Lösenord:</translation>
-    </message>
-    <message>
-        <source>The password does not open the project with this permission.</source>
-        <translation>Lösenordet öppnar inte projektet med denna behörighet.</translation>
-    </message>
-    <message numerus="yes">
-        <source>The password does not open the project with this permission. Try again in %n second(s).</source>
-        <translation>
-            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekund.</numerusform>
-            <numerusform>Lösenordet öppnar inte projektet med denna behörighet. Försök igen om %n sekunder.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Accept the Change</source>
-        <translation>Godta ändringen</translation>
-    </message>
-</context>
-<context>
-    <name>rs::ui::PermissionNote</name>
-    <message>
-        <source>Password protected, open read only: nothing can change.</source>
-        <translation>Lösenordsskyddat, öppnat skrivskyddat: inget kan ändras.</translation>
-    </message>
-    <message>
-        <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
-        <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
     </message>
 </context>
 </TS>

@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+// lupdate misreads a forward-declared enum with a base type, and moc cannot
+// parse the C++20 headers lang/Address.h brings in; both need only the names.
+#ifndef Q_MOC_RUN
+#include "lang/Address.h"
+#endif
+
 #include <QDialog>
 
-#include <cstdint>
 #include <set>
 #include <vector>
 
 class QCheckBox;
 class QLabel;
-
-namespace rs::lang {
-enum class AddressKind : std::uint8_t;
-struct Address;
-} // namespace rs::lang
 
 namespace rs::ui {
 
