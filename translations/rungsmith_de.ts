@@ -734,6 +734,29 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::AdvancedSettingsDialog</name>
+    <message>
+        <source>&amp;Set the CAN bus cycle time:</source>
+        <translation>CAN-Bus-Zykluszeit &amp;setzen:</translation>
+    </message>
+    <message>
+        <source>Advanced Settings of Pluto %1</source>
+        <translation>Erweiterte Einstellungen von Pluto %1</translation>
+    </message>
+    <message>
+        <source>These settings have influence on the system response time. Do not change these values without a good knowledge of the function of the system. The hardware manual describes them.</source>
+        <translation>Diese Einstellungen beeinflussen die Reaktionszeit des Systems. Ändern Sie diese Werte nicht ohne gute Kenntnis der Funktion des Systems. Das Hardware-Handbuch beschreibt sie.</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Unset, the unit keeps its default. The simulator sends a unit&apos;s variables to the other units after every scan by default, and with a cycle time set, once per cycle time.</source>
+        <translation>Nicht gesetzt, behält die Einheit ihre Vorgabe. Der Simulator sendet die Variablen einer Einheit standardmäßig nach jedem Zyklus an die anderen Einheiten, mit gesetzter Zykluszeit einmal je Zykluszeit.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::AsiOptionsPage</name>
     <message>
         <source>Bus Master</source>
@@ -3702,6 +3725,26 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>Review</source>
         <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>&amp;Advanced Settings...</source>
+        <translation>&amp;Erweiterte Einstellungen...</translation>
+    </message>
+    <message>
+        <source>CAN bus cycle time:</source>
+        <translation>CAN-Bus-Zykluszeit:</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>the unit&apos;s default</source>
+        <translation>Vorgabe der Einheit</translation>
+    </message>
+    <message>
+        <source>Set CAN Bus Cycle Time of Pluto %1</source>
+        <translation>CAN-Bus-Zykluszeit von Pluto %1 setzen</translation>
     </message>
 </context>
 <context>

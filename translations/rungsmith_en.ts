@@ -734,6 +734,29 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::AdvancedSettingsDialog</name>
+    <message>
+        <source>&amp;Set the CAN bus cycle time:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Advanced Settings of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>These settings have influence on the system response time. Do not change these values without a good knowledge of the function of the system. The hardware manual describes them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unset, the unit keeps its default. The simulator sends a unit&apos;s variables to the other units after every scan by default, and with a cycle time set, once per cycle time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::AsiOptionsPage</name>
     <message>
         <source>Bus Master</source>
@@ -3699,6 +3722,26 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Advanced Settings...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CAN bus cycle time:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the unit&apos;s default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set CAN Bus Cycle Time of Pluto %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

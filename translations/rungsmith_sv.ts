@@ -734,6 +734,29 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::AdvancedSettingsDialog</name>
+    <message>
+        <source>&amp;Set the CAN bus cycle time:</source>
+        <translation>&amp;Ställ in CAN-bussens cykeltid:</translation>
+    </message>
+    <message>
+        <source>Advanced Settings of Pluto %1</source>
+        <translation>Avancerade inställningar för Pluto %1</translation>
+    </message>
+    <message>
+        <source>These settings have influence on the system response time. Do not change these values without a good knowledge of the function of the system. The hardware manual describes them.</source>
+        <translation>Dessa inställningar påverkar systemets reaktionstid. Ändra inte dessa värden utan god kunskap om systemets funktion. Hårdvarumanualen beskriver dem.</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Unset, the unit keeps its default. The simulator sends a unit&apos;s variables to the other units after every scan by default, and with a cycle time set, once per cycle time.</source>
+        <translation>Utan inställning behåller enheten sitt standardvärde. Simulatorn skickar som standard en enhets variabler till de andra enheterna efter varje cykel, och med en inställd cykeltid en gång per cykeltid.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::AsiOptionsPage</name>
     <message>
         <source>Bus Master</source>
@@ -3702,6 +3725,26 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>Review</source>
         <translation>Granskning</translation>
+    </message>
+    <message>
+        <source>&amp;Advanced Settings...</source>
+        <translation>&amp;Avancerade inställningar...</translation>
+    </message>
+    <message>
+        <source>CAN bus cycle time:</source>
+        <translation>CAN-bussens cykeltid:</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>the unit&apos;s default</source>
+        <translation>enhetens standardvärde</translation>
+    </message>
+    <message>
+        <source>Set CAN Bus Cycle Time of Pluto %1</source>
+        <translation>Ställ in CAN-bussens cykeltid för Pluto %1</translation>
     </message>
 </context>
 <context>

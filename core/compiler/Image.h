@@ -154,6 +154,8 @@ struct UnitImage {
     std::vector<lang::Address> exported;  // the manual's [E], in address order
     std::vector<lang::Address> remanent;  // the manual's [R] of this unit, in address order
     AsiSetup asi;
+    // The CAN bus cycle time set on the unit page (Part 1, 5.2), in ms; 0 the default.
+    std::uint16_t canCycleMs = 0;
     // Descriptive again.
     std::string source; // the canonical project text when "include source" is set, else empty
 

@@ -4,6 +4,7 @@
 #include "IntelHex.h"
 #include "SystemInstruction.h"
 #include "project/AsiOptions.h"
+#include "project/CanBusCycle.h"
 #include "project/ProjectFile.h"
 
 #include <zlib.h>
@@ -217,7 +218,7 @@ std::optional<std::string> asiSetupProblem(const AsiSetup& asi) {
 
 std::size_t setupSize(const UnitImage& image) {
     std::size_t size = 3 * 4 + (image.exported.size() + image.remanent.size()) * kAddressSize + 4 +
-                       image.asi.slaves.size() * kAsiSlaveSize;
+                       image.asi.slaves.size() * kAsiSlaveSize + 2;
     for (const auto& terminal : image.terminals) {
         size += 5;
         for (const auto& option : terminal.options)
@@ -297,6 +298,7 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
     }
     writeSetup(w, image);
     writeAsiSetup(w, image.asi);
+    w.u16(image.canCycleMs);
     if (!image.source.empty()) {
         const std::string packed = compress(image.source);
         w.u32(static_cast<std::uint32_t>(image.source.size()));
@@ -430,6 +432,9 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
             return ImageError{0, 0, "the AS-i options are damaged"};
         if (auto problem = asiSetupProblem(image.asi))
             return ImageError{0, 0, *problem};
+        image.canCycleMs = r.u16();
+        if (image.canCycleMs > project::kMaxCanCycleMs)
+            return ImageError{0, 0, "the CAN bus cycle time is damaged"};
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();
             if (length > kMaxIncludedSourceBytes)
@@ -460,6 +465,8 @@ std::string behaviourBytes(const UnitImage& image) {
     // what it was before images carried them, and so do validated versions.
     if (!(image.asi == AsiSetup{}))
         writeAsiSetup(w, image.asi);
+    if (image.canCycleMs)
+        w.u16(image.canCycleMs);
     const auto& bytes = w.data();
     return std::string(bytes.begin(), bytes.end());
 }

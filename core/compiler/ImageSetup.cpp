@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ImageSetup.h"
 
+#include "project/CanBusCycle.h"
 #include "project/UnitAsiOptions.h"
 
 #include <algorithm>
@@ -56,6 +57,7 @@ void addSetup(UnitImage& image, const UnitSetup& unit, const project::Project& p
     for (const auto& address : project.remanentVariables)
         if (address.unit == unit.station)
             image.remanent.push_back(address);
+    image.canCycleMs = static_cast<std::uint16_t>(project::canCycleOf(project, unit.station));
     if (unit.type && unit.type->asiSlaves)
         image.asi = asiSetup(project::asiOptionsOf(project, unit.station));
 }

@@ -26,6 +26,8 @@ struct Project {
     // The AS-i Options page of the AS-i units that differ from the defaults
     // (manual Part 1, 7.1), by station.
     std::map<int, AsiOptions> asiOptions;
+    // A CAN bus cycle time other than the default (Part 1, 5.2), in ms, by station.
+    std::map<int, int> canCycleMs;
     std::map<lang::Address, std::string> variableDescriptions; // by address
     // The manual's [E]: local variables made visible to the other units (10.2.1).
     std::set<lang::Address> exportedVariables;

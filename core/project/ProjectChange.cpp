@@ -18,10 +18,18 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,       project.includeSource,     project.unitDescriptions,
-            project.idfixProg,         project.asiOptions,        project.variableDescriptions,
-            project.exportedVariables, project.remanentVariables, project.libraries,
-            project.baseline,          project.protection};
+    return {project.description,
+            project.includeSource,
+            project.unitDescriptions,
+            project.idfixProg,
+            project.asiOptions,
+            project.canCycleMs,
+            project.variableDescriptions,
+            project.exportedVariables,
+            project.remanentVariables,
+            project.libraries,
+            project.baseline,
+            project.protection};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {
@@ -30,6 +38,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.unitDescriptions = records.unitDescriptions;
     project.idfixProg = records.idfixProg;
     project.asiOptions = records.asiOptions;
+    project.canCycleMs = records.canCycleMs;
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;

@@ -34,6 +34,7 @@ private:
         std::map<int, std::string> unitDescriptions;
         std::set<int> idfixProg;
         std::map<int, AsiOptions> asiOptions;
+        std::map<int, int> canCycleMs;
         std::map<lang::Address, std::string> variableDescriptions;
         std::set<lang::Address> exportedVariables;
         std::set<lang::Address> remanentVariables;

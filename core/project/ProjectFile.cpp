@@ -4,6 +4,7 @@
 #include "Annotation.h"
 #include "AsiRecords.h"
 #include "Baseline.h"
+#include "CanBusCycle.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
 #include "lang/NameResolver.h"
@@ -14,6 +15,7 @@
 #include <QSaveFile>
 
 #include <algorithm>
+#include <charconv>
 #include <set>
 #include <tuple>
 
@@ -116,6 +118,16 @@ private:
             }
             if (std::string description = annotation->value("description"); !description.empty())
                 m_project.unitDescriptions[station] = std::move(description);
+            if (std::string cycle = annotation->value("can_cycle_ms"); !cycle.empty()) {
+                int ms = 0;
+                const auto [end, problem] =
+                    std::from_chars(cycle.data(), cycle.data() + cycle.size(), ms);
+                if (problem != std::errc() || end != cycle.data() + cycle.size() || ms == 0 ||
+                    setCanCycle(m_project, station, ms))
+                    error(at, "@unit can_cycle_ms must be a number of milliseconds " +
+                                  std::to_string(kMinCanCycleMs) + "-" +
+                                  std::to_string(kMaxCanCycleMs) + ", not '" + cycle + "'");
+            }
             if (std::string idfix = annotation->value("idfix"); idfix == "prog")
                 m_project.idfixProg.insert(station);
             else if (!idfix.empty())
@@ -211,6 +223,8 @@ std::vector<Line> unitRecords(const Project& project, int station) {
         unit.attributes.emplace_back("description", it->second);
     if (project.idfixProg.count(station))
         unit.attributes.emplace_back("idfix", "prog");
+    if (const int cycle = canCycleOf(project, station))
+        unit.attributes.emplace_back("can_cycle_ms", std::to_string(cycle));
     if (std::string remanent = formatRemanentList(project.remanentVariables, station);
         !remanent.empty())
         unit.attributes.emplace_back("remanent", std::move(remanent));
@@ -297,6 +311,8 @@ std::string writeProject(const Project& project) {
     for (const auto& [station, text] : project.unitDescriptions)
         stations.insert(station);
     stations.insert(project.idfixProg.begin(), project.idfixProg.end());
+    for (const auto& [station, ms] : project.canCycleMs)
+        stations.insert(station);
     for (const auto& [station, options] : project.asiOptions)
         stations.insert(station);
     for (const auto& [address, text] : project.variableDescriptions)

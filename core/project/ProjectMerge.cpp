@@ -126,6 +126,7 @@ MergeResult mergeProjects(const Project& into, const Project& other, bool ignore
     merged.unitDescriptions.insert(other.unitDescriptions.begin(), other.unitDescriptions.end());
     merged.idfixProg.insert(other.idfixProg.begin(), other.idfixProg.end());
     merged.asiOptions.insert(other.asiOptions.begin(), other.asiOptions.end());
+    merged.canCycleMs.insert(other.canCycleMs.begin(), other.canCycleMs.end());
     merged.variableDescriptions.insert(other.variableDescriptions.begin(),
                                        other.variableDescriptions.end());
     merged.exportedVariables.insert(other.exportedVariables.begin(), other.exportedVariables.end());

@@ -30,6 +30,7 @@ Project headOf(const Project& project) {
     head.unitDescriptions = project.unitDescriptions;
     head.idfixProg = project.idfixProg;
     head.asiOptions = project.asiOptions;
+    head.canCycleMs = project.canCycleMs;
     head.variableDescriptions = project.variableDescriptions;
     head.exportedVariables = project.exportedVariables;
     head.remanentVariables = project.remanentVariables;
@@ -122,6 +123,7 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.unitDescriptions = std::move(read.project.unitDescriptions);
     result.project.idfixProg = std::move(read.project.idfixProg);
     result.project.asiOptions = std::move(read.project.asiOptions);
+    result.project.canCycleMs = std::move(read.project.canCycleMs);
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);
     result.project.remanentVariables = std::move(read.project.remanentVariables);

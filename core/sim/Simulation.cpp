@@ -97,9 +97,19 @@ void Simulation::restart() {
     publish();
 }
 
-void Simulation::publish() {
-    for (const auto& unit : m_units)
-        (*m_bus)[unit->image().station % 32] = unit->memory();
+// A unit with the default CAN bus cycle time publishes after every scan; one
+// with a cycle time set publishes at the end of the first scan at or past each
+// multiple of it, so the others see its variables up to that much later.
+void Simulation::publish(bool due) {
+    for (const auto& unit : m_units) {
+        const auto station = static_cast<std::size_t>(unit->image().station % 32);
+        if (const int cycle = unit->image().canCycleMs) {
+            if (due && m_timeMs < m_nextPublishMs[station])
+                continue;
+            m_nextPublishMs[station] = (m_timeMs / cycle + 1) * cycle;
+        }
+        (*m_bus)[station] = unit->memory();
+    }
 }
 
 // Each safe slave's input from its channels, and each AS-i unit's
@@ -129,9 +139,9 @@ void Simulation::scan() {
     updateChannels();
     for (auto& unit : m_units)
         unit->scan(m_timeMs, m_cycleMs);
-    publish();
     ++m_scans;
     m_timeMs += m_cycleMs;
+    publish(true);
 }
 
 void Simulation::run(std::int64_t ms) {

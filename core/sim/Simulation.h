@@ -67,7 +67,9 @@ private:
         SafeInputChannels channels;
     };
 
-    void publish();
+    // Every unit's variables onto the bus; with `due`, only those of the units
+    // whose CAN bus cycle time has come round.
+    void publish(bool due = false);
     void updateChannels();
     SlaveChannels* slaveChannels(const lang::Address& address);
     void tellPresence();
@@ -76,7 +78,8 @@ private:
     std::vector<std::unique_ptr<UnitEngine>> m_units;
     std::array<std::vector<lang::Address>, 32> m_remanent;
     std::array<bool, 32> m_offBus{};
-    std::vector<SlaveChannels> m_channels; // by station and slave
+    std::vector<SlaveChannels> m_channels;          // by station and slave
+    std::array<std::int64_t, 32> m_nextPublishMs{}; // units with a CAN bus cycle time
     int m_cycleMs;
     std::int64_t m_timeMs = 0;
     std::uint64_t m_scans = 0;

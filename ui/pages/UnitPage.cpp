@@ -4,8 +4,10 @@
 #include "blocks/UnitResources.h"
 #include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
+#include "pages/AdvancedSettingsDialog.h"
 #include "pages/SignatureLabel.h"
 #include "pages/UnitSettingsForm.h"
+#include "project/CanBusCycle.h"
 #include "project/ExportedVariables.h"
 #include "project/RemanentVariables.h"
 #include "project/UnitSettings.h"
@@ -40,7 +42,9 @@ UnitPage::UnitPage(QWidget* parent)
       m_undeclared(new QLabel(this)), m_exports(new QLabel(this)), m_remanent(new QLabel(this)),
       m_timers(new QLabel(this)), m_memories(new QLabel(this)), m_registers(new QLabel(this)),
       m_signature(new SignatureLabel(this)),
-      m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)) {
+      m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)),
+      m_canCycle(new QLabel(this)),
+      m_advancedButton(new QPushButton(tr("&Advanced Settings..."), this)) {
     m_undeclared->setWordWrap(true);
     m_undeclared->setText(tr("This unit has code but no '! id_pluto' declaration. Any change "
                              "below writes one."));
@@ -59,6 +63,12 @@ UnitPage::UnitPage(QWidget* parent)
     remanentRow->addWidget(m_remanent, 1);
     remanentRow->addWidget(m_remanentButton);
     form->addRow(tr("Remanent variables:"), remanentRow);
+    m_canCycle->setObjectName(QStringLiteral("canCycleLabel"));
+    m_advancedButton->setObjectName(QStringLiteral("advancedSettingsButton"));
+    auto* cycleRow = new QHBoxLayout;
+    cycleRow->addWidget(m_canCycle, 1);
+    cycleRow->addWidget(m_advancedButton);
+    form->addRow(tr("CAN bus cycle time:"), cycleRow);
 
     auto* resources = new QGroupBox(tr("Resources in use"), this);
     auto* resourceForm = new QFormLayout(resources);
@@ -92,6 +102,7 @@ UnitPage::UnitPage(QWidget* parent)
     connect(m_form, &UnitSettingsForm::edited, this, &UnitPage::apply);
     connect(m_remanentButton, &QPushButton::clicked, this,
             [this] { emit remanentRequested(m_document, m_station); });
+    connect(m_advancedButton, &QPushButton::clicked, this, &UnitPage::editAdvancedSettings);
 }
 
 void UnitPage::showUnit(ProjectDocument* document, int station) {
@@ -138,6 +149,9 @@ void UnitPage::refresh() {
     const bool editable = m_document->permission() == project::Permission::Full;
     m_form->setEnabled(editable);
     m_remanentButton->setEnabled(type.remanent && editable);
+    const int cycle = project::canCycleOf(p, m_station);
+    m_canCycle->setText(cycle ? tr("%1 ms").arg(cycle) : tr("the unit's default"));
+    m_advancedButton->setEnabled(editable);
     const blocks::UnitResources resources = blocks::unitResources(p, m_station);
     m_timers->setText(resourceText(resources.timers));
     m_memories->setText(resourceText(resources.memories));
@@ -165,6 +179,19 @@ void UnitPage::apply() {
     }
     m_document->edit(tr("Change Pluto %1").arg(m_station),
                      [&](project::Project& p) { project::changeUnit(p, settings); });
+}
+
+void UnitPage::editAdvancedSettings() {
+    if (!m_document)
+        return;
+    AdvancedSettingsDialog dialog(m_station, project::canCycleOf(m_document->project(), m_station),
+                                  this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const int station = m_station;
+    const int cycle = dialog.canCycleMs();
+    m_document->edit(tr("Set CAN Bus Cycle Time of Pluto %1").arg(station),
+                     [&](project::Project& p) { project::setCanCycle(p, station, cycle); });
 }
 
 } // namespace rs::ui

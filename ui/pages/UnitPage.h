@@ -32,6 +32,7 @@ signals:
 private:
     void refresh();
     void apply();
+    void editAdvancedSettings();
 
     PageTitle* m_title;
     UnitSettingsForm* m_form;
@@ -43,6 +44,8 @@ private:
     QLabel* m_registers;
     SignatureLabel* m_signature;
     QPushButton* m_remanentButton;
+    QLabel* m_canCycle;
+    QPushButton* m_advancedButton;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
 };
