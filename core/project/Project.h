@@ -3,6 +3,7 @@
 
 #include "AsiOptions.h"
 #include "Baseline.h"
+#include "Gateway.h"
 #include "Protection.h"
 #include "lang/Ast.h"
 
@@ -26,6 +27,8 @@ struct Project {
     // The AS-i Options page of the AS-i units that differ from the defaults
     // (manual Part 1, 7.1), by station.
     std::map<int, AsiOptions> asiOptions;
+    // The gateways on the project's bus, by node address 0-15 (Gateway.h).
+    std::map<int, Gateway> gateways;
     // A CAN bus cycle time other than the default (Part 1, 5.2), in ms, by station.
     std::map<int, int> canCycleMs;
     std::map<lang::Address, std::string> variableDescriptions; // by address

@@ -18,17 +18,12 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,
-            project.includeSource,
-            project.unitDescriptions,
-            project.idfixProg,
-            project.asiOptions,
-            project.canCycleMs,
-            project.variableDescriptions,
-            project.exportedVariables,
-            project.remanentVariables,
-            project.libraries,
-            project.baseline,
+    return {project.description,       project.includeSource,
+            project.unitDescriptions,  project.idfixProg,
+            project.asiOptions,        project.canCycleMs,
+            project.gateways,          project.variableDescriptions,
+            project.exportedVariables, project.remanentVariables,
+            project.libraries,         project.baseline,
             project.protection};
 }
 
@@ -39,6 +34,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.idfixProg = records.idfixProg;
     project.asiOptions = records.asiOptions;
     project.canCycleMs = records.canCycleMs;
+    project.gateways = records.gateways;
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;
     project.remanentVariables = records.remanentVariables;

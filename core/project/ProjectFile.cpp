@@ -5,6 +5,7 @@
 #include "AsiRecords.h"
 #include "Baseline.h"
 #include "CanBusCycle.h"
+#include "GatewayRecords.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
 #include "lang/NameResolver.h"
@@ -180,6 +181,15 @@ private:
             }
             return true;
         }
+        if (kind == "gateway") {
+            try {
+                readGatewayRecord(*annotation, m_project.gateways);
+            } catch (const GatewayRecordError& problem) {
+                error(at, problem.message);
+                return false;
+            }
+            return true;
+        }
         if (kind == "protected") {
             try {
                 m_project.protection = readProtectionRecord(*annotation);
@@ -305,6 +315,10 @@ std::string writeProject(const Project& project) {
         for (const Annotation& record : baselineRecords(*project.baseline))
             preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
                             commentLine(record));
+    // The gateways on the bus, by node address.
+    for (const auto& [node, gateway] : project.gateways)
+        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
+                        commentLine(gatewayRecord(node, gateway)));
 
     // Unit records after the unit's id declaration, else first in its code.
     std::set<int> stations;

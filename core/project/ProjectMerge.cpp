@@ -99,6 +99,10 @@ MergeResult mergeProjects(const Project& into, const Project& other, bool ignore
         if (std::binary_search(ours.begin(), ours.end(), station))
             result.conflicts.push_back("station " + std::to_string(station) +
                                        " is in both projects");
+    for (const auto& [node, gateway] : other.gateways)
+        if (into.gateways.count(node))
+            result.conflicts.push_back("gateway node " + std::to_string(node) +
+                                       " is in both projects");
     const bool stationsClash = !result.conflicts.empty();
     const std::map<std::string, Named> ourNames = namesOf(into.program);
     std::set<std::string> shared;
@@ -127,6 +131,7 @@ MergeResult mergeProjects(const Project& into, const Project& other, bool ignore
     merged.idfixProg.insert(other.idfixProg.begin(), other.idfixProg.end());
     merged.asiOptions.insert(other.asiOptions.begin(), other.asiOptions.end());
     merged.canCycleMs.insert(other.canCycleMs.begin(), other.canCycleMs.end());
+    merged.gateways.insert(other.gateways.begin(), other.gateways.end());
     merged.variableDescriptions.insert(other.variableDescriptions.begin(),
                                        other.variableDescriptions.end());
     merged.exportedVariables.insert(other.exportedVariables.begin(), other.exportedVariables.end());

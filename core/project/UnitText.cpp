@@ -31,6 +31,7 @@ Project headOf(const Project& project) {
     head.idfixProg = project.idfixProg;
     head.asiOptions = project.asiOptions;
     head.canCycleMs = project.canCycleMs;
+    head.gateways = project.gateways;
     head.variableDescriptions = project.variableDescriptions;
     head.exportedVariables = project.exportedVariables;
     head.remanentVariables = project.remanentVariables;
@@ -124,6 +125,7 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.idfixProg = std::move(read.project.idfixProg);
     result.project.asiOptions = std::move(read.project.asiOptions);
     result.project.canCycleMs = std::move(read.project.canCycleMs);
+    result.project.gateways = std::move(read.project.gateways);
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);
     result.project.remanentVariables = std::move(read.project.remanentVariables);

@@ -150,6 +150,11 @@ void Simulation::run(std::int64_t ms) {
         scan();
 }
 
+const UnitMemory& Simulation::published(int station) const {
+    static const UnitMemory kNone{};
+    return station >= 0 && station < 32 ? (*m_bus)[static_cast<std::size_t>(station)] : kNone;
+}
+
 // A unit that is not in the project stands for one of another project on
 // the bus: its global bits are what its bus slot holds, 0 until set.
 std::int64_t Simulation::value(const lang::Address& address) const {

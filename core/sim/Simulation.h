@@ -34,6 +34,10 @@ public:
     UnitEngine* unit(int station);
     const UnitEngine* unit(int station) const;
 
+    // What station `station` last put on the bus (its variables as the other
+    // units and a gateway see them); all 0 for a station out of 0-31.
+    const UnitMemory& published(int station) const;
+
     // Reads any variable of any unit; S<u>.<s> gives sequence s's active step.
     std::int64_t value(const lang::Address& address) const;
     // Inputs (I, IQ buttons, IA, AS-i inputs) and system registers that stand
