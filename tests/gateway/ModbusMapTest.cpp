@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gateway/ModbusMap.h"
+#include "compiler/Compiler.h"
+
+#include <gtest/gtest.h>
+
+using namespace rs;
+using gateway::ModbusException;
+
+namespace {
+
+sim::Simulation plant() {
+    const auto compiled = compiler::compileText("! id_pluto:00=000000000000\n"
+                                                "! id_pluto:01=000000000001\n"
+                                                "! type_pluto:00=A20,is3\n"
+                                                "! type_pluto:01=A20,is3\n"
+                                                "! pgm_pluto:00\n"
+                                                "S0.0_0\n"
+                                                "GM0.0 = I0.0\n"
+                                                "! pgm_pluto:01\n"
+                                                "S1.0_0\n");
+    EXPECT_EQ(compiled.errors(), 0);
+    return sim::Simulation(compiled.images);
+}
+
+gateway::ModbusResponse read(const sim::Simulation& simulation, int unit, int address, int count,
+                             int function = 3) {
+    return gateway::answer({unit, function, address, count, {}}, simulation);
+}
+
+} // namespace
+
+// Appendix D: "a request with start 1 and end 66 will give node status and
+// Pluto global data".
+TEST(ModbusMap, UnitThirtyThreeHoldsNodeStatusAndGlobalDataMostSignificantWordFirst) {
+    sim::Simulation simulation = plant();
+    simulation.set(lang::readAddressWord("I0.0").address, 1);
+    simulation.scan();
+    const auto response = read(simulation, 33, 1, 66);
+    ASSERT_EQ(response.exception, ModbusException::None);
+    ASSERT_EQ(response.registers.size(), 66u);
+    EXPECT_EQ(response.registers[0], 0x0000); // Node Status MSW: Plutos 16-31
+    EXPECT_EQ(response.registers[1], 0x0003); // LSW: Plutos 0 and 1
+    EXPECT_EQ(response.registers[2], 0x0010); // Pluto 0 MSW: GM0.0 is bit 20
+    EXPECT_EQ(response.registers[3], 0x0001); // Pluto 0 LSW: I0.0 is bit 0
+    EXPECT_EQ(read(simulation, 33, 4, 1).registers, std::vector<std::uint16_t>{0x0001});
+    // Additional data: start 67, end 130.
+    EXPECT_EQ(read(simulation, 33, 67, 64).registers.size(), 64u);
+}
+
+TEST(ModbusMap, WhatTheManualDoesNotAllowIsAStandardException) {
+    const sim::Simulation simulation = plant();
+    EXPECT_EQ(read(simulation, 33, 1, 101).exception, ModbusException::IllegalDataValue);
+    EXPECT_EQ(read(simulation, 33, 1, 0).exception, ModbusException::IllegalDataValue);
+    EXPECT_EQ(read(simulation, 33, 0, 2).exception, ModbusException::IllegalDataAddress);
+    EXPECT_EQ(read(simulation, 33, 100, 32).exception, ModbusException::IllegalDataAddress);
+    EXPECT_EQ(read(simulation, 33, 129, 2).exception, ModbusException::None);
+    EXPECT_EQ(read(simulation, 33, 1, 2, 4).exception, ModbusException::IllegalFunction);
+    EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, simulation).exception,
+              ModbusException::IllegalFunction); // unit 33 is read only
+    EXPECT_EQ(read(simulation, 5, 0, 1).exception, ModbusException::GatewayTargetFailed);
+}
