@@ -6,6 +6,7 @@
 #include "ProtectVerb.h"
 #include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
+#include "ServeVerb.h"
 #include "TestVerb.h"
 #include "VarsVerbs.h"
 #include "Verbs.h"
@@ -114,6 +115,11 @@ const rs::cli::Verb kVerbs[] = {
      "                                 password protect the project (the manual's 4.1): it\n"
      "                                 reads freely, and writes only with the password",
      rs::cli::runProtect},
+    {"serve",
+     "serve FILE.sps [--modbus HOST:PORT] [--scenario SCN.scn] [--speed FACTOR]\n"
+     "                                 simulate in real time and serve the project's Ethernet\n"
+     "                                 gateway's Modbus TCP map (default 127.0.0.1:1502)",
+     rs::cli::runServe},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -154,7 +160,8 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("K")});
     parser.addOption({QStringLiteral("scenario"),
                       QStringLiteral("ladder: run this scenario first and draw the power it "
-                                     "leaves."),
+                                     "leaves; serve: drive the inputs by its lines on the "
+                                     "simulated clock."),
                       QStringLiteral("SCN.scn")});
     parser.addOption({QStringLiteral("lib"),
                       QStringLiteral("Add the user library FILE (.rslib) to the project's "
@@ -200,6 +207,13 @@ int run(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("accept-changes"),
                       QStringLiteral("protect: take a change made by hand since the project was "
                                      "protected as the password holder's, once reviewed.")});
+    parser.addOption({QStringLiteral("modbus"),
+                      QStringLiteral("serve: where to answer Modbus TCP (default "
+                                     "127.0.0.1:1502)."),
+                      QStringLiteral("HOST:PORT")});
+    parser.addOption({QStringLiteral("speed"),
+                      QStringLiteral("serve: run the simulation FACTOR times real time."),
+                      QStringLiteral("FACTOR")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});

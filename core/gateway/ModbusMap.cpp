@@ -10,8 +10,7 @@ namespace {
 constexpr int kReadHoldingRegisters = 3;
 constexpr int kWriteMultipleRegisters = 16;
 
-void put(std::array<std::uint16_t, kDataFromPlutoLast + 1>& table, int address,
-         std::uint32_t value) {
+void put(DataFromPluto& table, int address, std::uint32_t value) {
     table[static_cast<std::size_t>(address)] = static_cast<std::uint16_t>(value >> 16);
     table[static_cast<std::size_t>(address) + 1] = static_cast<std::uint16_t>(value & 0xFFFF);
 }
@@ -22,8 +21,8 @@ ModbusResponse refused(ModbusException exception) {
 
 } // namespace
 
-std::array<std::uint16_t, kDataFromPlutoLast + 1> dataFromPluto(const sim::Simulation& simulation) {
-    std::array<std::uint16_t, kDataFromPlutoLast + 1> table{};
+DataFromPluto dataFromPluto(const sim::Simulation& simulation) {
+    DataFromPluto table{};
     put(table, 1, nodeStatus(simulation));
     for (int station = 0; station < 32; ++station)
         put(table, 3 + 2 * station, globalData(simulation, station));
@@ -31,7 +30,7 @@ std::array<std::uint16_t, kDataFromPlutoLast + 1> dataFromPluto(const sim::Simul
     return table;
 }
 
-ModbusResponse answer(const ModbusRequest& request, const sim::Simulation& simulation) {
+ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& table) {
     if (request.unit != kDataFromPlutoUnit)
         return refused(ModbusException::GatewayTargetFailed);
     if (request.function == kWriteMultipleRegisters)
@@ -43,7 +42,6 @@ ModbusResponse answer(const ModbusRequest& request, const sim::Simulation& simul
     if (request.address < kDataFromPlutoFirst ||
         request.address + request.count - 1 > kDataFromPlutoLast)
         return refused(ModbusException::IllegalDataAddress);
-    const auto table = dataFromPluto(simulation);
     ModbusResponse response;
     response.registers.assign(table.begin() + request.address,
                               table.begin() + request.address + request.count);

@@ -41,8 +41,10 @@ inline constexpr int kDataFromPlutoLast = 130; // the LSW of Additional Data 31
 
 // Unit 33, indexed by address (0 unused): Node Status at 1, Pluto n at
 // 3 + 2n, Additional Data a at 67 + 2a, each a UDINT with its MSW first.
-std::array<std::uint16_t, kDataFromPlutoLast + 1> dataFromPluto(const sim::Simulation& simulation);
+using DataFromPluto = std::array<std::uint16_t, kDataFromPlutoLast + 1>;
+DataFromPluto dataFromPluto(const sim::Simulation& simulation);
 
-ModbusResponse answer(const ModbusRequest& request, const sim::Simulation& simulation);
+// The answer from unit 33 as it stood in `data`.
+ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& data);
 
 } // namespace rs::gateway

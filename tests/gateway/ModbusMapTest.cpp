@@ -25,7 +25,8 @@ sim::Simulation plant() {
 
 gateway::ModbusResponse read(const sim::Simulation& simulation, int unit, int address, int count,
                              int function = 3) {
-    return gateway::answer({unit, function, address, count, {}}, simulation);
+    return gateway::answer({unit, function, address, count, {}},
+                           gateway::dataFromPluto(simulation));
 }
 
 } // namespace
@@ -56,7 +57,7 @@ TEST(ModbusMap, WhatTheManualDoesNotAllowIsAStandardException) {
     EXPECT_EQ(read(simulation, 33, 100, 32).exception, ModbusException::IllegalDataAddress);
     EXPECT_EQ(read(simulation, 33, 129, 2).exception, ModbusException::None);
     EXPECT_EQ(read(simulation, 33, 1, 2, 4).exception, ModbusException::IllegalFunction);
-    EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, simulation).exception,
+    EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, gateway::dataFromPluto(simulation)).exception,
               ModbusException::IllegalFunction); // unit 33 is read only
     EXPECT_EQ(read(simulation, 5, 0, 1).exception, ModbusException::GatewayTargetFailed);
 }
