@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ModbusTcpServer.h"
 
+#include "ModbusFrame.h"
+
 #include <modbus/modbus.h>
 
 #include <arpa/inet.h>
@@ -29,27 +31,6 @@ std::string peerName(int socket) {
     char text[INET_ADDRSTRLEN] = {};
     inet_ntop(AF_INET, &peer.sin_addr, text, sizeof text);
     return std::string(text) + ":" + std::to_string(ntohs(peer.sin_port));
-}
-
-int word(const std::uint8_t* bytes) {
-    return bytes[0] << 8 | bytes[1];
-}
-
-// The request in a received frame (MBAP header, then the PDU).
-ModbusRequest requestOf(const std::uint8_t* frame, int length, int header) {
-    ModbusRequest request;
-    request.unit = frame[header - 1];
-    request.function = frame[header];
-    if (length >= header + 5) {
-        request.address = word(frame + header + 1);
-        request.count = word(frame + header + 3);
-    }
-    if (request.function == 16 && length >= header + 6) {
-        const int bytes = frame[header + 5];
-        for (int i = 0; i + 1 < bytes && header + 6 + i + 1 < length; i += 2)
-            request.values.push_back(static_cast<std::uint16_t>(word(frame + header + 6 + i)));
-    }
-    return request;
 }
 
 } // namespace
@@ -150,16 +131,21 @@ void ModbusTcpServer::serve(int waitMs, const Answer& answer, const Log& log) {
                                        : std::string("dropped: ") + modbus_strerror(errno));
             continue;
         }
-        const ModbusRequest request = requestOf(frame, length, header);
-        const ModbusResponse response = answer(request);
+        const std::optional<ModbusRequest> request =
+            readModbusFrame(frame, static_cast<std::size_t>(length));
+        if (!request || header != static_cast<int>(kMbapHeaderLength)) {
+            s.drop(client, log, "dropped: a malformed frame");
+            continue;
+        }
+        const ModbusResponse response = answer(*request);
         int sent = 0;
         if (response.exception != ModbusException::None) {
             sent =
                 modbus_reply_exception(s.context, frame, static_cast<unsigned>(response.exception));
         } else {
             modbus_mapping_t* mapping = modbus_mapping_new_start_address(
-                0, 0, 0, 0, static_cast<unsigned>(request.address),
-                static_cast<unsigned>(std::max<int>(request.count, 1)), 0, 0);
+                0, 0, 0, 0, static_cast<unsigned>(request->address),
+                static_cast<unsigned>(std::max<int>(request->count, 1)), 0, 0);
             std::copy(response.registers.begin(), response.registers.end(), mapping->tab_registers);
             sent = modbus_reply(s.context, frame, length, mapping);
             modbus_mapping_free(mapping);

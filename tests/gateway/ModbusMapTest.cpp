@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gateway/ModbusMap.h"
 #include "compiler/Compiler.h"
+#include "gateway/ModbusFrame.h"
 
 #include <gtest/gtest.h>
 
@@ -60,4 +61,21 @@ TEST(ModbusMap, WhatTheManualDoesNotAllowIsAStandardException) {
     EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, gateway::dataFromPluto(simulation)).exception,
               ModbusException::IllegalFunction); // unit 33 is read only
     EXPECT_EQ(read(simulation, 5, 0, 1).exception, ModbusException::GatewayTargetFailed);
+}
+
+TEST(ModbusFrame, AWholeFrameIsReadAndAnythingElseRefused) {
+    // Transaction 1, protocol 0, length 6, unit 33, read holding registers 1..66.
+    const std::uint8_t read[] = {0, 1, 0, 0, 0, 6, 33, 3, 0, 1, 0, 66};
+    const auto request = gateway::readModbusFrame(read, sizeof read);
+    ASSERT_TRUE(request);
+    EXPECT_EQ(request->unit, 33);
+    EXPECT_EQ(request->function, 3);
+    EXPECT_EQ(request->address, 1);
+    EXPECT_EQ(request->count, 66);
+    EXPECT_FALSE(gateway::readModbusFrame(read, sizeof read - 1)); // the length field disagrees
+    EXPECT_FALSE(gateway::readModbusFrame(read, 7));               // no function code
+    const std::uint8_t write[] = {0, 3, 0, 0, 0, 11, 1, 16, 0, 0, 0, 2, 4, 0, 13, 0, 3};
+    const auto written = gateway::readModbusFrame(write, sizeof write);
+    ASSERT_TRUE(written);
+    EXPECT_EQ(written->values, (std::vector<std::uint16_t>{13, 3}));
 }
