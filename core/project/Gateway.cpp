@@ -51,4 +51,32 @@ bool servesModbusTcp(GatewayType type) {
     return type == GatewayType::E1 || type == GatewayType::E2;
 }
 
+std::optional<std::string> gatewayProblem(const Gateway& gateway) {
+    for (const auto& [area, data] : gateway.areas) {
+        const std::string where = "additional data area " + std::to_string(area);
+        if (area < 0 || area >= kGatewayAreas)
+            return "additional data areas are numbered 0-" + std::to_string(kGatewayAreas - 1);
+        if (data.pluto < 0 || data.pluto > 31)
+            return where + ": a Pluto is numbered 0-31";
+        if (data.ioType < kMinIoType || data.ioType > kMaxIoType)
+            return where + ": the IO-type is 1-99 for a user block, 100-113 for a standard one";
+    }
+    for (int packet : gateway.toPluto)
+        if (packet < 0 || packet >= kToPlutoPackets)
+            return "Data to Pluto packets are numbered 0-" + std::to_string(kToPlutoPackets - 1);
+    for (int node : gateway.expectedNodes)
+        if (node < 0 || node > 31)
+            return "an expected node is a Pluto 0-31";
+    if (gateway.cycleMs < kMinGatewayCycleMs || gateway.cycleMs > kMaxGatewayCycleMs)
+        return "the cycle time is " + std::to_string(kMinGatewayCycleMs) + "-" +
+               std::to_string(kMaxGatewayCycleMs) + " ms";
+    const int least = servesModbusTcp(gateway.type) ? kMinEthernetTimeoutMs : 1;
+    if (gateway.timeoutMs != 0 &&
+        (gateway.timeoutMs < least || gateway.timeoutMs > kMaxGatewayTimeoutMs))
+        return "the timeout is 0 (none) or " + std::to_string(least) + "-" +
+               std::to_string(kMaxGatewayTimeoutMs) + " ms" +
+               (least > 1 ? std::string(" on an Ethernet gateway") : std::string());
+    return std::nullopt;
+}
+
 } // namespace rs::project

@@ -181,7 +181,7 @@ private:
             }
             return true;
         }
-        if (kind == "gateway") {
+        if (kind == "gateway" || kind == "gateway_area") {
             try {
                 readGatewayRecord(*annotation, m_project.gateways);
             } catch (const GatewayRecordError& problem) {
@@ -317,8 +317,9 @@ std::string writeProject(const Project& project) {
                             commentLine(record));
     // The gateways on the bus, by node address.
     for (const auto& [node, gateway] : project.gateways)
-        preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
-                        commentLine(gatewayRecord(node, gateway)));
+        for (const Annotation& record : gatewayRecords(node, gateway))
+            preamble.insert(preamble.begin() + static_cast<std::ptrdiff_t>(at++),
+                            commentLine(record));
 
     // Unit records after the unit's id declaration, else first in its code.
     std::set<int> stations;

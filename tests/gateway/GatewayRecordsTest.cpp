@@ -64,3 +64,52 @@ TEST(GatewayRecords, MergingTwoGatewaysOnOneNodeIsAConflict) {
     ASSERT_TRUE(joined.merged);
     EXPECT_EQ(joined.merged->gateways.size(), 3u);
 }
+
+TEST(GatewayRecords, SettingsAndAreasRoundTripAndOnlyNonDefaultsAreWritten) {
+    const std::string text = "$name Line\n"
+                             ";@gateway 0 type=\"GATE-E1\" cycle_ms=\"48\" timeout_ms=\"2000\" "
+                             "to_pluto=\"0,1\" expected=\"0-3,5\"\n"
+                             ";@gateway_area 0 5 pluto=\"2\" io_type=\"101\"\n"
+                             ";@gateway_area 0 0 pluto=\"0\" io_type=\"7\"\n"
+                             ";@gateway 1 type=\"GATE-P1\"\n"
+                             "! id_pluto:00=000000000000\n";
+    const auto read = project::readProject(text);
+    ASSERT_TRUE(read.diagnostics.empty()) << read.diagnostics.front().message;
+    const project::Gateway& gateway = read.project.gateways.at(0);
+    EXPECT_EQ(gateway.cycleMs, 48);
+    EXPECT_EQ(gateway.timeoutMs, 2000);
+    EXPECT_EQ(gateway.toPluto, (std::set<int>{0, 1}));
+    EXPECT_EQ(gateway.expectedNodes, (std::set<int>{0, 1, 2, 3, 5}));
+    EXPECT_EQ(gateway.areas.at(5), (project::GatewayArea{2, 101}));
+    const std::string written = project::writeProject(read.project);
+    EXPECT_EQ(written.substr(0, written.find("! id_pluto")),
+              "$name Line\n"
+              ";@gateway 0 type=\"GATE-E1\" cycle_ms=\"48\" timeout_ms=\"2000\" to_pluto=\"0-1\" "
+              "expected=\"0-3,5\"\n"
+              ";@gateway_area 0 0 pluto=\"0\" io_type=\"7\"\n"
+              ";@gateway_area 0 5 pluto=\"2\" io_type=\"101\"\n"
+              ";@gateway 1 type=\"GATE-P1\"\n");
+    EXPECT_EQ(project::writeProject(project::readProject(written).project), written);
+}
+
+TEST(GatewayRecords, SettingsOutsideTheManualsRangesAreErrors) {
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\" timeout_ms=\"500\""),
+              "2:1: @gateway 0: the timeout is 0 (none) or 1000-60000 ms on an Ethernet gateway");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-P1\" timeout_ms=\"500\""), "no error");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\" cycle_ms=\"300\""),
+              "2:1: @gateway 0: the cycle time is 4-255 ms");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\" to_pluto=\"4\""),
+              "2:1: @gateway 0: Data to Pluto packets are numbered 0-3");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\" expected=\"3-1\""),
+              "2:1: @gateway expected must be numbers and runs such as 0-3,5, not '3-1'");
+    EXPECT_EQ(firstError(";@gateway_area 0 5 pluto=\"2\" io_type=\"101\""),
+              "2:1: @gateway_area 0: no gateway with this node address is declared before it");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\"\n;@gateway_area 0 5 pluto=\"2\" "
+                         "io_type=\"114\""),
+              "3:1: @gateway_area 0: additional data area 5: the IO-type is 1-99 for a user "
+              "block, 100-113 for a standard one");
+    EXPECT_EQ(firstError(";@gateway 0 type=\"GATE-E1\"\n;@gateway_area 0 32 pluto=\"2\" "
+                         "io_type=\"1\""),
+              "3:1: @gateway_area needs a node address 0-15 and an area 0-31, as in "
+              ";@gateway_area 0 5 pluto=\"2\" io_type=\"101\"");
+}
