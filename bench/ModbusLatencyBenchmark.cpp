@@ -41,13 +41,14 @@ void BM_Unit33ReadLatency(benchmark::State& state) {
     std::atomic<bool> stop{false};
     std::mutex dataMutex;
     rs::gateway::DataFromPluto data = rs::gateway::dataFromPluto(simulation);
+    rs::gateway::DataToPluto toPluto = rs::gateway::kNoDataToPluto;
     std::thread modbus([&] {
         while (!stop)
             server->serve(
                 50,
                 [&](const rs::gateway::ModbusRequest& request) {
                     std::lock_guard lock(dataMutex);
-                    return rs::gateway::answer(request, data);
+                    return rs::gateway::answer(request, data, toPluto);
                 },
                 [](const std::string&) {});
     });

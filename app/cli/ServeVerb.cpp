@@ -203,13 +203,15 @@ int runServe(const Invocation& invocation) {
     sim::Simulation simulation(compiled.images);
     std::mutex dataMutex;
     gateway::DataFromPluto data = gateway::dataFromPluto(simulation);
+    // Kept for the Plutos' Ext blocks, which are not built yet (docs/gateway.md).
+    gateway::DataToPluto toPluto = gateway::kNoDataToPluto;
     std::thread modbus([&] {
         while (!g_stop)
             server->serve(
                 100,
                 [&](const gateway::ModbusRequest& request) {
                     std::lock_guard lock(dataMutex);
-                    return gateway::answer(request, data);
+                    return gateway::answer(request, data, toPluto);
                 },
                 [&](const std::string& line) { output.line(line); });
     });

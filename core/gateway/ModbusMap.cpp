@@ -3,6 +3,8 @@
 
 #include "GatewayData.h"
 
+#include <algorithm>
+
 namespace rs::gateway {
 
 namespace {
@@ -30,13 +32,31 @@ DataFromPluto dataFromPluto(const sim::Simulation& simulation) {
     return table;
 }
 
-ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& table) {
+ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& table,
+                      DataToPluto& toPluto) {
+    const bool read = request.function == kReadHoldingRegisters;
+    const bool write = request.function == kWriteMultipleRegisters;
+    if (request.unit == kDataToPlutoUnit) {
+        if (!read && !write)
+            return refused(ModbusException::IllegalFunction);
+        if (request.count < 1 || request.count > kMaxRegistersPerRequest ||
+            (write && request.values.size() != static_cast<std::size_t>(request.count)))
+            return refused(ModbusException::IllegalDataValue);
+        if (request.address < 0 || request.address + request.count - 1 > kDataToPlutoLength)
+            return refused(ModbusException::IllegalDataAddress);
+        const auto first = toPluto.begin() + request.address;
+        if (read)
+            return {ModbusException::None, {first, first + request.count}};
+        // The length word says what the table is; it cannot be changed.
+        if (request.address == 0 && request.values.front() != kDataToPlutoLength)
+            return refused(ModbusException::IllegalDataValue);
+        std::copy(request.values.begin(), request.values.end(), first);
+        return {};
+    }
     if (request.unit != kDataFromPlutoUnit)
         return refused(ModbusException::GatewayTargetFailed);
-    if (request.function == kWriteMultipleRegisters)
+    if (!read)
         return refused(ModbusException::IllegalFunction); // unit 33 is read only
-    if (request.function != kReadHoldingRegisters)
-        return refused(ModbusException::IllegalFunction);
     if (request.count < 1 || request.count > kMaxRegistersPerRequest)
         return refused(ModbusException::IllegalDataValue);
     if (request.address < kDataFromPlutoFirst ||

@@ -44,7 +44,16 @@ inline constexpr int kDataFromPlutoLast = 130; // the LSW of Additional Data 31
 using DataFromPluto = std::array<std::uint16_t, kDataFromPlutoLast + 1>;
 DataFromPluto dataFromPluto(const sim::Simulation& simulation);
 
-// The answer from unit 33 as it stood in `data`.
-ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& data);
+// Unit 1, Data to Pluto, as the clients last wrote it (one table for every
+// client: the last writer wins): the length 13 at 0, the areas' valid bits
+// at 1, then for areas 0-3 their bits and registers 0 and 1.
+inline constexpr int kDataToPlutoUnit = 1;
+inline constexpr int kDataToPlutoLength = 13;
+using DataToPluto = std::array<std::uint16_t, kDataToPlutoLength + 1>;
+inline constexpr DataToPluto kNoDataToPluto{kDataToPlutoLength};
+
+// The answer from unit 33 as it stood in `data`, and from or into unit 1.
+ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& data,
+                      DataToPluto& toPluto);
 
 } // namespace rs::gateway

@@ -97,13 +97,14 @@ protected:
     }
 
     // mbpoll once, as the research notes' recipes: -0 makes -r the manual's address.
-    QString poll(int port, const QStringList& arguments) {
+    // Values after the host are written (function 16 for several).
+    QString poll(int port, const QStringList& arguments, const QStringList& values = {}) {
         QProcess mbpoll;
         mbpoll.start(QStringLiteral("mbpoll"),
                      QStringList{QStringLiteral("-m"), QStringLiteral("tcp"), QStringLiteral("-p"),
                                  QString::number(port), QStringLiteral("-0"), QStringLiteral("-1"),
                                  QStringLiteral("-o"), QStringLiteral("2")} +
-                         arguments + QStringList{QStringLiteral("127.0.0.1")});
+                         arguments + QStringList{QStringLiteral("127.0.0.1")} + values);
         EXPECT_TRUE(mbpoll.waitForFinished(10000));
         return QString::fromUtf8(mbpoll.readAllStandardOutput() + mbpoll.readAllStandardError());
     }
@@ -145,6 +146,19 @@ TEST_F(ServeCliTest, MbpollReadsNodeStatusAndGlobalDataWhileAScenarioDrivesTheIn
     EXPECT_TRUE(poll(port, {QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"),
                             QStringLiteral("1"), QStringLiteral("-c"), QStringLiteral("101")})
                     .contains(QStringLiteral("Illegal data value")));
+    // Data to Pluto (unit 1): written with function 16, as mbpoll does for several values.
+    const QString written =
+        poll(port,
+             {QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"), QStringLiteral("0")},
+             {QStringLiteral("13"), QStringLiteral("3"), QStringLiteral("255"),
+              QStringLiteral("100"), QStringLiteral("200")});
+    EXPECT_TRUE(written.contains(QStringLiteral("Written 5 references"))) << written.toStdString();
+    const QString back =
+        poll(port, {QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"),
+                    QStringLiteral("0"), QStringLiteral("-c"), QStringLiteral("5")});
+    EXPECT_TRUE(back.contains(QStringLiteral("[1]: \t3")) &&
+                back.contains(QStringLiteral("[4]: \t200")))
+        << back.toStdString();
     EXPECT_EQ(stop(), 0);
     const QString log = QString::fromUtf8(server.readAllStandardOutput());
     EXPECT_TRUE(log.contains(QStringLiteral(" connected\n")));

@@ -25,7 +25,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     rs::gateway::DataFromPluto table{};
     for (std::size_t i = 0; i < table.size(); ++i)
         table[i] = static_cast<std::uint16_t>(i * 257);
-    const rs::gateway::ModbusResponse response = rs::gateway::answer(*request, table);
+    rs::gateway::DataToPluto toPluto = rs::gateway::kNoDataToPluto;
+    const rs::gateway::ModbusResponse response = rs::gateway::answer(*request, table, toPluto);
+    if (toPluto[0] != rs::gateway::kDataToPlutoLength)
+        fail("the length of Data to Pluto changed");
+    if (request->unit == rs::gateway::kDataToPlutoUnit)
+        return 0;
     if (response.exception != rs::gateway::ModbusException::None) {
         if (!response.registers.empty())
             fail("an exception with registers");

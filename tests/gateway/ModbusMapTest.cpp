@@ -26,8 +26,9 @@ sim::Simulation plant() {
 
 gateway::ModbusResponse read(const sim::Simulation& simulation, int unit, int address, int count,
                              int function = 3) {
-    return gateway::answer({unit, function, address, count, {}},
-                           gateway::dataFromPluto(simulation));
+    gateway::DataToPluto toPluto = gateway::kNoDataToPluto;
+    return gateway::answer({unit, function, address, count, {}}, gateway::dataFromPluto(simulation),
+                           toPluto);
 }
 
 } // namespace
@@ -58,7 +59,9 @@ TEST(ModbusMap, WhatTheManualDoesNotAllowIsAStandardException) {
     EXPECT_EQ(read(simulation, 33, 100, 32).exception, ModbusException::IllegalDataAddress);
     EXPECT_EQ(read(simulation, 33, 129, 2).exception, ModbusException::None);
     EXPECT_EQ(read(simulation, 33, 1, 2, 4).exception, ModbusException::IllegalFunction);
-    EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, gateway::dataFromPluto(simulation)).exception,
+    gateway::DataToPluto toPluto = gateway::kNoDataToPluto;
+    EXPECT_EQ(gateway::answer({33, 16, 1, 2, {1, 2}}, gateway::dataFromPluto(simulation), toPluto)
+                  .exception,
               ModbusException::IllegalFunction); // unit 33 is read only
     EXPECT_EQ(read(simulation, 5, 0, 1).exception, ModbusException::GatewayTargetFailed);
 }
@@ -78,4 +81,29 @@ TEST(ModbusFrame, AWholeFrameIsReadAndAnythingElseRefused) {
     const auto written = gateway::readModbusFrame(write, sizeof write);
     ASSERT_TRUE(written);
     EXPECT_EQ(written->values, (std::vector<std::uint16_t>{13, 3}));
+}
+
+// Appendix D, unit 1: one table for every client, read and written.
+TEST(ModbusMap, DataToPlutoIsWrittenAndReadBackWithItsLengthKept) {
+    const gateway::DataFromPluto none{};
+    gateway::DataToPluto toPluto = gateway::kNoDataToPluto;
+    // Length 13, areas 0 and 1 valid, area 0's bits 0x00FF, registers 100 and 200.
+    EXPECT_EQ(
+        gateway::answer({1, 16, 0, 5, {13, 0x0003, 0x00FF, 100, 200}}, none, toPluto).exception,
+        ModbusException::None);
+    const auto back = gateway::answer({1, 3, 0, 5, {}}, none, toPluto);
+    EXPECT_EQ(back.registers, (std::vector<std::uint16_t>{13, 3, 0x00FF, 100, 200}));
+    // Area 3's register 1 is the last word.
+    EXPECT_EQ(gateway::answer({1, 16, 12, 2, {7, 8}}, none, toPluto).exception,
+              ModbusException::None);
+    EXPECT_EQ(toPluto[13], 8);
+    EXPECT_EQ(gateway::answer({1, 16, 13, 2, {7, 8}}, none, toPluto).exception,
+              ModbusException::IllegalDataAddress);
+    EXPECT_EQ(gateway::answer({1, 16, 0, 2, {12, 1}}, none, toPluto).exception,
+              ModbusException::IllegalDataValue); // the length cannot change
+    EXPECT_EQ(gateway::answer({1, 16, 1, 2, {1}}, none, toPluto).exception,
+              ModbusException::IllegalDataValue); // fewer values than registers
+    EXPECT_EQ(gateway::answer({1, 6, 1, 1, {}}, none, toPluto).exception,
+              ModbusException::IllegalFunction);
+    EXPECT_EQ(toPluto[1], 3); // nothing refused was taken
 }
