@@ -4,7 +4,7 @@
 #include "Verbs.h"
 #include "gateway/ModbusMap.h"
 #include "gateway/ModbusTcpServer.h"
-#include "sim/Scenario.h"
+#include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
 
 #include <QString>
@@ -14,7 +14,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -51,80 +50,28 @@ private:
     std::mutex m_mutex;
 };
 
-// The simulation on the wall clock, `speed` times real time; stops early
-// when asked to.
+// The simulation on the wall clock, `speed` times real time.
 class Pacer {
 public:
-    Pacer(sim::Simulation& simulation, double speed, const std::function<void()>& scanned)
-        : m_simulation(simulation), m_speed(speed), m_scanned(scanned), m_start(Clock::now()) {}
+    Pacer(const sim::Simulation& simulation, double speed)
+        : m_simulation(simulation), m_speed(speed), m_start(Clock::now()) {}
 
-    bool scan() {
+    // Sleeps until the next scan is due; false when asked to stop.
+    bool waitForScan() const {
         const auto due = m_start + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double, std::milli>(
                                            static_cast<double>(m_simulation.timeMs()) / m_speed));
         while (!g_stop && Clock::now() < due)
             std::this_thread::sleep_for(
                 std::min<Clock::duration>(due - Clock::now(), std::chrono::milliseconds(50)));
-        if (g_stop)
-            return false;
-        m_simulation.scan();
-        m_scanned();
-        return true;
+        return !g_stop;
     }
 
 private:
-    sim::Simulation& m_simulation;
+    const sim::Simulation& m_simulation;
     double m_speed;
-    std::function<void()> m_scanned;
     Clock::time_point m_start;
 };
-
-void play(const sim::Scenario& scenario, sim::Simulation& simulation, Pacer& pacer, Output& output,
-          const std::string& path) {
-    for (const auto& step : scenario.steps) {
-        if (g_stop)
-            return;
-        using Kind = sim::ScenarioStep::Kind;
-        switch (step.kind) {
-        case Kind::Set:
-            if (step.channel)
-                simulation.setChannel(step.operand, step.channel, step.value != 0);
-            else
-                simulation.set(step.operand, step.value);
-            break;
-        case Kind::Release:
-            simulation.release(step.operand);
-            break;
-        case Kind::Connect:
-        case Kind::Disconnect:
-            simulation.setOnBus(static_cast<int>(step.value), step.kind == Kind::Connect);
-            break;
-        case Kind::Cycle:
-            simulation.setCycleMs(static_cast<int>(step.durationMs));
-            break;
-        case Kind::Run: {
-            const std::int64_t end = simulation.timeMs() + step.durationMs;
-            while (simulation.timeMs() < end && pacer.scan()) {
-            }
-            break;
-        }
-        case Kind::Scans:
-            for (std::int64_t i = 0; i < step.count && pacer.scan(); ++i) {
-            }
-            break;
-        case Kind::Expect: {
-            const std::int64_t deadline = simulation.timeMs() + step.durationMs;
-            bool held = simulation.value(step.operand) == step.value;
-            while (!held && simulation.timeMs() < deadline && pacer.scan())
-                held = simulation.value(step.operand) == step.value;
-            if (!held && !g_stop)
-                output.line(path + ":" + std::to_string(step.line) + ": " + step.text +
-                            " failed: got " + std::to_string(simulation.value(step.operand)));
-            break;
-        }
-        }
-    }
-}
 
 } // namespace
 
@@ -215,13 +162,25 @@ int runServe(const Invocation& invocation) {
                 },
                 [&](const std::string& line) { output.line(line); });
     });
-    Pacer pacer(simulation, speed, [&] {
+    const auto publish = [&] {
         const gateway::DataFromPluto fresh = gateway::dataFromPluto(simulation);
         std::lock_guard lock(dataMutex);
         data = fresh;
-    });
-    play(scenario, simulation, pacer, output, scenarioPath.toStdString());
-    while (pacer.scan()) {
+    };
+    const Pacer pacer(simulation, speed);
+    // The scenario runs as `test` runs it, each scan waiting for the wall clock.
+    const sim::ScenarioReport report = sim::runScenario(
+        scenarioPath.toStdString(), scenario, simulation, nullptr,
+        [&](const sim::Simulation&) {
+            publish();
+            pacer.waitForScan();
+        },
+        [] { return g_stop.load(); });
+    for (const auto& failure : report.failures)
+        output.line(failure);
+    while (pacer.waitForScan()) {
+        simulation.scan();
+        publish();
     }
     modbus.join();
     output.line("stopped");
