@@ -225,9 +225,9 @@ void AsiOptionsPage::build() {
             row.address = {number, b};
             const AsiSlaveAddress address = row.address;
             const QString key = QString::number(number) + (b ? QStringLiteral("B") : QString());
-            auto* label = new QLabel(slaves);
-            label->setObjectName(QStringLiteral("asiSlave:%1").arg(key));
-            grid->addWidget(label, line, SlaveColumn);
+            row.label = new QLabel(slaves);
+            row.label->setObjectName(QStringLiteral("asiSlave:%1").arg(key));
+            grid->addWidget(row.label, line, SlaveColumn);
             row.type = new QComboBox(slaves);
             row.type->setObjectName(QStringLiteral("asiType:%1").arg(key));
             row.type->setSizeAdjustPolicy(QComboBox::AdjustToContents);
@@ -235,7 +235,7 @@ void AsiOptionsPage::build() {
             for (AsiSlaveType type : project::slaveTypesAt(
                      {number, b}, b ? AsiSlaveType::NonsafeAB : AsiSlaveType::Undefined))
                 row.type->addItem(slaveTypeName(type, b), static_cast<int>(type));
-            label->setBuddy(row.type);
+            row.label->setBuddy(row.type);
             connect(row.type, &QComboBox::activated, this, [this, address](int index) {
                 const QComboBox* combo = nullptr;
                 for (const auto& r : m_rows)
@@ -369,9 +369,7 @@ void AsiOptionsPage::refresh() {
 void AsiOptionsPage::fill(Row& row, const project::AsiOptions& options) {
     const auto found = options.slaves.find(row.address);
     const AsiSlave slave = found == options.slaves.end() ? AsiSlave{} : found->second;
-    auto* label = m_content->findChild<QLabel*>(
-        QStringLiteral("asiSlave:%1%2").arg(row.address.number).arg(row.address.b ? "B" : ""));
-    label->setText(slaveLabel(row.address));
+    row.label->setText(slaveLabel(row.address));
 
     // What the type list offers: a B address only beside an A/B slave or none,
     // and no more block slaves once the unit has as many as it takes.

@@ -47,6 +47,7 @@ public:
 private:
     struct Row {
         project::AsiSlaveAddress address;
+        QLabel* label = nullptr;
         QComboBox* type = nullptr;
         QComboBox* model = nullptr;
         QComboBox* parameter = nullptr;
