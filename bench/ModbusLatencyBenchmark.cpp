@@ -4,7 +4,7 @@
 // generated 32-unit plant simulates in real time (docs/performance.md).
 #include "ProjectGenerator.h"
 #include "compiler/Compiler.h"
-#include "gateway/ModbusMap.h"
+#include "gateway/GatewayNode.h"
 #include "gateway/ModbusTcpServer.h"
 #include "sim/Simulation.h"
 
@@ -39,18 +39,18 @@ void BM_Unit33ReadLatency(benchmark::State& state) {
         return;
     }
     std::atomic<bool> stop{false};
-    std::mutex dataMutex;
-    rs::gateway::DataFromPluto data = rs::gateway::dataFromPluto(simulation);
-    rs::gateway::DataToPluto toPluto = rs::gateway::kNoDataToPluto;
+    std::mutex nodeMutex;
+    rs::gateway::GatewayNode node(0, rs::project::Gateway{});
+    node.exchange(simulation);
     std::thread modbus([&] {
         while (!stop)
             server->serve(
                 50,
                 [&](const rs::gateway::ModbusRequest& request) {
-                    std::lock_guard lock(dataMutex);
-                    return rs::gateway::answer(request, data, toPluto);
+                    std::lock_guard lock(nodeMutex);
+                    return node.answer(request);
                 },
-                [](const std::string&) {});
+                [](const rs::gateway::ModbusTcpServer::ClientEvent&) {});
     });
     // The plant on the wall clock; a scan that starts a whole cycle late is late.
     std::int64_t scans = 0;
@@ -63,9 +63,10 @@ void BM_Unit33ReadLatency(benchmark::State& state) {
             if (Clock::now() - due > std::chrono::milliseconds(simulation.cycleMs()))
                 ++lateScans;
             simulation.scan();
-            const rs::gateway::DataFromPluto fresh = rs::gateway::dataFromPluto(simulation);
-            std::lock_guard lock(dataMutex);
-            data = fresh;
+            {
+                std::lock_guard lock(nodeMutex);
+                node.exchange(simulation);
+            }
             ++scans;
         }
     });

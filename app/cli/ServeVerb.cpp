@@ -2,7 +2,7 @@
 #include "ServeVerb.h"
 
 #include "Verbs.h"
-#include "gateway/ModbusMap.h"
+#include "gateway/GatewayNode.h"
 #include "gateway/ModbusTcpServer.h"
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
@@ -148,24 +148,26 @@ int runServe(const Invocation& invocation) {
                 " (" + std::string(project::gatewayTypeName(gateway->second.type)) + ")");
 
     sim::Simulation simulation(compiled.images);
-    std::mutex dataMutex;
-    gateway::DataFromPluto data = gateway::dataFromPluto(simulation);
-    // Kept for the Plutos' Ext blocks, which are not built yet (docs/gateway.md).
-    gateway::DataToPluto toPluto = gateway::kNoDataToPluto;
+    // The server's thread answers and the scans exchange under one lock; an
+    // exchange is short (a copy of unit 33), so a scan never waits long.
+    std::mutex nodeMutex;
+    gateway::GatewayNode node(gateway->first, gateway->second);
+    node.exchange(simulation);
     std::thread modbus([&] {
         while (!g_stop)
             server->serve(
                 100,
                 [&](const gateway::ModbusRequest& request) {
-                    std::lock_guard lock(dataMutex);
-                    return gateway::answer(request, data, toPluto);
+                    std::lock_guard lock(nodeMutex);
+                    return node.answer(request);
                 },
-                [&](const std::string& line) { output.line(line); });
+                [&](const gateway::ModbusTcpServer::ClientEvent& event) {
+                    output.line(event.text);
+                });
     });
     const auto publish = [&] {
-        const gateway::DataFromPluto fresh = gateway::dataFromPluto(simulation);
-        std::lock_guard lock(dataMutex);
-        data = fresh;
+        std::lock_guard lock(nodeMutex);
+        node.exchange(simulation);
     };
     const Pacer pacer(simulation, speed);
     // The scenario runs as `test` runs it, each scan waiting for the wall clock.

@@ -314,7 +314,8 @@ Expansion expandInstance(const BlockDefinition& block, BlockInstance& instance, 
             compiler::findSystemInstruction(block.systemInstruction);
         if (!instruction) {
             error("system instruction '" + block.systemInstruction +
-                  "' is not one of this Rungsmith's (" + compiler::systemInstructionNames() + ")");
+                  "' is not one of this Rungsmith's; " +
+                  compiler::systemInstructionHint(block.systemInstruction));
             return expansion;
         }
         project::Annotation call;

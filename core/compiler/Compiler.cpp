@@ -4,6 +4,7 @@
 #include "AsiCheck.h"
 #include "CodeGenerator.h"
 #include "ExportCheck.h"
+#include "GatewayCheck.h"
 #include "ImageCodec.h"
 #include "ImageSetup.h"
 #include "Signature.h"
@@ -21,6 +22,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     collectExports(project, units, result.diagnostics);
     collectSystemCalls(project.program, units, result.diagnostics);
     checkAsiSlaves(project, units, result.diagnostics);
+    checkGatewayBlocks(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
     result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
     lang::sortByPlace(result.diagnostics);

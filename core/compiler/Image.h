@@ -137,6 +137,17 @@ struct AsiSetup {
     friend bool operator==(const AsiSetup&, const AsiSetup&) = default;
 };
 
+// One External Comm Block of the unit's External communication setting
+// (project::ExternalCommBlock in numbers).
+struct ExternalCommSetup {
+    std::uint8_t block = 0;   // 0-3
+    std::uint8_t gateway = 0; // node address 0-15
+    std::uint8_t packet = 0;  // 0-3
+    std::uint16_t timeoutMs = 0;
+
+    friend bool operator==(const ExternalCommSetup&, const ExternalCommSetup&) = default;
+};
+
 struct UnitImage {
     // Descriptive: they name the source, and change with its text.
     std::string projectName;
@@ -156,6 +167,8 @@ struct UnitImage {
     AsiSetup asi;
     // The CAN bus cycle time set on the unit page (Part 1, 5.2), in ms; 0 the default.
     std::uint16_t canCycleMs = 0;
+    // The External communication setting (Part 1, 5.3), by block.
+    std::vector<ExternalCommSetup> externalComm;
     // Descriptive again.
     std::string source; // the canonical project text when "include source" is set, else empty
 

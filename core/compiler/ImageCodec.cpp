@@ -5,6 +5,8 @@
 #include "SystemInstruction.h"
 #include "project/AsiOptions.h"
 #include "project/CanBusCycle.h"
+#include "project/ExternalComm.h"
+#include "project/Gateway.h"
 #include "project/ProjectFile.h"
 
 #include <zlib.h>
@@ -17,7 +19,7 @@ namespace rs::compiler {
 namespace {
 
 constexpr char kMagic[4] = {'R', 'S', 'I', 'M'};
-constexpr std::uint16_t kVersion = 3;
+constexpr std::uint16_t kVersion = 4;
 constexpr std::size_t kInstructionSize = 28;
 constexpr std::size_t kAddressSize = 6;
 constexpr std::size_t kAsiSlaveSize = 13;
@@ -186,6 +188,16 @@ void writeAsiSetup(Writer& w, const AsiSetup& asi) {
     }
 }
 
+void writeExternalComm(Writer& w, const std::vector<ExternalCommSetup>& blocks) {
+    w.u8(static_cast<std::uint8_t>(blocks.size()));
+    for (const auto& block : blocks) {
+        w.u8(block.block);
+        w.u8(block.gateway);
+        w.u8(block.packet);
+        w.u16(block.timeoutMs);
+    }
+}
+
 // What a damaged image could put in the AS-i setup that the simulator must
 // not meet; nothing when it is sound.
 std::optional<std::string> asiSetupProblem(const AsiSetup& asi) {
@@ -218,7 +230,8 @@ std::optional<std::string> asiSetupProblem(const AsiSetup& asi) {
 
 std::size_t setupSize(const UnitImage& image) {
     std::size_t size = 3 * 4 + (image.exported.size() + image.remanent.size()) * kAddressSize + 4 +
-                       image.asi.slaves.size() * kAsiSlaveSize + 2;
+                       image.asi.slaves.size() * kAsiSlaveSize + 2 + 1 +
+                       image.externalComm.size() * 5;
     for (const auto& terminal : image.terminals) {
         size += 5;
         for (const auto& option : terminal.options)
@@ -299,6 +312,7 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
     writeSetup(w, image);
     writeAsiSetup(w, image.asi);
     w.u16(image.canCycleMs);
+    writeExternalComm(w, image.externalComm);
     if (!image.source.empty()) {
         const std::string packed = compress(image.source);
         w.u32(static_cast<std::uint32_t>(image.source.size()));
@@ -435,6 +449,20 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
         image.canCycleMs = r.u16();
         if (image.canCycleMs > project::kMaxCanCycleMs)
             return ImageError{0, 0, "the CAN bus cycle time is damaged"};
+        image.externalComm.resize(r.u8());
+        int lastBlock = -1;
+        for (auto& block : image.externalComm) {
+            block.block = r.u8();
+            block.gateway = r.u8();
+            block.packet = r.u8();
+            block.timeoutMs = r.u16();
+            if (block.block <= lastBlock || block.block >= project::kExternalCommBlocks ||
+                block.gateway >= project::kGatewayNodes ||
+                block.packet >= project::kToPlutoPackets ||
+                block.timeoutMs > project::kMaxExternalTimeoutMs)
+                return ImageError{0, 0, "the External communication setting is damaged"};
+            lastBlock = block.block;
+        }
         if (flags & kHasSource) {
             const std::uint32_t length = r.u32();
             if (length > kMaxIncludedSourceBytes)
@@ -467,6 +495,8 @@ std::string behaviourBytes(const UnitImage& image) {
         writeAsiSetup(w, image.asi);
     if (image.canCycleMs)
         w.u16(image.canCycleMs);
+    if (!image.externalComm.empty())
+        writeExternalComm(w, image.externalComm);
     const auto& bytes = w.data();
     return std::string(bytes.begin(), bytes.end());
 }

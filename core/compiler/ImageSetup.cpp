@@ -58,6 +58,12 @@ void addSetup(UnitImage& image, const UnitSetup& unit, const project::Project& p
         if (address.unit == unit.station)
             image.remanent.push_back(address);
     image.canCycleMs = static_cast<std::uint16_t>(project::canCycleOf(project, unit.station));
+    if (auto comm = project.externalComm.find(unit.station); comm != project.externalComm.end())
+        for (const auto& [number, block] : comm->second)
+            image.externalComm.push_back({static_cast<std::uint8_t>(number),
+                                          static_cast<std::uint8_t>(block.gateway),
+                                          static_cast<std::uint8_t>(block.packet),
+                                          static_cast<std::uint16_t>(block.timeoutMs)});
     if (unit.type && unit.type->asiSlaves)
         image.asi = asiSetup(project::asiOptionsOf(project, unit.station));
 }

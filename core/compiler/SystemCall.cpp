@@ -80,8 +80,7 @@ std::optional<SystemCall> readSystemCall(const lang::Document& document, int sta
     const std::string& name = record->arguments.front();
     const SystemInstruction* instruction = findSystemInstruction(name);
     if (!instruction) {
-        error("unknown system instruction '" + name + "'; Rungsmith's image has " +
-              systemInstructionNames());
+        error("unknown system instruction '" + name + "'; " + systemInstructionHint(name));
         return std::nullopt;
     }
     const std::string called(instruction->name);

@@ -25,6 +25,26 @@ enum class SystemInstructionId : std::uint8_t {
     ReadCurrent32 = 6,
     HSSpeedCountUp = 7,
     HSSpeedCountDir = 8,
+    // The gateway blocks (Gateway manual 4.3.3, 4.5.3; docs/gateway.md).
+    ToGatewayUserA = 9,
+    ToGatewayUserB = 10,
+    ToGatewayUserC = 11,
+    ToGatewayErrorCode = 12,
+    ToGatewayB46 = 13,
+    ToGatewayAsi16To31Safe = 14,
+    ToGatewayAsi1To3NonSafe = 15,
+    ToGatewayAsi4To7NonSafe = 16,
+    ToGatewayAsi8To11NonSafe = 17,
+    ToGatewayAsi12To15NonSafe = 18,
+    ToGatewayAsi16To19NonSafe = 19,
+    ToGatewayAsi20To23NonSafe = 20,
+    ToGatewayAsi24To27NonSafe = 21,
+    ToGatewayAsi28To31NonSafe = 22,
+    ToGatewayB42Asi = 23,
+    ToGatewayAsi1To15Safe = 24,
+    ExtSig = 25,
+    ExtVal = 26,
+    ExtVarBlock = 27,
 };
 
 enum class ParameterDirection : std::uint8_t { In, Out };
@@ -114,6 +134,108 @@ inline constexpr SystemParameter kHSSpeedCountDir[] = {
     {"EdgePer10ms", ParameterDirection::Out, ParameterKind::Register},
     {"PulsePerSec", ParameterDirection::Out, ParameterKind::Register},
 };
+// The ToGateway blocks (Gateway manual 4.3.3): each sends one telegram of
+// 32 bits while Send is 1, and Q says it went. A user block's No (1-99) is
+// its IO-type, a number in the call; the manual's figures of the pins were
+// lost, so the names below are Rungsmith's (docs/gateway.md).
+inline constexpr SystemParameter kToGatewayUserA[] = {
+    {"No", ParameterDirection::In, ParameterKind::Register, true},
+    {"Send", ParameterDirection::In, ParameterKind::Bit},
+    {"Reg_0", ParameterDirection::In, ParameterKind::Register, true},
+    {"Reg_1", ParameterDirection::In, ParameterKind::Register, true},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+};
+inline constexpr SystemParameter kToGatewayUserB[] = {
+    {"No", ParameterDirection::In, ParameterKind::Register, true},
+    {"Send", ParameterDirection::In, ParameterKind::Bit},
+    {"Reg_0", ParameterDirection::In, ParameterKind::Register, true},
+    {"Bit_0", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_1", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_2", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_3", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_4", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_5", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_6", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_7", ParameterDirection::In, ParameterKind::Bit},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+};
+inline constexpr SystemParameter kToGatewayUserC[] = {
+    {"No", ParameterDirection::In, ParameterKind::Register, true},
+    {"Send", ParameterDirection::In, ParameterKind::Bit},
+    {"Reg_0", ParameterDirection::In, ParameterKind::Register, true},
+    {"Bit_0", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_1", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_2", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_3", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_4", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_5", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_6", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_7", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_8", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_9", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_10", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_11", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_12", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_13", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_14", ParameterDirection::In, ParameterKind::Bit},
+    {"Bit_15", ParameterDirection::In, ParameterKind::Bit},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+};
+// A standard block's data is fixed by its IO-type: it reads the unit itself.
+inline constexpr SystemParameter kToGatewayStandard[] = {
+    {"Send", ParameterDirection::In, ParameterKind::Bit},
+    {"Q", ParameterDirection::Out, ParameterKind::Bit},
+};
+// Ext_Sig, Ext_Val, ExtVarBlock (Gateway manual 4.5.3): the data of one
+// External Comm Block (BlockNo 0-3, a number), Valid while it is received.
+inline constexpr SystemParameter kExtSig[] = {
+    {"BlockNo", ParameterDirection::In, ParameterKind::Register, true},
+    {"Valid", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_0", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_1", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_2", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_3", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_4", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_5", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_6", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_7", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_8", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_9", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_10", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_11", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_12", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_13", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_14", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_15", ParameterDirection::Out, ParameterKind::Bit},
+};
+inline constexpr SystemParameter kExtVal[] = {
+    {"BlockNo", ParameterDirection::In, ParameterKind::Register, true},
+    {"Valid", ParameterDirection::Out, ParameterKind::Bit},
+    {"Reg_0", ParameterDirection::Out, ParameterKind::Register},
+    {"Reg_1", ParameterDirection::Out, ParameterKind::Register},
+};
+inline constexpr SystemParameter kExtVarBlock[] = {
+    {"BlockNo", ParameterDirection::In, ParameterKind::Register, true},
+    {"Valid", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_0", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_1", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_2", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_3", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_4", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_5", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_6", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_7", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_8", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_9", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_10", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_11", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_12", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_13", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_14", ParameterDirection::Out, ParameterKind::Bit},
+    {"Bit_15", ParameterDirection::Out, ParameterKind::Bit},
+    {"Reg_0", ParameterDirection::Out, ParameterKind::Register},
+    {"Reg_1", ParameterDirection::Out, ParameterKind::Register},
+};
 } // namespace parameters
 
 inline constexpr SystemInstruction kSystemInstructions[] = {
@@ -125,6 +247,37 @@ inline constexpr SystemInstruction kSystemInstructions[] = {
     {SystemInstructionId::ReadCurrent32, "ReadCurrent_32", parameters::kReadCurrent32},
     {SystemInstructionId::HSSpeedCountUp, "HS_SpeedCount_Up", parameters::kHSSpeedCountUp},
     {SystemInstructionId::HSSpeedCountDir, "HS_SpeedCount_Dir", parameters::kHSSpeedCountDir},
+    {SystemInstructionId::ToGatewayUserA, "ToGateway_User_A", parameters::kToGatewayUserA},
+    {SystemInstructionId::ToGatewayUserB, "ToGateway_User_B", parameters::kToGatewayUserB},
+    {SystemInstructionId::ToGatewayUserC, "ToGateway_User_C", parameters::kToGatewayUserC},
+    {SystemInstructionId::ToGatewayErrorCode, "ToGateway_ErrorCode",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayB46, "ToGateway_B46_I20_I47", parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi16To31Safe, "ToGateway_ASi_16_31_Safe",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi1To3NonSafe, "ToGateway_ASi_1_3_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi4To7NonSafe, "ToGateway_ASi_4_7_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi8To11NonSafe, "ToGateway_ASi_8_11_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi12To15NonSafe, "ToGateway_ASi_12_15_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi16To19NonSafe, "ToGateway_ASi_16_19_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi20To23NonSafe, "ToGateway_ASi_20_23_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi24To27NonSafe, "ToGateway_ASi_24_27_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi28To31NonSafe, "ToGateway_ASi_28_31_NonSafe_In",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayB42Asi, "ToGateway_B42_ASi_I20_I47",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ToGatewayAsi1To15Safe, "ToGateway_ASi_1_15_Safe",
+     parameters::kToGatewayStandard},
+    {SystemInstructionId::ExtSig, "Ext_Sig", parameters::kExtSig},
+    {SystemInstructionId::ExtVal, "Ext_Val", parameters::kExtVal},
+    {SystemInstructionId::ExtVarBlock, "ExtVarBlock", parameters::kExtVarBlock},
 };
 
 // By name, without regard to case (as block and pin names); null when unknown.
@@ -141,7 +294,14 @@ constexpr std::uint8_t argumentRole(const SystemParameter& parameter) {
         (parameter.kind == ParameterKind::Bit ? 0 : ArgumentWord));
 }
 
-// "RegisterValid, DRegisterValid": for messages.
-std::string systemInstructionNames();
+// The IO-type a standard ToGateway block's telegram carries (100-113), 0 for
+// a user block (its No is its IO-type) and every other instruction.
+int standardIoType(SystemInstructionId id);
+bool isToGateway(SystemInstructionId id);
+
+// What to tell a user who named an unknown instruction: those whose names
+// begin as `unknown` does ("did you mean ReadVoltage, ReadCurrent?"), else
+// where the list is.
+std::string systemInstructionHint(std::string_view unknown);
 
 } // namespace rs::compiler

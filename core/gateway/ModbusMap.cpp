@@ -28,7 +28,7 @@ DataFromPluto dataFromPluto(const sim::Simulation& simulation) {
     put(table, 1, nodeStatus(simulation));
     for (int station = 0; station < 32; ++station)
         put(table, 3 + 2 * station, globalData(simulation, station));
-    // Additional Data 00-31 (67-130) stay 0 until the ToGateway blocks send.
+    // Additional Data 00-31 (67-130) are the gateway's (GatewayNode).
     return table;
 }
 

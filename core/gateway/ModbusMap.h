@@ -52,7 +52,8 @@ inline constexpr int kDataToPlutoLength = 13;
 using DataToPluto = std::array<std::uint16_t, kDataToPlutoLength + 1>;
 inline constexpr DataToPluto kNoDataToPluto{kDataToPlutoLength};
 
-// The answer from unit 33 as it stood in `data`, and from or into unit 1.
+// The answer from unit 33 as it stood in `data`, and from or into unit 1;
+// GatewayNode answers the other units.
 ModbusResponse answer(const ModbusRequest& request, const DataFromPluto& data,
                       DataToPluto& toPluto);
 

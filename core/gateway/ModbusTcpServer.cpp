@@ -50,7 +50,8 @@ struct ModbusTcpServer::Impl {
     }
 
     void drop(int client, const Log& log, const std::string& why) {
-        log("client " + peerName(client) + " " + why);
+        const std::string peer = peerName(client);
+        log({peer, false, "client " + peer + " " + why});
         close(client);
         std::erase(clients, client);
     }
@@ -114,7 +115,8 @@ void ModbusTcpServer::serve(int waitMs, const Answer& answer, const Log& log) {
                 continue;
             }
             s.clients.push_back(client);
-            log("client " + peerName(client) + " connected");
+            const std::string peer = peerName(client);
+            log({peer, true, "client " + peer + " connected"});
         }
     const int header = modbus_get_header_length(s.context);
     const std::vector<int> watched = s.clients;

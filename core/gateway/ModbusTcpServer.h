@@ -15,7 +15,13 @@ namespace rs::gateway {
 class ModbusTcpServer {
 public:
     using Answer = std::function<ModbusResponse(const ModbusRequest&)>;
-    using Log = std::function<void(const std::string&)>;
+    // A client came or went: its address and port, and a line that says so.
+    struct ClientEvent {
+        std::string peer;
+        bool connected = false;
+        std::string text;
+    };
+    using Log = std::function<void(const ClientEvent&)>;
 
     // Listens on host:port (port 0: one the system picks); nothing and the
     // reason when it cannot.

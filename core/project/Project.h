@@ -3,6 +3,7 @@
 
 #include "AsiOptions.h"
 #include "Baseline.h"
+#include "ExternalComm.h"
 #include "Gateway.h"
 #include "Protection.h"
 #include "lang/Ast.h"
@@ -31,6 +32,9 @@ struct Project {
     std::map<int, Gateway> gateways;
     // A CAN bus cycle time other than the default (Part 1, 5.2), in ms, by station.
     std::map<int, int> canCycleMs;
+    // The External communication setting of the units that receive gateway
+    // data (Part 1, 5.3; ExternalComm.h), by station.
+    std::map<int, ExternalComm> externalComm;
     std::map<lang::Address, std::string> variableDescriptions; // by address
     // The manual's [E]: local variables made visible to the other units (10.2.1).
     std::set<lang::Address> exportedVariables;

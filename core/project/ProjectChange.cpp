@@ -18,13 +18,11 @@ bool sameStations(const std::vector<lang::UnitProgram>& a,
 } // namespace
 
 ProjectChange::Records ProjectChange::recordsOf(const Project& project) {
-    return {project.description,       project.includeSource,
-            project.unitDescriptions,  project.idfixProg,
-            project.asiOptions,        project.canCycleMs,
-            project.gateways,          project.variableDescriptions,
-            project.exportedVariables, project.remanentVariables,
-            project.libraries,         project.baseline,
-            project.protection};
+    return {project.description,       project.includeSource,     project.unitDescriptions,
+            project.idfixProg,         project.asiOptions,        project.canCycleMs,
+            project.externalComm,      project.gateways,          project.variableDescriptions,
+            project.exportedVariables, project.remanentVariables, project.libraries,
+            project.baseline,          project.protection};
 }
 
 void ProjectChange::setRecords(Project& project, const Records& records) {
@@ -34,6 +32,7 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
     project.idfixProg = records.idfixProg;
     project.asiOptions = records.asiOptions;
     project.canCycleMs = records.canCycleMs;
+    project.externalComm = records.externalComm;
     project.gateways = records.gateways;
     project.variableDescriptions = records.variableDescriptions;
     project.exportedVariables = records.exportedVariables;

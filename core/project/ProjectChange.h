@@ -35,6 +35,7 @@ private:
         std::set<int> idfixProg;
         std::map<int, AsiOptions> asiOptions;
         std::map<int, int> canCycleMs;
+        std::map<int, ExternalComm> externalComm;
         std::map<int, Gateway> gateways;
         std::map<lang::Address, std::string> variableDescriptions;
         std::set<lang::Address> exportedVariables;

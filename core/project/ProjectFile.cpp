@@ -181,6 +181,15 @@ private:
             }
             return true;
         }
+        if (kind == "ext_comm") {
+            try {
+                readExternalCommRecord(*annotation, m_project.externalComm);
+            } catch (const ExternalCommRecordError& problem) {
+                error(at, problem.message);
+                return false;
+            }
+            return true;
+        }
         if (kind == "gateway" || kind == "gateway_area") {
             try {
                 readGatewayRecord(*annotation, m_project.gateways);
@@ -224,7 +233,8 @@ std::string stationText(int station) {
 }
 
 // The records of one unit: its description and remanent variables, then its
-// variables' descriptions and export marks, then its AS-i options.
+// variables' descriptions and export marks, then its AS-i options and its
+// External communication setting.
 std::vector<Line> unitRecords(const Project& project, int station) {
     std::vector<Line> lines;
     Annotation unit{"unit", {stationText(station)}, {}};
@@ -258,6 +268,9 @@ std::vector<Line> unitRecords(const Project& project, int station) {
     }
     if (auto it = project.asiOptions.find(station); it != project.asiOptions.end())
         for (const Annotation& record : asiRecords(station, it->second))
+            lines.push_back(commentLine(record));
+    if (auto it = project.externalComm.find(station); it != project.externalComm.end())
+        for (const Annotation& record : externalCommRecords(station, it->second))
             lines.push_back(commentLine(record));
     return lines;
 }
@@ -329,6 +342,8 @@ std::string writeProject(const Project& project) {
     for (const auto& [station, ms] : project.canCycleMs)
         stations.insert(station);
     for (const auto& [station, options] : project.asiOptions)
+        stations.insert(station);
+    for (const auto& [station, comm] : project.externalComm)
         stations.insert(station);
     for (const auto& [address, text] : project.variableDescriptions)
         stations.insert(address.unit);

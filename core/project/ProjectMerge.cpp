@@ -131,6 +131,7 @@ MergeResult mergeProjects(const Project& into, const Project& other, bool ignore
     merged.idfixProg.insert(other.idfixProg.begin(), other.idfixProg.end());
     merged.asiOptions.insert(other.asiOptions.begin(), other.asiOptions.end());
     merged.canCycleMs.insert(other.canCycleMs.begin(), other.canCycleMs.end());
+    merged.externalComm.insert(other.externalComm.begin(), other.externalComm.end());
     merged.gateways.insert(other.gateways.begin(), other.gateways.end());
     merged.variableDescriptions.insert(other.variableDescriptions.begin(),
                                        other.variableDescriptions.end());

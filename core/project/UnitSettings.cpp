@@ -360,6 +360,7 @@ void removeUnit(Project& project, int station) {
     project.idfixProg.erase(station);
     project.asiOptions.erase(station);
     project.canCycleMs.erase(station);
+    project.externalComm.erase(station);
     std::erase_if(project.variableDescriptions,
                   [&](const auto& entry) { return belongsToStation(entry.first, station); });
     std::erase_if(project.exportedVariables,

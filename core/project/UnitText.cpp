@@ -31,6 +31,7 @@ Project headOf(const Project& project) {
     head.idfixProg = project.idfixProg;
     head.asiOptions = project.asiOptions;
     head.canCycleMs = project.canCycleMs;
+    head.externalComm = project.externalComm;
     head.gateways = project.gateways;
     head.variableDescriptions = project.variableDescriptions;
     head.exportedVariables = project.exportedVariables;
@@ -125,6 +126,7 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.idfixProg = std::move(read.project.idfixProg);
     result.project.asiOptions = std::move(read.project.asiOptions);
     result.project.canCycleMs = std::move(read.project.canCycleMs);
+    result.project.externalComm = std::move(read.project.externalComm);
     result.project.gateways = std::move(read.project.gateways);
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);

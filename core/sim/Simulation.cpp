@@ -94,6 +94,7 @@ void Simulation::restart() {
         unit->powerOn(m_remanent[unit->image().station % 32]);
     m_timeMs = 0;
     m_scans = 0;
+    m_receivedMs = {};
     publish();
 }
 
@@ -135,8 +136,45 @@ void Simulation::updateChannels() {
     }
 }
 
+void Simulation::deliverPacket(int node, int packet, const Packet& data) {
+    for (auto& unit : m_units) {
+        const auto station = static_cast<std::size_t>(unit->image().station % 32);
+        if (m_offBus[station])
+            continue;
+        UnitMemory& memory = unit->memory();
+        for (const auto& block : unit->image().externalComm) {
+            if (block.gateway != node || block.packet != packet)
+                continue;
+            const std::size_t b = block.block;
+            memory.externalValid[b] = data.valid;
+            memory.externalBits[b] = data.valid ? data.bits : 0;
+            memory.externalRegisters[2 * b] = data.valid ? data.register0 : 0;
+            memory.externalRegisters[2 * b + 1] = data.valid ? data.register1 : 0;
+            m_receivedMs[station][b] = m_timeMs;
+        }
+    }
+}
+
+void Simulation::timeOutExternalBlocks() {
+    for (auto& unit : m_units) {
+        const auto station = static_cast<std::size_t>(unit->image().station % 32);
+        UnitMemory& memory = unit->memory();
+        for (const auto& block : unit->image().externalComm) {
+            const std::size_t b = block.block;
+            if (memory.externalValid[b] && block.timeoutMs != 0 &&
+                m_timeMs - m_receivedMs[station][b] > block.timeoutMs) {
+                memory.externalValid[b] = 0;
+                memory.externalBits[b] = 0;
+                memory.externalRegisters[2 * b] = 0;
+                memory.externalRegisters[2 * b + 1] = 0;
+            }
+        }
+    }
+}
+
 void Simulation::scan() {
     updateChannels();
+    timeOutExternalBlocks();
     for (auto& unit : m_units)
         unit->scan(m_timeMs, m_cycleMs);
     ++m_scans;

@@ -65,6 +65,20 @@ public:
     void setOnBus(int station, bool on);
     bool isOnBus(int station) const;
 
+    // A Data to Pluto packet of gateway `node` on the bus (Gateway manual
+    // 4.4): every unit whose External communication setting takes packet
+    // `packet` of that gateway receives it into the block set for it, from
+    // the next scan on. A packet that is not `valid` (the fieldbus marked its
+    // area invalid, or the gateway timed it out) clears the block. A block
+    // that receives nothing for its timeout is cleared too.
+    struct Packet {
+        bool valid = false;
+        std::uint16_t bits = 0; // bit i is data bit 16 * block + i
+        std::int16_t register0 = 0;
+        std::int16_t register1 = 0;
+    };
+    void deliverPacket(int node, int packet, const Packet& data);
+
 private:
     struct SlaveChannels {
         lang::Address input; // ASi<u>.<x>
@@ -75,6 +89,7 @@ private:
     // whose CAN bus cycle time has come round.
     void publish(bool due = false);
     void updateChannels();
+    void timeOutExternalBlocks();
     SlaveChannels* slaveChannels(const lang::Address& address);
     void tellPresence();
 
@@ -84,6 +99,8 @@ private:
     std::array<bool, 32> m_offBus{};
     std::vector<SlaveChannels> m_channels;          // by station and slave
     std::array<std::int64_t, 32> m_nextPublishMs{}; // units with a CAN bus cycle time
+    // When each unit's External Comm Blocks last received a packet.
+    std::array<std::array<std::int64_t, UnitMemory::kExternalBlocks>, 32> m_receivedMs{};
     int m_cycleMs;
     std::int64_t m_timeMs = 0;
     std::uint64_t m_scans = 0;

@@ -287,6 +287,7 @@ void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {
 void UnitEngine::runSteps(bool marking, int cycleMs) {
     Tiers& t = *m_tiers;
     engine::UnitState& unit = t.unit;
+    unit.telegrams.clear();
     if (marking) {
         // Only the steps that ran last time have marks to clear.
         for (int index : t.ranSteps) {
@@ -346,6 +347,10 @@ void UnitEngine::replay() {
     runSteps(true, t.scanStart.cycleMs);
     restore(t.unit, now);
     t.replayDue = false;
+}
+
+const std::vector<GatewayTelegram>& UnitEngine::telegrams() const {
+    return m_tiers->unit.telegrams;
 }
 
 const std::vector<Conduction>& UnitEngine::conduction() const {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Conduction.h"
+#include "GatewayTelegram.h"
 #include "Timer.h"
 #include "UnitMemory.h"
 #include "compiler/Image.h"
@@ -70,6 +71,9 @@ public:
     void force(const lang::Address& address, std::int64_t value);
     void release(const lang::Address& address);
     const std::map<lang::Address, std::int64_t>& forces() const;
+
+    // The telegrams the unit's ToGateway blocks sent in the last scan.
+    const std::vector<GatewayTelegram>& telegrams() const;
 
     // Reads and writes a variable of this unit as a scenario or the GUI does.
     std::int64_t read(const lang::Address& address) const;

@@ -31,6 +31,13 @@ struct UnitMemory {
     std::array<std::uint8_t, 32> asiSafeInputs{};
     std::array<std::array<std::uint8_t, 4>, kAsiSlaves> asiInputs{};
     std::array<std::array<std::uint8_t, 4>, kAsiSlaves> asiOutputs{};
+    // The External Comm Blocks 0-3 (Gateway manual 4.5.2): data bits 0-63,
+    // registers 0-7 and whether each block is received, as a gateway last
+    // delivered them (Simulation::deliverPacket); the Ext_* blocks read them.
+    static constexpr int kExternalBlocks = 4;
+    std::array<std::uint16_t, kExternalBlocks> externalBits{};
+    std::array<std::int16_t, 2 * kExternalBlocks> externalRegisters{};
+    std::array<std::uint8_t, kExternalBlocks> externalValid{};
 };
 
 // Where a bit lives: a byte, a bit of a register, or an analogue input read as a bit.

@@ -187,9 +187,8 @@ TEST(SystemBlock, ABlockWhoseCallCannotBeMadeIsAnErrorAtTheRecord) {
     };
     const std::vector<Case> cases = {
         {";@block Newer Input=\"R0.5\"",
-         "13:1: Newer: system instruction 'ReadTemperature' is not one of this Rungsmith's "
-         "(RegisterValid, DRegisterValid, ReadVoltage, ReadCurrent, ReadVoltage_32, "
-         "ReadCurrent_32, HS_SpeedCount_Up, HS_SpeedCount_Dir)\n"},
+         "13:1: Newer: system instruction 'ReadTemperature' is not one of this Rungsmith's; "
+         "did you mean ReadVoltage, ReadCurrent, ReadVoltage_32, ReadCurrent_32?\n"},
         {";@block Misfit Input=\"R0.5\" Valid=\"R1.1\"",
          "13:1: Misfit: the block does not fit its system instruction RegisterValid, which needs "
          "the pin Valid out bit\n"},

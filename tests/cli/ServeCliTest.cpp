@@ -165,6 +165,80 @@ TEST_F(ServeCliTest, MbpollReadsNodeStatusAndGlobalDataWhileAScenarioDrivesTheIn
     EXPECT_TRUE(log.endsWith(QStringLiteral("stopped\n"))) << log.toStdString();
 }
 
+// The gateway's other data: Pluto 0's user block in Additional Data 0, Data
+// to Pluto in Pluto 1's External Comm Block 0 (shown on the bus by GM1.0), a
+// local data request and the configuration unit.
+TEST_F(ServeCliTest, MbpollReadsAdditionalDataFeedsAPlutoAndAsksForLocalData) {
+    write(QStringLiteral("line.sps"),
+          "$name Gateway line\n"
+          ";@gateway 0 type=\"GATE-E1\" to_pluto=\"0\" cycle_ms=\"20\"\n"
+          ";@gateway_area 0 0 pluto=\"0\" io_type=\"12\"\n"
+          "! id_pluto:00=000000000000\n"
+          "! id_pluto:01=000000000001\n"
+          "! pgm_pluto:00\n"
+          "S0.0_0\n"
+          "M0.1 = /M0.99\n"
+          "(R0.10 = 4660) = M0.1\n"
+          ";@system ToGateway_User_A No=\"12\" Send=\"M0.1\" Reg_0=\"R0.10\" Reg_1=\"7\" "
+          "Q=\"M0.2\"\n"
+          "! pgm_pluto:01\n"
+          ";@ext_comm 01 0 gateway=\"0\" packet=\"0\"\n"
+          "S1.0_0\n"
+          ";@system Ext_Val BlockNo=\"0\" Valid=\"GM1.0\" Reg_0=\"R1.0\" Reg_1=\"R1.1\"\n");
+    const int port = start();
+    ASSERT_GT(port, 0);
+    const auto until = [&](const QStringList& arguments, const QString& wanted) {
+        QElapsedTimer waited;
+        waited.start();
+        QString answer;
+        while (waited.elapsed() < 10000 && !(answer = poll(port, arguments)).contains(wanted))
+            QThread::msleep(50);
+        return answer;
+    };
+    // Additional Data 0 at 67 (MSW: Reg_1) and 68 (LSW: Reg_0).
+    const QString additional = until(
+        {QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"), QStringLiteral("67"),
+         QStringLiteral("-c"), QStringLiteral("2"), QStringLiteral("-t"), QStringLiteral("4:hex")},
+        QStringLiteral("[68]: \t0x1234"));
+    EXPECT_TRUE(additional.contains(QStringLiteral("[67]: \t0x0007")) &&
+                additional.contains(QStringLiteral("[68]: \t0x1234")))
+        << additional.toStdString();
+    // Area 0 valid: Pluto 1's Ext_Val sets GM1.0, bit 4 of Pluto 1's MSW (register 5).
+    EXPECT_TRUE(
+        poll(port,
+             {QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"), QStringLiteral("1")},
+             {QStringLiteral("1"), QStringLiteral("0"), QStringLiteral("5")})
+            .contains(QStringLiteral("Written 3 references")));
+    const QString pluto1 =
+        until({QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"),
+               QStringLiteral("5"), QStringLiteral("-t"), QStringLiteral("4:hex")},
+              QStringLiteral("[5]: \t0x0010"));
+    EXPECT_TRUE(pluto1.contains(QStringLiteral("[5]: \t0x0010"))) << pluto1.toStdString();
+    // R10 of Pluto 0 is local register address 110: flag 3, then 6 with the value.
+    EXPECT_TRUE(
+        poll(port,
+             {QStringLiteral("-a"), QStringLiteral("2"), QStringLiteral("-r"), QStringLiteral("0")},
+             {QStringLiteral("3"), QStringLiteral("0"), QStringLiteral("2"), QStringLiteral("110")})
+            .contains(QStringLiteral("Written 4 references")));
+    const QString response =
+        until({QStringLiteral("-a"), QStringLiteral("34"), QStringLiteral("-r"),
+               QStringLiteral("0"), QStringLiteral("-c"), QStringLiteral("7")},
+              QStringLiteral("[0]: \t6"));
+    EXPECT_TRUE(response.contains(QStringLiteral("[4]: \t1")) &&
+                response.contains(QStringLiteral("[6]: \t4660")))
+        << response.toStdString();
+    // Unit 4 is write only; a cycle time below 4 ms is refused.
+    EXPECT_TRUE(poll(port, {QStringLiteral("-a"), QStringLiteral("4"), QStringLiteral("-r"),
+                            QStringLiteral("37")})
+                    .contains(QStringLiteral("Illegal function")));
+    EXPECT_TRUE(poll(port,
+                     {QStringLiteral("-a"), QStringLiteral("4"), QStringLiteral("-r"),
+                      QStringLiteral("37")},
+                     {QStringLiteral("2"), QStringLiteral("0")})
+                    .contains(QStringLiteral("Illegal data value")));
+    EXPECT_EQ(stop(), 0);
+}
+
 TEST_F(ServeCliTest, AThousandDroppedConnectionsAndGarbageLeaveItAnswering) {
     const int port = start();
     ASSERT_GT(port, 0);

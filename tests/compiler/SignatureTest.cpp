@@ -176,8 +176,8 @@ TEST(Signature, AReaderRefusesADamagedVariableList) {
     std::vector<std::uint8_t> bytes = compiler::encodeImage(image);
     ASSERT_TRUE(std::holds_alternative<compiler::UnitImage>(compiler::decodeImage(bytes)));
     // After it: the remanent count, the AS-i setup (4 bytes without slaves), the
-    // CAN bus cycle time (2), the CRC.
-    const std::size_t flag = bytes.size() - 4 - 2 - 4 - 4 - 6 + 3;
+    // CAN bus cycle time (2), the External communication setting (1), the CRC.
+    const std::size_t flag = bytes.size() - 4 - 1 - 2 - 4 - 4 - 6 + 3;
     bytes[flag] = 2;
     const std::uint32_t crc = compiler::crc32(
         std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size() - 4));

@@ -90,9 +90,11 @@ TEST(SystemCall, WrongCallsAreErrorsAtTheRecord) {
     };
     const std::vector<Case> cases = {
         {";@system ReadTemperature Input=\"R0.5\"",
-         "12:1: error: unknown system instruction 'ReadTemperature'; Rungsmith's image has "
-         "RegisterValid, DRegisterValid, ReadVoltage, ReadCurrent, ReadVoltage_32, "
-         "ReadCurrent_32, HS_SpeedCount_Up, HS_SpeedCount_Dir\n"},
+         "12:1: error: unknown system instruction 'ReadTemperature'; did you mean ReadVoltage, "
+         "ReadCurrent, ReadVoltage_32, ReadCurrent_32?\n"},
+        {";@system Temperature Input=\"R0.5\"",
+         "12:1: error: unknown system instruction 'Temperature'; Rungsmith's image has 27, "
+         "listed in docs/image-format.md, \"System instructions\"\n"},
         {";@system", "12:1: error: @system needs one system instruction's name, as in "
                      ";@system RegisterValid Input=\"R1.5\" Valid=\"M0.1\" Value=\"R0.7\"\n"},
         {";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\" Colour=\"red\"",

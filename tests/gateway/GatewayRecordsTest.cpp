@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "compiler/Compiler.h"
+#include "compiler/ImageCodec.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectMerge.h"
 
@@ -112,4 +114,64 @@ TEST(GatewayRecords, SettingsOutsideTheManualsRangesAreErrors) {
                          "io_type=\"1\""),
               "3:1: @gateway_area needs a node address 0-15 and an area 0-31, as in "
               ";@gateway_area 0 5 pluto=\"2\" io_type=\"101\"");
+}
+
+// A unit's External communication setting (manual Part 1, 5.3): one record
+// per block after the unit's declarations, into the image and back.
+TEST(GatewayRecords, TheExternalCommunicationSettingIsKeptAndCompiledIntoTheImage) {
+    const std::string text = "$name Line\n"
+                             ";@gateway 0 type=\"GATE-E1\" to_pluto=\"0-3\"\n"
+                             "! id_pluto:00=000000000000\n"
+                             "! pgm_pluto:00\n"
+                             ";@ext_comm 00 2 gateway=\"0\" packet=\"3\" timeout_ms=\"0\"\n"
+                             ";@ext_comm 00 0 gateway=\"0\" packet=\"1\"\n"
+                             "S0.0_0\n";
+    const auto read = project::readProject(text);
+    ASSERT_TRUE(read.diagnostics.empty()) << read.diagnostics.front().message;
+    const project::ExternalComm expected{{0, {0, 1, project::kDefaultExternalTimeoutMs}},
+                                         {2, {0, 3, 0}}};
+    EXPECT_EQ(read.project.externalComm.at(0), expected);
+    const std::string written = project::writeProject(read.project);
+    EXPECT_NE(
+        written.find("! id_pluto:00=000000000000\n;@ext_comm 00 0 gateway=\"0\" packet=\"1\"\n"
+                     ";@ext_comm 00 2 gateway=\"0\" packet=\"3\" timeout_ms=\"0\"\n"),
+        std::string::npos)
+        << written;
+    EXPECT_EQ(project::writeProject(project::readProject(written).project), written);
+
+    const auto compiled = compiler::compile(read.project);
+    ASSERT_EQ(compiled.errors(), 0);
+    const auto& image = compiled.images.at(0);
+    ASSERT_EQ(image.externalComm.size(), 2u);
+    EXPECT_EQ(image.externalComm[1], (compiler::ExternalCommSetup{2, 0, 3, 0}));
+    const auto decoded = compiler::decodeImage(compiler::encodeImage(image));
+    ASSERT_TRUE(std::holds_alternative<compiler::UnitImage>(decoded));
+    EXPECT_EQ(std::get<compiler::UnitImage>(decoded), image);
+    // The setting is part of what the unit does: its signature changes.
+    project::Project without = read.project;
+    without.externalComm.clear();
+    EXPECT_NE(compiler::compile(without).signatures, compiled.signatures);
+}
+
+TEST(GatewayRecords, AWrongExternalCommunicationRecordIsAnErrorAtItsLine) {
+    const auto error = [](std::string_view record) {
+        const std::string text = "$name Line\n! id_pluto:00=000000000000\n! pgm_pluto:00\n" +
+                                 std::string(record) + "\nS0.0_0\n";
+        for (const auto& d : project::readProject(text).diagnostics)
+            if (d.severity == lang::Severity::Error)
+                return std::to_string(d.line) + ": " + d.message;
+        return std::string("no error");
+    };
+    EXPECT_EQ(error(";@ext_comm 00 4 gateway=\"0\" packet=\"0\""),
+              "4: @ext_comm needs a station 0-31 and an External Comm Block 0-3, as in "
+              ";@ext_comm 01 0 gateway=\"0\" packet=\"0\"");
+    EXPECT_EQ(error(";@ext_comm 00 0 packet=\"0\""),
+              "4: @ext_comm 00 0: the gateway node address must be 0-15");
+    EXPECT_EQ(error(";@ext_comm 00 0 gateway=\"1\" packet=\"4\""),
+              "4: @ext_comm 00 0: the packet must be 0-3");
+    EXPECT_EQ(error(";@ext_comm 00 0 gateway=\"1\" packet=\"0\" timeout_ms=\"70000\""),
+              "4: @ext_comm 00 0: the timeout must be 0 (none) to 60000 ms");
+    EXPECT_EQ(error(";@ext_comm 00 0 gateway=\"1\" packet=\"0\"\n"
+                    ";@ext_comm 00 0 gateway=\"2\" packet=\"0\""),
+              "5: @ext_comm 00 0 is already given");
 }

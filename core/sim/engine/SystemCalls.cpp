@@ -90,6 +90,136 @@ void countSpeed(const DecodedInstruction& input, const DecodedInstruction* outpu
     store(outputs[2], hertz);
 }
 
+constexpr std::size_t kErrorCode = 11; // SR_ErrorCode, the unit's error code
+
+std::uint32_t byteAt(std::uint32_t value, int byte) {
+    return (value & 0xFFu) << (8 * byte);
+}
+
+// Eight bits from the unit's inputs, I<first> to I<first + 7>.
+std::uint32_t inputByte(const UnitMemory& memory, int first) {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 8; ++i)
+        bits |= (memory.inputs[static_cast<std::size_t>(first + i)] ? 1u : 0u) << i;
+    return bits;
+}
+
+// Slave `slave`'s inputs: .1-.4 of the A (or standard) slave in the low
+// nibble, those of its B slave in the high one (4.3.3.2, IO-types 103-110).
+std::uint32_t asiSlaveByte(const UnitMemory& memory, int slave) {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i) {
+        bits |=
+            (memory.asiInputs[static_cast<std::size_t>(slave)][static_cast<std::size_t>(i)] ? 1u
+                                                                                            : 0u)
+            << i;
+        bits |= (memory.asiInputs[static_cast<std::size_t>(slave + 32)][static_cast<std::size_t>(i)]
+                     ? 1u
+                     : 0u)
+                << (4 + i);
+    }
+    return bits;
+}
+
+// Eight safety slaves' inputs, ASI<first> to ASI<first + 7>.
+std::uint32_t safeSlaveByte(const UnitMemory& memory, int first) {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 8; ++i)
+        bits |= (memory.asiSafeInputs[static_cast<std::size_t>(first + i)] ? 1u : 0u) << i;
+    return bits;
+}
+
+// The 32 bits a standard block sends, in the layout of its IO-type (Gateway
+// manual 4.3.3.2); the bits the manual leaves undefined are 0.
+std::uint32_t standardData(const UnitMemory& memory, int ioType) {
+    const std::uint32_t error =
+        byteAt(static_cast<std::uint32_t>(memory.systemRegisters[kErrorCode]), 3);
+    const auto in = [&](int terminal) {
+        return memory.inputs[static_cast<std::size_t>(terminal)] ? 1u : 0u;
+    };
+    switch (ioType) {
+    case 100:
+        return error;
+    case 101:
+    case 112:
+        return inputByte(memory, 20) | inputByte(memory, 30) << 8 | inputByte(memory, 40) << 16 |
+               error;
+    case 102:
+        return (in(1) << 1 | in(2) << 2 | in(3) << 3 | ((inputByte(memory, 10) << 4) & 0xF0u)) |
+               safeSlaveByte(memory, 16) << 8 | safeSlaveByte(memory, 24) << 16 | error;
+    case 113:
+        return inputByte(memory, 10) | (safeSlaveByte(memory, 0) & 0xFEu) << 8 |
+               safeSlaveByte(memory, 8) << 16 | error;
+    default: { // 103-110: four slaves a byte, from slave 4 * (type - 103), slave 0 undefined
+        const int first = 4 * (ioType - 103);
+        std::uint32_t data = 0;
+        for (int byte = 0; byte < 4; ++byte)
+            if (first + byte > 0)
+                data |= asiSlaveByte(memory, first + byte) << (8 * byte);
+        return data;
+    }
+    }
+}
+
+// A ToGateway block: while Send is 1 it sends its telegram, one per scan (a
+// scan is at least 10 ms), and Q says it went; a unit sends at most four a
+// scan, so a fifth block's Send that scan is not sent and its Q stays 0.
+void toGateway(UnitState& unit, const DecodedInstruction* operands,
+               compiler::SystemInstructionId id) {
+    const bool user = compiler::standardIoType(id) == 0;
+    const DecodedInstruction* send = user ? operands + 1 : operands;
+    const DecodedInstruction& q =
+        operands[compiler::findSystemInstruction(static_cast<std::uint8_t>(id))->parameters.size() -
+                 1];
+    if (!send->readBit() || unit.telegrams.size() >= kTelegramsPerScan) {
+        q.writeBit(false);
+        return;
+    }
+    GatewayTelegram telegram;
+    if (!user) {
+        telegram.ioType = compiler::standardIoType(id);
+        telegram.data = standardData(unit.memory, telegram.ioType);
+    } else {
+        telegram.ioType = static_cast<int>(valueOf(operands[0]));
+        const auto reg0 = static_cast<std::uint16_t>(valueOf(operands[2]));
+        std::uint32_t high = 0; // bytes 2 and 3
+        if (id == compiler::SystemInstructionId::ToGatewayUserA) {
+            high = static_cast<std::uint16_t>(valueOf(operands[3]));
+        } else {
+            const int bits = id == compiler::SystemInstructionId::ToGatewayUserB ? 8 : 16;
+            for (int i = 0; i < bits; ++i)
+                high |= (operands[3 + i].readBit() ? 1u : 0u) << i;
+            if (bits == 8)
+                high |=
+                    (static_cast<std::uint32_t>(unit.memory.systemRegisters[kErrorCode]) & 0xFFu)
+                    << 8;
+        }
+        telegram.data = reg0 | high << 16;
+    }
+    unit.telegrams.push_back(telegram);
+    q.writeBit(true);
+}
+
+// Ext_Sig, Ext_Val, ExtVarBlock: External Comm Block BlockNo's validity, then
+// its bits (Ext_Sig, ExtVarBlock) and registers (Ext_Val, ExtVarBlock). A
+// BlockNo outside 0-3 reads as a block never received.
+void externalData(UnitState& unit, const DecodedInstruction* operands, bool bits, bool registers) {
+    const std::int64_t number = valueOf(operands[0]);
+    const bool known = number >= 0 && number < UnitMemory::kExternalBlocks;
+    const auto block = static_cast<std::size_t>(known ? number : 0);
+    const UnitMemory& memory = unit.memory;
+    operands[1].writeBit(known && memory.externalValid[block]);
+    const DecodedInstruction* next = operands + 2;
+    if (bits) {
+        const std::uint16_t word = known ? memory.externalBits[block] : 0;
+        for (int i = 0; i < 16; ++i)
+            (next++)->writeBit((word >> i) & 1u);
+    }
+    if (registers)
+        for (std::size_t r = 0; r < 2; ++r)
+            store(*next++, known ? memory.externalRegisters[2 * block + r] : 0);
+}
+
 } // namespace
 
 void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
@@ -112,6 +242,18 @@ void runSystemCall(UnitState& unit, const DecodedInstruction& call) {
         return;
     case SystemInstructionId::HSSpeedCountDir:
         countSpeed(operands[0], operands + 2, -kHighestCountedFrequency);
+        return;
+    case SystemInstructionId::ExtSig:
+        externalData(unit, operands, true, false);
+        return;
+    case SystemInstructionId::ExtVal:
+        externalData(unit, operands, false, true);
+        return;
+    case SystemInstructionId::ExtVarBlock:
+        externalData(unit, operands, true, true);
+        return;
+    default:
+        toGateway(unit, operands, static_cast<SystemInstructionId>(call.aux));
         return;
     }
 }

@@ -3,6 +3,7 @@
 
 #include "DecodedInstruction.h"
 #include "InstructionMeaning.h"
+#include "sim/GatewayTelegram.h"
 #include "sim/Timer.h"
 #include "sim/UnitMemory.h"
 
@@ -49,6 +50,8 @@ struct UnitState {
     std::vector<EdgeState> edges;
     std::vector<Timer> timers;
     std::uint64_t scan = 0; // scans since power on
+    // What the ToGateway blocks sent in the scan that ran last.
+    std::vector<GatewayTelegram> telegrams;
 
     // The power an edge occurrence passes: whether it sees its edge, negated if asked.
     unsigned edge(const DecodedInstruction& in) {
