@@ -216,12 +216,16 @@
         <translation>%1 hat keine Sequenz %2 in Einheit %3</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
-        <translation>Die anzuzeigende Seite: ladder:N (der Code der Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), asi:N (ihre AS-i-Optionen), variables:N, unit:N oder project.</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
+        <translation>Die anzuzeigende Seite: ladder:N (der Code der Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), asi:N (ihre AS-i-Optionen), variables:N, unit:N, gateway:N (das Gateway mit der Knotenadresse N) oder project.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
-        <translation>unbekannte Seite „%1“; die Seiten sind ladder:N, text:N, io:N, asi:N, variables:N und unit:N für die Einheit N, ladder:N.S und text:N.S für ihre Sequenz S, und project</translation>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, asi:N, variables:N und unit:N für die Einheit N, ladder:N.S und text:N.S für ihre Sequenz S, gateway:N für das Gateway N und project</translation>
+    </message>
+    <message>
+        <source>%1 has no gateway %2</source>
+        <translation>%1 hat kein Gateway %2</translation>
     </message>
 </context>
 <context>
@@ -1085,6 +1089,14 @@
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
         <translation>Die Programmsignatur des kompilierten Codes der Einheit, wie rungsmith-cli signature sie ausgibt; sie ändert sich genau dann, wenn sich ändert, was die Einheit tut</translation>
     </message>
+    <message>
+        <source>G%1</source>
+        <translation>G%1</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CompareDialog</name>
@@ -1534,6 +1546,57 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ExternalCommDialog</name>
+    <message>
+        <source>External Communication of Pluto %1</source>
+        <translation>Externe Kommunikation von Pluto %1</translation>
+    </message>
+    <message>
+        <source>Which gateway data this unit receives: each External Comm Block takes one Data to Pluto packet of one gateway. A block that receives nothing for its timeout is cleared, and the Ext blocks of the code read it as not valid. The timeout must be greater than the gateway&apos;s cycle time (Gateway manual 4.5.1).</source>
+        <translation>Welche Gateway-Daten diese Einheit empfängt: Jeder External Comm Block nimmt ein Data-to-Pluto-Paket eines Gateways. Ein Block, der während seiner Zeitüberwachung nichts empfängt, wird gelöscht, und die Ext-Bausteine des Codes lesen ihn als ungültig. Die Zeitüberwachung muss größer als die Zykluszeit des Gateways sein (Gateway-Handbuch 4.5.1).</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Block</translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation>Gateway</translation>
+    </message>
+    <message>
+        <source>Packet</source>
+        <translation>Paket</translation>
+    </message>
+    <message>
+        <source>Timeout</source>
+        <translation>Zeitüberwachung</translation>
+    </message>
+    <message>
+        <source>Block &amp;%1</source>
+        <translation>Block &amp;%1</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation>Keine Zeitüberwachung</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (not in the project)</source>
+        <translation>Gateway %1 (nicht im Projekt)</translation>
+    </message>
+    <message>
+        <source>The project has no gateway: add one with Project &gt; New Gateway first.</source>
+        <translation>Das Projekt hat kein Gateway: Fügen Sie zuerst eines mit Projekt &gt; Neues Gateway hinzu.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ForcesView</name>
     <message>
         <source>&amp;Release</source>
@@ -1558,6 +1621,235 @@
     <message>
         <source>Release the chosen force: the program writes the variable again</source>
         <translation>Das gewählte Forcen aufheben: Das Programm schreibt die Variable wieder</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayCommands</name>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation>Neues &amp;Gateway...</translation>
+    </message>
+    <message>
+        <source>Add a Pluto Gateway to the project&apos;s bus</source>
+        <translation>Ein Pluto-Gateway zum Bus des Projekts hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation>Gate&amp;way entfernen...</translation>
+    </message>
+    <message>
+        <source>New Gateway</source>
+        <translation>Neues Gateway</translation>
+    </message>
+    <message>
+        <source>Every gateway node address 0-15 is in use.</source>
+        <translation>Jede Gateway-Knotenadresse 0-15 ist belegt.</translation>
+    </message>
+    <message>
+        <source>A Pluto Gateway is a node of the Pluto bus that passes the Plutos&apos; data to a fieldbus. The Ethernet gateways (GATE-E1, GATE-E2) serve Modbus TCP while simulating.</source>
+        <translation>Ein Pluto-Gateway ist ein Knoten des Pluto-Busses, der die Daten der Plutos an einen Feldbus weitergibt. Die Ethernet-Gateways (GATE-E1, GATE-E2) bedienen während der Simulation Modbus TCP.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>&amp;Node address:</source>
+        <translation>&amp;Knotenadresse:</translation>
+    </message>
+    <message>
+        <source>New Gateway %1</source>
+        <translation>Neues Gateway %1</translation>
+    </message>
+    <message>
+        <source>Remove Gateway</source>
+        <translation>Gateway entfernen</translation>
+    </message>
+    <message>
+        <source>Remove gateway %1 with its settings from the project? Units that receive its data keep their setting. Edit &gt; Undo brings it back.</source>
+        <translation>Gateway %1 mit seinen Einstellungen aus dem Projekt entfernen? Einheiten, die seine Daten empfangen, behalten ihre Einstellung. Bearbeiten &gt; Rückgängig holt es zurück.</translation>
+    </message>
+    <message>
+        <source>Remove Gateway %1</source>
+        <translation>Gateway %1 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayPage</name>
+    <message>
+        <source>%1 (user block)</source>
+        <translation>%1 (Anwenderbaustein)</translation>
+    </message>
+    <message>
+        <source>%1 Global data</source>
+        <translation>%1 Globale Daten</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Gateway...</source>
+        <translation>Gateway &amp;entfernen...</translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation>Gateway</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>Node address:</source>
+        <translation>Knotenadresse:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Type</source>
+        <translation>Typ von Gateway %1 setzen</translation>
+    </message>
+    <message>
+        <source>Data to Pluto</source>
+        <translation>Daten an Pluto</translation>
+    </message>
+    <message>
+        <source>Packet &amp;%1</source>
+        <translation>Paket &amp;%1</translation>
+    </message>
+    <message>
+        <source>Enable Data to Pluto Packet %1</source>
+        <translation>Daten-an-Pluto-Paket %1 freigeben</translation>
+    </message>
+    <message>
+        <source>Disable Data to Pluto Packet %1</source>
+        <translation>Daten-an-Pluto-Paket %1 sperren</translation>
+    </message>
+    <message>
+        <source>Enabled:</source>
+        <translation>Freigegeben:</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Cycle time:</source>
+        <translation>&amp;Zykluszeit:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Cycle Time</source>
+        <translation>Zykluszeit von Gateway %1 setzen</translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation>Keine Zeitüberwachung</translation>
+    </message>
+    <message>
+        <source>T&amp;imeout:</source>
+        <translation>Zeitü&amp;berwachung:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Timeout</source>
+        <translation>Zeitüberwachung von Gateway %1 setzen</translation>
+    </message>
+    <message>
+        <source>Expected nodes</source>
+        <translation>Erwartete Knoten</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Expected Nodes</source>
+        <translation>Erwartete Knoten von Gateway %1 setzen</translation>
+    </message>
+    <message>
+        <source>Additional data areas</source>
+        <translation>Zusatzdatenbereiche</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation>Pluto</translation>
+    </message>
+    <message>
+        <source>IO-type</source>
+        <translation>IO-Typ</translation>
+    </message>
+    <message>
+        <source>Set Additional Data Area %1</source>
+        <translation>Zusatzdatenbereich %1 setzen</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>A node of the Pluto bus that passes the Plutos&apos; data to a fieldbus and takes data to them back (Gateway manual). Project %1.</source>
+        <translation>Ein Knoten des Pluto-Busses, der die Daten der Plutos an einen Feldbus weitergibt und Daten an sie zurücknimmt (Gateway-Handbuch). Projekt %1.</translation>
+    </message>
+    <message>
+        <source>0 or %1-%2 ms on %3</source>
+        <translation>0 oder %1-%2 ms beim %3</translation>
+    </message>
+    <message>
+        <source>0-%1 ms</source>
+        <translation>0-%1 ms</translation>
+    </message>
+    <message>
+        <source>Not used</source>
+        <translation>Nicht benutzt</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayView</name>
+    <message>
+        <source>Data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Bits 31..0</source>
+        <translation>Bits 31..0</translation>
+    </message>
+    <message>
+        <source>Modbus TCP is not served.</source>
+        <translation>Modbus TCP wird nicht bedient.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; no client is connected.</source>
+        <translation>Modbus TCP wird auf %1 bedient; kein Client ist verbunden.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; clients: %2.</source>
+        <translation>Modbus TCP wird auf %1 bedient; Clients: %2.</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Node status</source>
+        <translation>Knotenstatus</translation>
+    </message>
+    <message>
+        <source>Additional data %1 (Pluto %2, IO-type %3)</source>
+        <translation>Zusatzdaten %1 (Pluto %2, IO-Typ %3)</translation>
+    </message>
+    <message>
+        <source>Data to Pluto %1</source>
+        <translation>Daten an Pluto %1</translation>
+    </message>
+    <message>
+        <source>valid; register 0 = %1, register 1 = %2</source>
+        <translation>gültig; Register 0 = %1, Register 1 = %2</translation>
+    </message>
+    <message>
+        <source>not valid</source>
+        <translation>ungültig</translation>
     </message>
 </context>
 <context>
@@ -2308,6 +2600,14 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>%1 (config options only)</source>
         <translation>%1 (nur Konfigurationsoptionen)</translation>
     </message>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation>Neues &amp;Gateway...</translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation>Gate&amp;way entfernen...</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -2877,6 +3177,22 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>As the theme draws it; click to choose a colour</source>
         <translation>Wie das Design es zeichnet; klicken, um eine Farbe zu wählen</translation>
     </message>
+    <message>
+        <source>Simulated gateway</source>
+        <translation>Simuliertes Gateway</translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;address:</source>
+        <translation>Modbus-TCP-&amp;Adresse:</translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;port:</source>
+        <translation>Modbus-TCP-&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Where Serve Modbus TCP listens while simulating. 127.0.0.1 lets only this computer connect; 0.0.0.0 the network.</source>
+        <translation>Wo Modbus TCP bedienen während der Simulation lauscht. 127.0.0.1 lässt nur diesen Rechner verbinden, 0.0.0.0 das Netz.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -3156,6 +3472,10 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>AS-i Options</source>
         <translation>AS-i-Optionen</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3477,6 +3797,30 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
         <source>Scenario %1 cancelled at t = %2 s.</source>
         <translation>Szenario %1 bei t = %2 s abgebrochen.</translation>
     </message>
+    <message>
+        <source>Serve &amp;Modbus TCP</source>
+        <translation>&amp;Modbus TCP bedienen</translation>
+    </message>
+    <message>
+        <source>Gateways</source>
+        <translation>Gateways</translation>
+    </message>
+    <message>
+        <source>Answer Modbus TCP clients for the project&apos;s Ethernet gateway while simulating, at the address the preferences give</source>
+        <translation>Während der Simulation Modbus-TCP-Clients für das Ethernet-Gateway des Projekts antworten, an der Adresse aus den Einstellungen</translation>
+    </message>
+    <message>
+        <source>Serve Modbus TCP</source>
+        <translation>Modbus TCP bedienen</translation>
+    </message>
+    <message>
+        <source>Cannot serve Modbus TCP on %1:%2: %3. Choose another address or port in the preferences.</source>
+        <translation>Modbus TCP kann auf %1:%2 nicht bedient werden: %3. Wählen Sie in den Einstellungen eine andere Adresse oder einen anderen Port.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1.</source>
+        <translation>Modbus TCP wird auf %1 bedient.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -3745,6 +4089,22 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>Set CAN Bus Cycle Time of Pluto %1</source>
         <translation>CAN-Bus-Zykluszeit von Pluto %1 setzen</translation>
+    </message>
+    <message>
+        <source>E&amp;xternal Communication...</source>
+        <translation>E&amp;xterne Kommunikation...</translation>
+    </message>
+    <message>
+        <source>Gateway data received:</source>
+        <translation>Empfangene Gateway-Daten:</translation>
+    </message>
+    <message>
+        <source>block %1 from gateway %2, packet %3</source>
+        <translation>Block %1 von Gateway %2, Paket %3</translation>
+    </message>
+    <message>
+        <source>Set External Communication of Pluto %1</source>
+        <translation>Externe Kommunikation von Pluto %1 setzen</translation>
     </message>
 </context>
 <context>

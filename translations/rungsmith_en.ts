@@ -216,11 +216,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no gateway %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1085,6 +1089,14 @@
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>G%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CompareDialog</name>
@@ -1534,6 +1546,57 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ExternalCommDialog</name>
+    <message>
+        <source>External Communication of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which gateway data this unit receives: each External Comm Block takes one Data to Pluto packet of one gateway. A block that receives nothing for its timeout is cleared, and the Ext blocks of the code read it as not valid. The timeout must be greater than the gateway&apos;s cycle time (Gateway manual 4.5.1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Packet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block &amp;%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (not in the project)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project has no gateway: add one with Project &gt; New Gateway first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ForcesView</name>
     <message>
         <source>&amp;Release</source>
@@ -1557,6 +1620,235 @@
     </message>
     <message>
         <source>Release the chosen force: the program writes the variable again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayCommands</name>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a Pluto Gateway to the project&apos;s bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Gateway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every gateway node address 0-15 is in use.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A Pluto Gateway is a node of the Pluto bus that passes the Plutos&apos; data to a fieldbus. The Ethernet gateways (GATE-E1, GATE-E2) serve Modbus TCP while simulating.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Node address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Gateway %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Gateway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove gateway %1 with its settings from the project? Units that receive its data keep their setting. Edit &gt; Undo brings it back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Gateway %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayPage</name>
+    <message>
+        <source>%1 (user block)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Global data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove Gateway...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data to Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Packet &amp;%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable Data to Pluto Packet %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable Data to Pluto Packet %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enabled:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Cycle time:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Cycle Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T&amp;imeout:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expected nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Expected Nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Additional data areas</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IO-type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set Additional Data Area %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A node of the Pluto bus that passes the Plutos&apos; data to a fieldbus and takes data to them back (Gateway manual). Project %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 or %1-%2 ms on %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0-%1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayView</name>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bits 31..0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus TCP is not served.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; no client is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; clients: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Additional data %1 (Pluto %2, IO-type %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data to Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>valid; register 0 = %1, register 1 = %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2307,6 +2599,14 @@ Its text page (F6) shows and edits it.</source>
         <source>%1 (config options only)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -2876,6 +3176,22 @@ Its text page (F6) shows and edits it.</source>
         <source>As the theme draws it; click to choose a colour</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Simulated gateway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;port:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where Serve Modbus TCP listens while simulating. 127.0.0.1 lets only this computer connect; 0.0.0.0 the network.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -3153,6 +3469,10 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>AS-i Options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3475,6 +3795,30 @@ Config Options change %2; opened %3</source>
         <source>Scenario %1 cancelled at t = %2 s.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Serve &amp;Modbus TCP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateways</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer Modbus TCP clients for the project&apos;s Ethernet gateway while simulating, at the address the preferences give</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serve Modbus TCP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot serve Modbus TCP on %1:%2: %3. Choose another address or port in the preferences.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -3742,6 +4086,22 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>Set CAN Bus Cycle Time of Pluto %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xternal Communication...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gateway data received:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>block %1 from gateway %2, packet %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set External Communication of Pluto %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

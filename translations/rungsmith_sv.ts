@@ -216,12 +216,16 @@
         <translation>%1 har ingen sekvens %2 i enhet %3</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, or project.</source>
-        <translation>Sidan som visas: ladder:N (koden för enhet N som ladder), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), asi:N (dess AS-i-alternativ), variables:N, unit:N eller project.</translation>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
+        <translation>Sidan som ska visas: ladder:N (koden för enhet N som ladder), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), asi:N (dess AS-i-alternativ), variables:N, unit:N, gateway:N (gatewayen med nodadress N) eller project.</translation>
     </message>
     <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, and project</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, asi:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, och project</translation>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, asi:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, gateway:N för gateway N och project</translation>
+    </message>
+    <message>
+        <source>%1 has no gateway %2</source>
+        <translation>%1 har ingen gateway %2</translation>
     </message>
 </context>
 <context>
@@ -1085,6 +1089,14 @@
         <source>The program signature of the unit&apos;s compiled code, as rungsmith-cli signature prints it; it changes exactly when what the unit does changes</source>
         <translation>Programsignaturen för enhetens kompilerade kod, som rungsmith-cli signature skriver ut den; den ändras precis när det enheten gör ändras</translation>
     </message>
+    <message>
+        <source>G%1</source>
+        <translation>G%1</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::CompareDialog</name>
@@ -1534,6 +1546,57 @@
     </message>
 </context>
 <context>
+    <name>rs::ui::ExternalCommDialog</name>
+    <message>
+        <source>External Communication of Pluto %1</source>
+        <translation>Extern kommunikation för Pluto %1</translation>
+    </message>
+    <message>
+        <source>Which gateway data this unit receives: each External Comm Block takes one Data to Pluto packet of one gateway. A block that receives nothing for its timeout is cleared, and the Ext blocks of the code read it as not valid. The timeout must be greater than the gateway&apos;s cycle time (Gateway manual 4.5.1).</source>
+        <translation>Vilka gatewaydata enheten tar emot: varje External Comm Block tar ett Data to Pluto-paket från en gateway. Ett block som inte tar emot något under sin timeout nollställs, och kodens Ext-block läser det som ogiltigt. Timeouten måste vara större än gatewayens cykeltid (Gateway-manualen 4.5.1).</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Block</translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation>Gateway</translation>
+    </message>
+    <message>
+        <source>Packet</source>
+        <translation>Paket</translation>
+    </message>
+    <message>
+        <source>Timeout</source>
+        <translation>Timeout</translation>
+    </message>
+    <message>
+        <source>Block &amp;%1</source>
+        <translation>Block &amp;%1</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation>Ingen timeout</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (not in the project)</source>
+        <translation>Gateway %1 (finns inte i projektet)</translation>
+    </message>
+    <message>
+        <source>The project has no gateway: add one with Project &gt; New Gateway first.</source>
+        <translation>Projektet har ingen gateway: lägg först till en med Projekt &gt; Ny gateway.</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::ForcesView</name>
     <message>
         <source>&amp;Release</source>
@@ -1558,6 +1621,235 @@
     <message>
         <source>Release the chosen force: the program writes the variable again</source>
         <translation>Häv den valda forceringen: programmet skriver variabeln igen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayCommands</name>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation>Ny &amp;gateway...</translation>
+    </message>
+    <message>
+        <source>Add a Pluto Gateway to the project&apos;s bus</source>
+        <translation>Lägg till en Pluto Gateway på projektets buss</translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation>Ta bort gate&amp;way...</translation>
+    </message>
+    <message>
+        <source>New Gateway</source>
+        <translation>Ny gateway</translation>
+    </message>
+    <message>
+        <source>Every gateway node address 0-15 is in use.</source>
+        <translation>Alla gatewaynodadresser 0-15 är upptagna.</translation>
+    </message>
+    <message>
+        <source>A Pluto Gateway is a node of the Pluto bus that passes the Plutos&apos; data to a fieldbus. The Ethernet gateways (GATE-E1, GATE-E2) serve Modbus TCP while simulating.</source>
+        <translation>En Pluto Gateway är en nod på Plutobussen som för Plutornas data vidare till en fältbuss. Ethernet-gatewayerna (GATE-E1, GATE-E2) betjänar Modbus TCP under simulering.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>&amp;Node address:</source>
+        <translation>&amp;Nodadress:</translation>
+    </message>
+    <message>
+        <source>New Gateway %1</source>
+        <translation>Ny gateway %1</translation>
+    </message>
+    <message>
+        <source>Remove Gateway</source>
+        <translation>Ta bort gateway</translation>
+    </message>
+    <message>
+        <source>Remove gateway %1 with its settings from the project? Units that receive its data keep their setting. Edit &gt; Undo brings it back.</source>
+        <translation>Ta bort gateway %1 med dess inställningar från projektet? Enheter som tar emot dess data behåller sin inställning. Redigera &gt; Ångra tar tillbaka den.</translation>
+    </message>
+    <message>
+        <source>Remove Gateway %1</source>
+        <translation>Ta bort gateway %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayPage</name>
+    <message>
+        <source>%1 (user block)</source>
+        <translation>%1 (användarblock)</translation>
+    </message>
+    <message>
+        <source>%1 Global data</source>
+        <translation>%1 Globala data</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Gateway...</source>
+        <translation>&amp;Ta bort gateway...</translation>
+    </message>
+    <message>
+        <source>Gateway</source>
+        <translation>Gateway</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>Node address:</source>
+        <translation>Nodadress:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Type</source>
+        <translation>Ange typ för gateway %1</translation>
+    </message>
+    <message>
+        <source>Data to Pluto</source>
+        <translation>Data till Pluto</translation>
+    </message>
+    <message>
+        <source>Packet &amp;%1</source>
+        <translation>Paket &amp;%1</translation>
+    </message>
+    <message>
+        <source>Enable Data to Pluto Packet %1</source>
+        <translation>Aktivera Data till Pluto-paket %1</translation>
+    </message>
+    <message>
+        <source>Disable Data to Pluto Packet %1</source>
+        <translation>Inaktivera Data till Pluto-paket %1</translation>
+    </message>
+    <message>
+        <source>Enabled:</source>
+        <translation>Aktiverade:</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Cycle time:</source>
+        <translation>&amp;Cykeltid:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Cycle Time</source>
+        <translation>Ange cykeltid för gateway %1</translation>
+    </message>
+    <message>
+        <source>No timeout</source>
+        <translation>Ingen timeout</translation>
+    </message>
+    <message>
+        <source>T&amp;imeout:</source>
+        <translation>T&amp;imeout:</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Timeout</source>
+        <translation>Ange timeout för gateway %1</translation>
+    </message>
+    <message>
+        <source>Expected nodes</source>
+        <translation>Förväntade noder</translation>
+    </message>
+    <message>
+        <source>Set Gateway %1 Expected Nodes</source>
+        <translation>Ange förväntade noder för gateway %1</translation>
+    </message>
+    <message>
+        <source>Additional data areas</source>
+        <translation>Extra dataområden</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Område</translation>
+    </message>
+    <message>
+        <source>Pluto</source>
+        <translation>Pluto</translation>
+    </message>
+    <message>
+        <source>IO-type</source>
+        <translation>IO-typ</translation>
+    </message>
+    <message>
+        <source>Set Additional Data Area %1</source>
+        <translation>Ange extra dataområde %1</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>A node of the Pluto bus that passes the Plutos&apos; data to a fieldbus and takes data to them back (Gateway manual). Project %1.</source>
+        <translation>En nod på Plutobussen som för Plutornas data vidare till en fältbuss och tar data tillbaka till dem (Gateway-manualen). Projekt %1.</translation>
+    </message>
+    <message>
+        <source>0 or %1-%2 ms on %3</source>
+        <translation>0 eller %1-%2 ms på %3</translation>
+    </message>
+    <message>
+        <source>0-%1 ms</source>
+        <translation>0-%1 ms</translation>
+    </message>
+    <message>
+        <source>Not used</source>
+        <translation>Används inte</translation>
+    </message>
+    <message>
+        <source>Pluto %1</source>
+        <translation>Pluto %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::GatewayView</name>
+    <message>
+        <source>Data</source>
+        <translation>Data</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Bits 31..0</source>
+        <translation>Bitar 31..0</translation>
+    </message>
+    <message>
+        <source>Modbus TCP is not served.</source>
+        <translation>Modbus TCP betjänas inte.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; no client is connected.</source>
+        <translation>Betjänar Modbus TCP på %1; ingen klient är ansluten.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1; clients: %2.</source>
+        <translation>Betjänar Modbus TCP på %1; klienter: %2.</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Node status</source>
+        <translation>Nodstatus</translation>
+    </message>
+    <message>
+        <source>Additional data %1 (Pluto %2, IO-type %3)</source>
+        <translation>Extra data %1 (Pluto %2, IO-typ %3)</translation>
+    </message>
+    <message>
+        <source>Data to Pluto %1</source>
+        <translation>Data till Pluto %1</translation>
+    </message>
+    <message>
+        <source>valid; register 0 = %1, register 1 = %2</source>
+        <translation>giltig; register 0 = %1, register 1 = %2</translation>
+    </message>
+    <message>
+        <source>not valid</source>
+        <translation>ogiltig</translation>
     </message>
 </context>
 <context>
@@ -2308,6 +2600,14 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>%1 (config options only)</source>
         <translation>%1 (endast konfigurationsalternativ)</translation>
     </message>
+    <message>
+        <source>New &amp;Gateway...</source>
+        <translation>Ny &amp;gateway...</translation>
+    </message>
+    <message>
+        <source>Remove Gate&amp;way...</source>
+        <translation>Ta bort gate&amp;way...</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -2877,6 +3177,22 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>As the theme draws it; click to choose a colour</source>
         <translation>Som temat ritar det; klicka för att välja en färg</translation>
     </message>
+    <message>
+        <source>Simulated gateway</source>
+        <translation>Simulerad gateway</translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;address:</source>
+        <translation>Modbus TCP-&amp;adress:</translation>
+    </message>
+    <message>
+        <source>Modbus TCP &amp;port:</source>
+        <translation>Modbus TCP-&amp;port:</translation>
+    </message>
+    <message>
+        <source>Where Serve Modbus TCP listens while simulating. 127.0.0.1 lets only this computer connect; 0.0.0.0 the network.</source>
+        <translation>Där Betjäna Modbus TCP lyssnar under simulering. 127.0.0.1 låter bara den här datorn ansluta, 0.0.0.0 nätverket.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProblemsView</name>
@@ -3156,6 +3472,10 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>AS-i Options</source>
         <translation>AS-i-alternativ</translation>
+    </message>
+    <message>
+        <source>Gateway %1 (%2)</source>
+        <translation>Gateway %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3477,6 +3797,30 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
         <source>Scenario %1 cancelled at t = %2 s.</source>
         <translation>Scenario %1 avbrutet vid t = %2 s.</translation>
     </message>
+    <message>
+        <source>Serve &amp;Modbus TCP</source>
+        <translation>Betjäna &amp;Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Gateways</source>
+        <translation>Gatewayer</translation>
+    </message>
+    <message>
+        <source>Answer Modbus TCP clients for the project&apos;s Ethernet gateway while simulating, at the address the preferences give</source>
+        <translation>Svara Modbus TCP-klienter för projektets Ethernet-gateway under simulering, på adressen i inställningarna</translation>
+    </message>
+    <message>
+        <source>Serve Modbus TCP</source>
+        <translation>Betjäna Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Cannot serve Modbus TCP on %1:%2: %3. Choose another address or port in the preferences.</source>
+        <translation>Kan inte betjäna Modbus TCP på %1:%2: %3. Välj en annan adress eller port i inställningarna.</translation>
+    </message>
+    <message>
+        <source>Serving Modbus TCP on %1.</source>
+        <translation>Betjänar Modbus TCP på %1.</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::SimulationSession</name>
@@ -3745,6 +4089,22 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>Set CAN Bus Cycle Time of Pluto %1</source>
         <translation>Ställ in CAN-bussens cykeltid för Pluto %1</translation>
+    </message>
+    <message>
+        <source>E&amp;xternal Communication...</source>
+        <translation>E&amp;xtern kommunikation...</translation>
+    </message>
+    <message>
+        <source>Gateway data received:</source>
+        <translation>Mottagna gatewaydata:</translation>
+    </message>
+    <message>
+        <source>block %1 from gateway %2, packet %3</source>
+        <translation>block %1 från gateway %2, paket %3</translation>
+    </message>
+    <message>
+        <source>Set External Communication of Pluto %1</source>
+        <translation>Ange extern kommunikation för Pluto %1</translation>
     </message>
 </context>
 <context>

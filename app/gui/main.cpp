@@ -46,25 +46,27 @@ struct Page {
 };
 
 // "ladder:N", "text:N", "io:N", "asi:N", "variables:N" and "unit:N": a page of the unit
-// with station number N; "ladder:N.S" and "text:N.S" its sequence S, as the
-// language writes a sequence (S0.1); "project": the project's own page.
+// with station number N; "gateway:N" the gateway with node address N; "ladder:N.S" and "text:N.S"
+// its sequence S, as the language writes a sequence (S0.1); "project": the project's own page.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
-    static const QRegularExpression form(QStringLiteral(
-        "^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|asi|variables|unit):(\\d{1,2}))$"));
+    static const QRegularExpression form(
+        QStringLiteral("^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|asi|variables|unit|gateway)"
+                       ":(\\d{1,2}))$"));
     const QRegularExpressionMatch match = form.match(text);
     if (!match.hasMatch())
         return std::nullopt;
     const bool code = match.hasCaptured(1);
     const QString kind = code ? match.captured(1) : match.captured(4);
     using Kind = rs::ui::PageRef::Kind;
-    return Page{kind == QLatin1String("ladder") ? Kind::Ladder
-                : kind == QLatin1String("text") ? Kind::Code
-                : kind == QLatin1String("io")   ? Kind::IoOptions
-                : kind == QLatin1String("asi")  ? Kind::AsiOptions
-                : kind == QLatin1String("unit") ? Kind::Unit
-                                                : Kind::Variables,
+    return Page{kind == QLatin1String("ladder")    ? Kind::Ladder
+                : kind == QLatin1String("text")    ? Kind::Code
+                : kind == QLatin1String("io")      ? Kind::IoOptions
+                : kind == QLatin1String("asi")     ? Kind::AsiOptions
+                : kind == QLatin1String("unit")    ? Kind::Unit
+                : kind == QLatin1String("gateway") ? Kind::Gateway
+                                                   : Kind::Variables,
                 (code ? match.captured(2) : match.captured(5)).toInt(),
                 code && match.hasCaptured(3) ? match.captured(3).toInt() : 0};
 }
@@ -155,7 +157,8 @@ int main(int argc, char* argv[]) {
         QStringLiteral("page"),
         CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
                         "text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), "
-                        "asi:N (its AS-i options), variables:N, unit:N, or project."),
+                        "asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway "
+                        "with node address N), or project."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -186,8 +189,8 @@ int main(int argc, char* argv[]) {
         if (!page)
             return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
                                               "io:N, asi:N, variables:N and unit:N for unit N, "
-                                              "ladder:N.S and text:N.S for its sequence S, and "
-                                              "project")
+                                              "ladder:N.S and text:N.S for its sequence S, "
+                                              "gateway:N for gateway N, and project")
                                   .arg(parser.value(pageOption)));
     }
     std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;
@@ -201,11 +204,12 @@ int main(int argc, char* argv[]) {
         rs::ui::applyTheme(*theme);
     const QString shownFile = files.isEmpty() ? CommandLine::tr("the example") : files.first();
     const QString noSuchUnit =
-        page && page->sequence != 0
-            ? CommandLine::tr("%1 has no sequence %2 in unit %3")
-                  .arg(shownFile)
-                  .arg(page->sequence)
-                  .arg(page->station)
+        page && page->sequence != 0 ? CommandLine::tr("%1 has no sequence %2 in unit %3")
+                                          .arg(shownFile)
+                                          .arg(page->sequence)
+                                          .arg(page->station)
+        : page && page->kind == rs::ui::PageRef::Kind::Gateway
+            ? CommandLine::tr("%1 has no gateway %2").arg(shownFile).arg(page->station)
             : CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
 
     rs::ui::MainWindow window;

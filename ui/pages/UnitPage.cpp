@@ -5,10 +5,12 @@
 #include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "pages/AdvancedSettingsDialog.h"
+#include "pages/ExternalCommDialog.h"
 #include "pages/SignatureLabel.h"
 #include "pages/UnitSettingsForm.h"
 #include "project/CanBusCycle.h"
 #include "project/ExportedVariables.h"
+#include "project/ProjectGateways.h"
 #include "project/RemanentVariables.h"
 #include "project/UnitSettings.h"
 #include "shell/PageTitle.h"
@@ -44,7 +46,9 @@ UnitPage::UnitPage(QWidget* parent)
       m_signature(new SignatureLabel(this)),
       m_remanentButton(new QPushButton(tr("&Remanent Variables..."), this)),
       m_canCycle(new QLabel(this)),
-      m_advancedButton(new QPushButton(tr("&Advanced Settings..."), this)) {
+      m_advancedButton(new QPushButton(tr("&Advanced Settings..."), this)),
+      m_externalComm(new QLabel(this)),
+      m_externalCommButton(new QPushButton(tr("E&xternal Communication..."), this)) {
     m_undeclared->setWordWrap(true);
     m_undeclared->setText(tr("This unit has code but no '! id_pluto' declaration. Any change "
                              "below writes one."));
@@ -69,6 +73,13 @@ UnitPage::UnitPage(QWidget* parent)
     cycleRow->addWidget(m_canCycle, 1);
     cycleRow->addWidget(m_advancedButton);
     form->addRow(tr("CAN bus cycle time:"), cycleRow);
+    m_externalComm->setObjectName(QStringLiteral("externalCommLabel"));
+    m_externalComm->setWordWrap(true);
+    m_externalCommButton->setObjectName(QStringLiteral("externalCommButton"));
+    auto* externalRow = new QHBoxLayout;
+    externalRow->addWidget(m_externalComm, 1);
+    externalRow->addWidget(m_externalCommButton);
+    form->addRow(tr("Gateway data received:"), externalRow);
 
     auto* resources = new QGroupBox(tr("Resources in use"), this);
     auto* resourceForm = new QFormLayout(resources);
@@ -103,6 +114,7 @@ UnitPage::UnitPage(QWidget* parent)
     connect(m_remanentButton, &QPushButton::clicked, this,
             [this] { emit remanentRequested(m_document, m_station); });
     connect(m_advancedButton, &QPushButton::clicked, this, &UnitPage::editAdvancedSettings);
+    connect(m_externalCommButton, &QPushButton::clicked, this, &UnitPage::editExternalComm);
 }
 
 void UnitPage::showUnit(ProjectDocument* document, int station) {
@@ -152,6 +164,14 @@ void UnitPage::refresh() {
     const int cycle = project::canCycleOf(p, m_station);
     m_canCycle->setText(cycle ? tr("%1 ms").arg(cycle) : tr("the unit's default"));
     m_advancedButton->setEnabled(editable);
+    QStringList blocks;
+    for (const auto& [block, setting] : project::externalCommOf(p, m_station))
+        blocks << tr("block %1 from gateway %2, packet %3")
+                      .arg(block)
+                      .arg(setting.gateway)
+                      .arg(setting.packet);
+    m_externalComm->setText(blocks.isEmpty() ? tr("none") : blocks.join(QStringLiteral("; ")));
+    m_externalCommButton->setEnabled(editable);
     const blocks::UnitResources resources = blocks::unitResources(p, m_station);
     m_timers->setText(resourceText(resources.timers));
     m_memories->setText(resourceText(resources.memories));
@@ -179,6 +199,20 @@ void UnitPage::apply() {
     }
     m_document->edit(tr("Change Pluto %1").arg(m_station),
                      [&](project::Project& p) { project::changeUnit(p, settings); });
+}
+
+void UnitPage::editExternalComm() {
+    if (!m_document)
+        return;
+    ExternalCommDialog dialog(m_document->project(), m_station, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const int station = m_station;
+    const project::ExternalComm setting = dialog.setting();
+    if (setting == project::externalCommOf(m_document->project(), station))
+        return;
+    m_document->edit(tr("Set External Communication of Pluto %1").arg(station),
+                     [&](project::Project& p) { project::setExternalComm(p, station, setting); });
 }
 
 void UnitPage::editAdvancedSettings() {

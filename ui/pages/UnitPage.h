@@ -33,6 +33,7 @@ private:
     void refresh();
     void apply();
     void editAdvancedSettings();
+    void editExternalComm();
 
     PageTitle* m_title;
     UnitSettingsForm* m_form;
@@ -46,6 +47,8 @@ private:
     QPushButton* m_remanentButton;
     QLabel* m_canCycle;
     QPushButton* m_advancedButton;
+    QLabel* m_externalComm;
+    QPushButton* m_externalCommButton;
     QPointer<ProjectDocument> m_document;
     int m_station = 0;
 };

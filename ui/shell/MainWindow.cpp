@@ -9,6 +9,8 @@
 #include "output/CompileOutput.h"
 #include "output/ProblemsView.h"
 #include "pages/AsiOptionsPage.h"
+#include "pages/GatewayCommands.h"
+#include "pages/GatewayPage.h"
 #include "pages/IoOptionsPage.h"
 #include "pages/MarkValidatedDialog.h"
 #include "pages/ProjectPage.h"
@@ -73,12 +75,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_unitPage = new UnitPage(m_pages);
     m_ioPage = new IoOptionsPage(m_pages);
     m_asiPage = new AsiOptionsPage(m_pages);
+    m_gatewayPage = new GatewayPage(m_pages);
     m_variablesPage = new VariablesPage(m_pages);
     m_textPage = new TextPage(m_pages);
     m_ladderPage = new LadderPage(m_pages);
-    for (QWidget* page :
-         std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage, m_ioPage,
-                                         m_asiPage, m_variablesPage, m_textPage, m_ladderPage})
+    for (QWidget* page : std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage,
+                                                         m_ioPage, m_asiPage, m_gatewayPage,
+                                                         m_variablesPage, m_textPage, m_ladderPage})
         m_pages->addWidget(page);
 
     createCommands();
@@ -179,6 +182,24 @@ void MainWindow::createCommands() {
                     showPage({PageRef::Kind::Project, document});
             });
     connect(m_units, &UnitCommands::message, this, &MainWindow::showMessage);
+
+    m_gateways = new GatewayCommands(this, [this] {
+        PageRef page = m_current;
+        page.document = currentDocument();
+        return page;
+    });
+    connect(m_gateways, &GatewayCommands::gatewayAdded, this,
+            [this](ProjectDocument* document, int node) {
+                showPage({PageRef::Kind::Gateway, document, node});
+            });
+    connect(m_gateways, &GatewayCommands::gatewayRemoving, this,
+            [this](ProjectDocument* document, int node) {
+                if (m_current.document == document && m_current.kind == PageRef::Kind::Gateway &&
+                    m_current.station == node)
+                    showPage({PageRef::Kind::Project, document});
+            });
+    connect(m_gatewayPage, &GatewayPage::removeRequested, m_gateways,
+            &GatewayCommands::removeGateway);
 }
 
 void MainWindow::createActions() {
@@ -342,6 +363,9 @@ void MainWindow::createMenus() {
     projectMenu->addAction(unitActions.newUnit);
     projectMenu->addAction(unitActions.newSequence);
     projectMenu->addAction(unitActions.removeUnit);
+    projectMenu->addSeparator();
+    projectMenu->addAction(m_gateways->actions().newGateway);
+    projectMenu->addAction(m_gateways->actions().removeGateway);
     projectMenu->addSeparator();
     projectMenu->addAction(unitActions.remanent);
     projectMenu->addAction(unitActions.importCsv);
@@ -552,6 +576,10 @@ bool MainWindow::showPage(const PageRef& page) {
         m_asiPage->showUnit(document, page.station);
         m_pages->setCurrentWidget(m_asiPage);
         break;
+    case PageRef::Kind::Gateway:
+        m_gatewayPage->showGateway(document, page.station);
+        m_pages->setCurrentWidget(m_gatewayPage);
+        break;
     case PageRef::Kind::Variables:
         m_variablesPage->showUnit(document, page.station);
         m_pages->setCurrentWidget(m_variablesPage);
@@ -589,6 +617,9 @@ bool MainWindow::showPage(PageRef::Kind kind, int station, int sequence) {
     ProjectDocument* document = currentDocument();
     if (document && kind == PageRef::Kind::Project)
         return showPage(PageRef{kind, document});
+    if (kind == PageRef::Kind::Gateway)
+        return document && !document->isDamaged() && document->project().gateways.count(station) &&
+               showPage(PageRef{kind, document, station});
     if (!document || !project::unitSettings(document->project(), station))
         return false;
     if (sequence != 0) {
@@ -627,6 +658,7 @@ void MainWindow::updateActions() {
     PageRef shown = m_current;
     shown.document = document;
     m_units->updateActions(shown);
+    m_gateways->updateActions(shown);
     m_compileAction->setEnabled(document != nullptr && !isCompiling());
     const bool writable =
         document != nullptr && document->permission() == project::Permission::Full;
@@ -728,8 +760,10 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
         break;
     case PageRef::Kind::Project:
     case PageRef::Kind::ProjectText:
-        if (!document->isDamaged())
+        if (!document->isDamaged()) {
             add(tr("New &Pluto..."), [this, document] { m_units->newUnit(document); });
+            add(tr("New &Gateway..."), [this, document] { m_gateways->newGateway(document); });
+        }
         add(tr("&Save Project"), [this, document] { m_projects->save(document); });
         add(tr("Save Project &As..."), [this, document] { m_projects->saveAs(document); });
         if (!document->isDamaged()) {
@@ -769,6 +803,10 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
         menu.addSeparator();
         add(tr("&Remove Pluto..."),
             [this, document, page] { m_units->removeUnit(document, page.station); });
+        break;
+    case PageRef::Kind::Gateway:
+        add(tr("Remove Gate&way..."),
+            [this, document, page] { m_gateways->removeGateway(document, page.station); });
         break;
     }
     menu.exec(globalPosition);

@@ -30,6 +30,8 @@ namespace rs::ui {
 
 class CompileOutput;
 class AsiOptionsPage;
+class GatewayCommands;
+class GatewayPage;
 class IoOptionsPage;
 class LadderPage;
 class ProblemsView;
@@ -105,6 +107,7 @@ public:
     UnitPage* unitPage() const { return m_unitPage; }
     IoOptionsPage* ioOptionsPage() const { return m_ioPage; }
     AsiOptionsPage* asiOptionsPage() const { return m_asiPage; }
+    GatewayPage* gatewayPage() const { return m_gatewayPage; }
     VariablesPage* variablesPage() const { return m_variablesPage; }
     ProjectTree* projectTree() const { return m_tree; }
     CompileOutput* compileOutput() const { return m_output; }
@@ -151,6 +154,7 @@ private:
     Preferences m_preferences;
     OpenProjects* m_projects = nullptr;
     UnitCommands* m_units = nullptr;
+    GatewayCommands* m_gateways = nullptr;
     CompileRun* m_compileRun = nullptr;
 
     QStackedWidget* m_pages = nullptr;
@@ -159,6 +163,7 @@ private:
     UnitPage* m_unitPage = nullptr;
     IoOptionsPage* m_ioPage = nullptr;
     AsiOptionsPage* m_asiPage = nullptr;
+    GatewayPage* m_gatewayPage = nullptr;
     VariablesPage* m_variablesPage = nullptr;
     TextPage* m_textPage = nullptr;
     LadderPage* m_ladderPage = nullptr;

@@ -17,6 +17,7 @@ struct PageRef {
         Unit,
         IoOptions,
         AsiOptions,
+        Gateway, // station: the gateway's node address
         Variables,
         Code,
         Ladder

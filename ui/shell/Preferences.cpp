@@ -49,6 +49,11 @@ Preferences Preferences::load() {
     p.autosaveMinutes = std::clamp(
         settings.value(kGroup + QStringLiteral("autosaveMinutes"), d.autosaveMinutes).toInt(),
         kMinAutosaveMinutes, kMaxAutosaveMinutes);
+    p.modbusHost = settings.value(kGroup + QStringLiteral("modbusHost"), d.modbusHost).toString();
+    if (p.modbusHost.trimmed().isEmpty())
+        p.modbusHost = d.modbusHost;
+    p.modbusPort = std::clamp(
+        settings.value(kGroup + QStringLiteral("modbusPort"), d.modbusPort).toInt(), 1, 65535);
     return p;
 }
 
@@ -72,6 +77,8 @@ void Preferences::save() const {
     settings.setValue(kGroup + QStringLiteral("language"), language);
     settings.setValue(kGroup + QStringLiteral("theme"), static_cast<int>(theme));
     settings.setValue(kGroup + QStringLiteral("autosaveMinutes"), autosaveMinutes);
+    settings.setValue(kGroup + QStringLiteral("modbusHost"), modbusHost);
+    settings.setValue(kGroup + QStringLiteral("modbusPort"), modbusPort);
 }
 
 } // namespace rs::ui

@@ -30,6 +30,10 @@ struct Preferences {
     static constexpr int kMinAutosaveMinutes = 1;
     static constexpr int kMaxAutosaveMinutes = 60;
     int autosaveMinutes = 2; // kept within the range above whatever the settings say
+    // Where Simulation > Serve Modbus TCP listens: loopback unless the user
+    // opens it to the network (a real gateway's is port 502 on all addresses).
+    QString modbusHost = QStringLiteral("127.0.0.1");
+    int modbusPort = 1502; // 1-65535
 
     static Preferences defaults();
     static Preferences load();

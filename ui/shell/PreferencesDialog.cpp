@@ -7,7 +7,9 @@
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPainter>
 #include <QPushButton>
 #include <QSpinBox>
@@ -33,8 +35,8 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
     : QDialog(parent), m_preferences(preferences), m_updateInterval(new QComboBox(this)),
       m_startExpanded(new QCheckBox(tr("Start with ladder diagrams &expanded"), this)),
       m_warnUnconfiguredIo(new QCheckBox(tr("&Unconfigured I/O warnings at compile time"), this)),
-      m_language(new QComboBox(this)), m_theme(new QComboBox(this)),
-      m_autosave(new QSpinBox(this)) {
+      m_language(new QComboBox(this)), m_theme(new QComboBox(this)), m_autosave(new QSpinBox(this)),
+      m_modbusHost(new QLineEdit(this)), m_modbusPort(new QSpinBox(this)) {
     setObjectName(QStringLiteral("preferencesDialog"));
     setWindowTitle(tr("Preferences"));
 
@@ -112,11 +114,29 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
     form->addRow(tr("&Autosave every:"), m_autosave);
     form->addRow(QString(), autosaveNote);
 
+    auto* modbus = new QGroupBox(tr("Simulated gateway"), this);
+    auto* modbusForm = new QFormLayout(modbus);
+    m_modbusHost->setObjectName(QStringLiteral("modbusHostEdit"));
+    m_modbusPort->setObjectName(QStringLiteral("modbusPortSpin"));
+    m_modbusPort->setRange(1, 65535);
+    modbusForm->addRow(tr("Modbus TCP &address:"), m_modbusHost);
+    modbusForm->addRow(tr("Modbus TCP &port:"), m_modbusPort);
+    auto* modbusNote = new QLabel(tr("Where Serve Modbus TCP listens while simulating. 127.0.0.1 "
+                                     "lets only this computer connect; 0.0.0.0 the network."),
+                                  this);
+    modbusNote->setWordWrap(true);
+    modbusNote->setForegroundRole(QPalette::PlaceholderText);
+    modbusForm->addRow(QString(), modbusNote);
+
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* columns = new QHBoxLayout;
-    columns->addWidget(general, 1);
+    auto* left = new QVBoxLayout;
+    left->addWidget(general);
+    left->addWidget(modbus);
+    left->addStretch();
+    columns->addLayout(left, 1);
     columns->addWidget(colors);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(columns);
@@ -149,6 +169,8 @@ void PreferencesDialog::show(const Preferences& preferences) {
     m_language->setCurrentIndex(std::max(0, m_language->findData(preferences.language)));
     m_theme->setCurrentIndex(std::max(0, m_theme->findData(static_cast<int>(preferences.theme))));
     m_autosave->setValue(preferences.autosaveMinutes);
+    m_modbusHost->setText(preferences.modbusHost);
+    m_modbusPort->setValue(preferences.modbusPort);
 }
 
 Preferences PreferencesDialog::preferences() const {
@@ -159,6 +181,9 @@ Preferences PreferencesDialog::preferences() const {
     p.language = m_language->currentData().toString();
     p.theme = static_cast<Preferences::Theme>(m_theme->currentData().toInt());
     p.autosaveMinutes = m_autosave->value();
+    p.modbusHost = m_modbusHost->text().trimmed().isEmpty() ? Preferences::defaults().modbusHost
+                                                            : m_modbusHost->text().trimmed();
+    p.modbusPort = m_modbusPort->value();
     return p;
 }
 

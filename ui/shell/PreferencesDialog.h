@@ -9,6 +9,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLineEdit;
 class QSpinBox;
 class QToolButton;
 
@@ -41,6 +42,8 @@ private:
     QComboBox* m_language;
     QComboBox* m_theme;
     QSpinBox* m_autosave;
+    QLineEdit* m_modbusHost;
+    QSpinBox* m_modbusPort;
 };
 
 } // namespace rs::ui

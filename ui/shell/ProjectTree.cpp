@@ -132,6 +132,12 @@ void ProjectTree::setDocuments(const std::vector<ProjectDocument*>& documents) {
                 add(unitItem, tr("Sequence %1").arg(sequence), QStringLiteral("sequence"),
                     {PageRef::Kind::Ladder, document, station, sequence});
         }
+        for (const auto& [node, gateway] : p.gateways)
+            add(projectItem,
+                tr("Gateway %1 (%2)")
+                    .arg(node)
+                    .arg(QString::fromLatin1(project::gatewayTypeName(gateway.type).data())),
+                QStringLiteral("gateway"), {PageRef::Kind::Gateway, document, node});
         updateProjectItem(document);
     }
     root->setExpanded(true);

@@ -50,7 +50,11 @@ void BusStatusView::refresh() {
     const ProjectDocument* document = m_session->document();
     const std::vector<int> stations =
         simulation && document ? document->project().stations() : std::vector<int>{};
-    m_table->setRowCount(static_cast<int>(stations.size()));
+    std::vector<std::pair<int, project::GatewayType>> gateways;
+    if (simulation && document)
+        for (const auto& [node, gateway] : document->project().gateways)
+            gateways.emplace_back(node, gateway.type);
+    m_table->setRowCount(static_cast<int>(stations.size() + gateways.size()));
     const bool running = m_session->state() == SimulationSession::State::Running;
     const std::vector<compiler::UnitImage>& images = m_session->images();
     if (images.empty()) {
@@ -86,6 +90,25 @@ void BusStatusView::refresh() {
             if (column == CodeColumn || column == StateColumn)
                 item->setForeground(code != 0 || !present ? errorTextColor(palette())
                                                           : palette().color(QPalette::Text));
+        }
+    }
+    // The gateways are nodes of the bus too (Gateway manual 3.4), by node address.
+    for (std::size_t i = 0; i < gateways.size(); ++i) {
+        const int row = static_cast<int>(stations.size() + i);
+        const QStringList cells{
+            tr("G%1").arg(gateways[i].first),
+            tr("Gateway %1 (%2)")
+                .arg(gateways[i].first)
+                .arg(QString::fromLatin1(project::gatewayTypeName(gateways[i].second).data())),
+            running ? tr("Ok, running") : tr("Ok, stopped"), QString(), QString()};
+        for (int column = 0; column < cells.size(); ++column) {
+            QTableWidgetItem* item = m_table->item(row, column);
+            if (!item) {
+                item = new QTableWidgetItem;
+                m_table->setItem(row, column, item);
+            }
+            item->setText(cells[column]);
+            item->setForeground(palette().color(QPalette::Text));
         }
     }
 }

@@ -3,6 +3,8 @@
 
 #include "BusStatusView.h"
 #include "ForcesView.h"
+#include "GatewayView.h"
+#include "ModbusService.h"
 #include "ScenarioFileViewer.h"
 #include "ScenarioResultsView.h"
 #include "SimulationControls.h"
@@ -14,6 +16,7 @@
 #include "pages/VariableTableModel.h"
 #include "pages/VariablesPage.h"
 #include "shell/MainWindow.h"
+#include "shell/Preferences.h"
 #include "shell/StatusColors.h"
 
 #include <QDockWidget>
@@ -26,6 +29,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolBar>
@@ -62,6 +66,11 @@ SimulationMode::SimulationMode(MainWindow* window)
     : QObject(window), m_window(window), m_controls(new SimulationControls(&m_session, window)),
       m_forces(new ForcesView(&m_session, window)), m_watch(new WatchView(&m_session, window)),
       m_bus(new BusStatusView(&m_session, window)),
+      m_modbus(new ModbusService(
+          [this](const gateway::ModbusRequest& request) { return m_session.answerModbus(request); },
+          this)),
+      m_serveModbus(new QAction(tr("Serve &Modbus TCP"), this)),
+      m_gateway(new GatewayView(&m_session, m_modbus, m_serveModbus, window)),
       m_waveform(new WaveformPanel(&m_session, window)),
       m_scenarios(new ScenarioResultsView(window)), m_viewer(new ScenarioFileViewer(window)),
       m_unitCode(new QLabel(window)), m_scenarioProgress(new QProgressBar(window)),
@@ -75,11 +84,21 @@ SimulationMode::SimulationMode(MainWindow* window)
     m_watchDock = addDock(m_watch, tr("Watch"), "watchDock");
     m_waveformDock = addDock(m_waveform, tr("Waveform"), "waveformDock", false);
     m_busDock = addDock(m_bus, tr("Bus Status"), "busStatusDock");
+    m_gatewayDock = addDock(m_gateway, tr("Gateways"), "gatewayDock");
+    m_serveModbus->setObjectName(QStringLiteral("serveModbusAction"));
+    m_serveModbus->setCheckable(true);
+    m_serveModbus->setEnabled(false);
+    m_serveModbus->setStatusTip(tr("Answer Modbus TCP clients for the project's Ethernet gateway "
+                                   "while simulating, at the address the preferences give"));
+    m_controls->menu()->addSeparator();
+    m_controls->menu()->addAction(m_serveModbus);
+    connect(m_serveModbus, &QAction::toggled, this, &SimulationMode::serveModbus);
+    connect(m_modbus, &ModbusService::message, this, &SimulationMode::message);
     m_scenariosDock = addDock(m_scenarios, tr("Scenarios"), "scenariosDock");
     if (auto* view = window->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
         view->addSeparator();
         for (QDockWidget* dock :
-             {m_forcesDock, m_watchDock, m_waveformDock, m_busDock, m_scenariosDock})
+             {m_forcesDock, m_watchDock, m_waveformDock, m_busDock, m_gatewayDock, m_scenariosDock})
             view->addAction(dock->toggleViewAction());
         view->addAction(m_controls->toolBar()->toggleViewAction());
     }
@@ -168,6 +187,8 @@ SimulationMode::SimulationMode(MainWindow* window)
 }
 
 SimulationMode::~SimulationMode() {
+    // The server's thread answers through m_session, which goes before the children.
+    m_modbus->stop();
     // The pages outlive nothing here, but must not keep a pointer to m_live.
     if (m_liveLadder)
         m_liveLadder->setLiveState(nullptr);
@@ -202,8 +223,10 @@ void SimulationMode::showSimulationDocks(const ProjectDocument* document) {
     } else {
         for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock})
             dock->show();
-        if (document->project().stations().size() > 1)
+        if (document->project().stations().size() > 1 || !document->project().gateways.empty())
             m_busDock->show();
+        if (!document->project().gateways.empty())
+            m_gatewayDock->show();
     }
     if (!m_simulationDocksShown)
         showBottomDocks();
@@ -218,13 +241,36 @@ void SimulationMode::hideSimulationDocks() {
         return;
     m_simulationDocksShown = false;
     std::vector<QDockWidget*> shown;
-    for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock, m_busDock})
+    for (QDockWidget* dock : {m_forcesDock, m_watchDock, m_waveformDock, m_busDock, m_gatewayDock})
         if (dock->isVisible()) {
             shown.push_back(dock);
             dock->hide();
         }
     if (!shown.empty())
         m_lastSimulationDocks = std::move(shown);
+}
+
+void SimulationMode::serveModbus(bool on) {
+    if (!on) {
+        m_modbus->stop();
+        return;
+    }
+    const Preferences preferences = Preferences::load();
+    const QString error = m_modbus->start(preferences.modbusHost, preferences.modbusPort);
+    if (!error.isEmpty()) {
+        const QSignalBlocker blocker(m_serveModbus);
+        m_serveModbus->setChecked(false);
+        QMessageBox::warning(m_window, tr("Serve Modbus TCP"),
+                             tr("Cannot serve Modbus TCP on %1:%2: %3. Choose another address or "
+                                "port in the preferences.")
+                                 .arg(preferences.modbusHost)
+                                 .arg(preferences.modbusPort)
+                                 .arg(error));
+        return;
+    }
+    message(tr("Serving Modbus TCP on %1.").arg(m_modbus->address()));
+    m_gatewayDock->show();
+    m_gatewayDock->raise();
 }
 
 void SimulationMode::end() {
@@ -277,6 +323,13 @@ void SimulationMode::stateChanged() {
         m_liveLadder = nullptr;
     }
     m_unitCode->setVisible(simulation != nullptr);
+    bool ethernet = false;
+    if (simulation && m_session.document())
+        for (const auto& [node, gateway] : m_session.document()->project().gateways)
+            ethernet = ethernet || project::servesModbusTcp(gateway.type);
+    if (!ethernet)
+        m_serveModbus->setChecked(false); // the simulation ended: so does serving
+    m_serveModbus->setEnabled(ethernet);
     if (!simulation)
         hideSimulationDocks();
     refresh();

@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+class QAction;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
@@ -22,6 +23,8 @@ namespace rs::ui {
 
 class BusStatusView;
 class ForcesView;
+class GatewayView;
+class ModbusService;
 class LadderPage;
 class MainWindow;
 class ProjectDocument;
@@ -49,6 +52,9 @@ public:
     ForcesView* forcesView() const { return m_forces; }
     WatchView* watchView() const { return m_watch; }
     BusStatusView* busStatusView() const { return m_bus; }
+    GatewayView* gatewayView() const { return m_gateway; }
+    ModbusService* modbusService() const { return m_modbus; }
+    QAction* serveModbusAction() const { return m_serveModbus; }
     WaveformPanel* waveformPanel() const { return m_waveform; }
     ScenarioResultsView* scenarioResults() const { return m_scenarios; }
     ScenarioFileViewer* scenarioViewer() const { return m_viewer; }
@@ -85,6 +91,8 @@ private:
     void hideSimulationDocks();
     void showBottomDocks();
     void message(const QString& text);
+    // Simulate > Serve Modbus TCP: on, at the preferences' address; off.
+    void serveModbus(bool on);
 
     MainWindow* m_window;
     SimulationSession m_session;
@@ -92,6 +100,9 @@ private:
     ForcesView* m_forces;
     WatchView* m_watch;
     BusStatusView* m_bus;
+    ModbusService* m_modbus;
+    QAction* m_serveModbus;
+    GatewayView* m_gateway;
     WaveformPanel* m_waveform;
     ScenarioResultsView* m_scenarios;
     ScenarioFileViewer* m_viewer;
@@ -101,6 +112,7 @@ private:
     QDockWidget* m_forcesDock = nullptr;
     QDockWidget* m_watchDock = nullptr;
     QDockWidget* m_busDock = nullptr;
+    QDockWidget* m_gatewayDock = nullptr;
     QDockWidget* m_waveformDock = nullptr;
     QDockWidget* m_scenariosDock = nullptr;
     bool m_simulationDocksShown = false;

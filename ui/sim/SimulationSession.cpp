@@ -40,6 +40,17 @@ std::unique_ptr<sim::Simulation> powerOn(const std::vector<compiler::UnitImage>&
     return simulation;
 }
 
+// The project's gateways, fresh, having taken the bus as the simulation stands.
+std::vector<std::unique_ptr<gateway::GatewayNode>> gatewayNodes(const project::Project& project,
+                                                                sim::Simulation& simulation) {
+    std::vector<std::unique_ptr<gateway::GatewayNode>> nodes;
+    for (const auto& [node, settings] : project.gateways) {
+        nodes.push_back(std::make_unique<gateway::GatewayNode>(node, settings));
+        nodes.back()->exchange(simulation);
+    }
+    return nodes;
+}
+
 } // namespace
 
 struct SimulationSession::ScenarioJob {
@@ -109,6 +120,10 @@ QString SimulationSession::begin(ProjectDocument* document) {
     if (QString error = compile(document); !error.isEmpty())
         return error;
     m_simulation = powerOn(m_images, document->project());
+    {
+        std::lock_guard lock(m_gatewayMutex);
+        m_gateways = gatewayNodes(document->project(), *m_simulation);
+    }
     if (document != m_lastSimulated) {
         m_lastSimulated = document;
         connect(document, &QObject::destroyed, this, [this](QObject* gone) {
@@ -144,6 +159,10 @@ void SimulationSession::end() {
         disconnect(m_document, nullptr, this, nullptr);
     m_document = nullptr;
     if (m_simulation) {
+        {
+            std::lock_guard lock(m_gatewayMutex);
+            m_gateways.clear();
+        }
         m_simulation.reset();
         m_images.clear();
         emit stateChanged();
@@ -193,6 +212,10 @@ void SimulationSession::reset() {
     if (!m_simulation)
         return;
     m_simulation->restart();
+    if (m_document) {
+        std::lock_guard lock(m_gatewayMutex);
+        m_gateways = gatewayNodes(m_document->project(), *m_simulation);
+    }
     m_pacer.start(wallMs(), 0);
     m_recorder.clear();
     m_recorder.sample(*m_simulation);
@@ -209,6 +232,11 @@ void SimulationSession::setUpdateInterval(int ms) {
 
 void SimulationSession::scanOnce() {
     m_simulation->scan();
+    if (!m_gateways.empty()) {
+        std::lock_guard lock(m_gatewayMutex);
+        for (auto& node : m_gateways)
+            node->exchange(*m_simulation);
+    }
     m_recorder.sample(*m_simulation);
 }
 
@@ -227,6 +255,14 @@ void SimulationSession::tick() {
         m_lastUpdateMs = now;
         emit updated();
     }
+}
+
+gateway::ModbusResponse SimulationSession::answerModbus(const gateway::ModbusRequest& request) {
+    std::lock_guard lock(m_gatewayMutex);
+    for (auto& node : m_gateways)
+        if (project::servesModbusTcp(node->settings().type))
+            return node->answer(request);
+    return {gateway::ModbusException::GatewayTargetFailed, {}};
 }
 
 void SimulationSession::changed() {
@@ -432,6 +468,10 @@ void SimulationSession::scenarioDone() {
     const std::shared_ptr<ScenarioJob> job = std::exchange(m_job, nullptr);
     const ScenarioResult result = resultOf(*job);
     m_simulation = std::move(job->simulation);
+    if (m_document) {
+        std::lock_guard lock(m_gatewayMutex);
+        m_gateways = gatewayNodes(m_document->project(), *m_simulation);
+    }
     m_recorder = std::move(job->recorder);
     m_pacer.start(wallMs(), m_simulation->timeMs());
     emit stateChanged();

@@ -5,6 +5,7 @@
 // parse the C++20 standard headers they bring in (<concepts>) and needs only the names.
 #ifndef Q_MOC_RUN
 #include "compiler/Image.h"
+#include "gateway/GatewayNode.h"
 #include "sim/RealTimePacer.h"
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
@@ -19,6 +20,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -95,6 +97,18 @@ public:
     // The project's symbolic names and every operand of the compiled code, for completion.
     QStringList operandWords() const;
 
+    // The project's gateways on the simulated bus, by node address: each
+    // exchanges data with the units after every scan (docs/gateway.md).
+    // Read them under gatewayMutex(): the Modbus service answers through
+    // them on its own thread.
+    const std::vector<std::unique_ptr<gateway::GatewayNode>>& gateways() const {
+        return m_gateways;
+    }
+    std::mutex& gatewayMutex() const { return m_gatewayMutex; }
+    // A Modbus request for the project's first Ethernet gateway (exception
+    // 0B without one); safe on any thread.
+    gateway::ModbusResponse answerModbus(const gateway::ModbusRequest& request);
+
     // What the waveform shows.
     sim::WaveformRecorder& recorder() { return m_recorder; }
     const sim::WaveformRecorder& recorder() const { return m_recorder; }
@@ -159,6 +173,8 @@ private:
     const QObject* m_lastSimulated = nullptr;
     std::vector<compiler::UnitImage> m_images;
     std::unique_ptr<sim::Simulation> m_simulation;
+    std::vector<std::unique_ptr<gateway::GatewayNode>> m_gateways;
+    mutable std::mutex m_gatewayMutex;
     sim::RealTimePacer m_pacer;
     sim::WaveformRecorder m_recorder;
     QElapsedTimer m_wall;
