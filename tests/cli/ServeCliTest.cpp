@@ -165,14 +165,14 @@ TEST_F(ServeCliTest, MbpollReadsNodeStatusAndGlobalDataWhileAScenarioDrivesTheIn
     EXPECT_TRUE(log.endsWith(QStringLiteral("stopped\n"))) << log.toStdString();
 }
 
-// The gateway's other data: Pluto 0's user block in Additional Data 0, Data
-// to Pluto in Pluto 1's External Comm Block 0 (shown on the bus by GM1.0), a
-// local data request and the configuration unit.
+// The gateway's other data: an additional data area configured through unit 4
+// takes Pluto 0's ToGateway_User_A block; Data to Pluto reaches Pluto 1's
+// Ext_Sig, whose outputs come back in its global data (Valid GM1.0, bit 0
+// Q1.1); a local data request reads a register.
 TEST_F(ServeCliTest, MbpollReadsAdditionalDataFeedsAPlutoAndAsksForLocalData) {
     write(QStringLiteral("line.sps"),
           "$name Gateway line\n"
           ";@gateway 0 type=\"GATE-E1\" to_pluto=\"0\" cycle_ms=\"20\"\n"
-          ";@gateway_area 0 0 pluto=\"0\" io_type=\"12\"\n"
           "! id_pluto:00=000000000000\n"
           "! id_pluto:01=000000000001\n"
           "! pgm_pluto:00\n"
@@ -184,7 +184,10 @@ TEST_F(ServeCliTest, MbpollReadsAdditionalDataFeedsAPlutoAndAsksForLocalData) {
           "! pgm_pluto:01\n"
           ";@ext_comm 01 0 gateway=\"0\" packet=\"0\"\n"
           "S1.0_0\n"
-          ";@system Ext_Val BlockNo=\"0\" Valid=\"GM1.0\" Reg_0=\"R1.0\" Reg_1=\"R1.1\"\n");
+          ";@system Ext_Sig BlockNo=\"0\" Valid=\"GM1.0\" Bit_0=\"Q1.1\" Bit_1=\"M1.1\" "
+          "Bit_2=\"M1.2\" Bit_3=\"M1.3\" Bit_4=\"M1.4\" Bit_5=\"M1.5\" Bit_6=\"M1.6\" "
+          "Bit_7=\"M1.7\" Bit_8=\"M1.8\" Bit_9=\"M1.9\" Bit_10=\"M1.10\" Bit_11=\"M1.11\" "
+          "Bit_12=\"M1.12\" Bit_13=\"M1.13\" Bit_14=\"M1.14\" Bit_15=\"M1.15\"\n");
     const int port = start();
     ASSERT_GT(port, 0);
     const auto until = [&](const QStringList& arguments, const QString& wanted) {
@@ -195,6 +198,16 @@ TEST_F(ServeCliTest, MbpollReadsAdditionalDataFeedsAPlutoAndAsksForLocalData) {
             QThread::msleep(50);
         return answer;
     };
+    // Additional Data 0 is not used until unit 4 gives it Pluto 0 (high
+    // byte) and the user block's number 12 (low byte).
+    EXPECT_TRUE(poll(port, {QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"),
+                            QStringLiteral("67"), QStringLiteral("-c"), QStringLiteral("2")})
+                    .contains(QStringLiteral("[68]: \t0")));
+    EXPECT_TRUE(
+        poll(port,
+             {QStringLiteral("-a"), QStringLiteral("4"), QStringLiteral("-r"), QStringLiteral("5")},
+             {QStringLiteral("12"), QStringLiteral("0")})
+            .contains(QStringLiteral("Written 2 references")));
     // Additional Data 0 at 67 (MSW: Reg_1) and 68 (LSW: Reg_0).
     const QString additional = until(
         {QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"), QStringLiteral("67"),
@@ -203,17 +216,18 @@ TEST_F(ServeCliTest, MbpollReadsAdditionalDataFeedsAPlutoAndAsksForLocalData) {
     EXPECT_TRUE(additional.contains(QStringLiteral("[67]: \t0x0007")) &&
                 additional.contains(QStringLiteral("[68]: \t0x1234")))
         << additional.toStdString();
-    // Area 0 valid: Pluto 1's Ext_Val sets GM1.0, bit 4 of Pluto 1's MSW (register 5).
+    // Area 0 valid with bit 0 set: Pluto 1's Ext_Sig sets GM1.0 (bit 4 of its
+    // MSW, register 5) and Q1.1 (bit 1).
     EXPECT_TRUE(
         poll(port,
              {QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"), QStringLiteral("1")},
-             {QStringLiteral("1"), QStringLiteral("0"), QStringLiteral("5")})
-            .contains(QStringLiteral("Written 3 references")));
+             {QStringLiteral("1"), QStringLiteral("1")})
+            .contains(QStringLiteral("Written 2 references")));
     const QString pluto1 =
         until({QStringLiteral("-a"), QStringLiteral("33"), QStringLiteral("-r"),
                QStringLiteral("5"), QStringLiteral("-t"), QStringLiteral("4:hex")},
-              QStringLiteral("[5]: \t0x0010"));
-    EXPECT_TRUE(pluto1.contains(QStringLiteral("[5]: \t0x0010"))) << pluto1.toStdString();
+              QStringLiteral("[5]: \t0x0012"));
+    EXPECT_TRUE(pluto1.contains(QStringLiteral("[5]: \t0x0012"))) << pluto1.toStdString();
     // R10 of Pluto 0 is local register address 110: flag 3, then 6 with the value.
     EXPECT_TRUE(
         poll(port,
