@@ -1,23 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "AsiRecords.h"
 
-#include <charconv>
+#include "RecordWords.h"
 
 namespace rs::project {
 
 namespace {
-
-std::string stationText(int station) {
-    return (station < 10 ? "0" : "") + std::to_string(station);
-}
 
 std::string hexText(int digit) {
     return std::string(1, "0123456789ABCDEF"[digit & 0xF]);
 }
 
 bool readNumber(std::string_view text, int& value) {
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && error == std::errc() && end == text.data() + text.size();
+    const auto number = wholeNumber(text);
+    value = number.value_or(value);
+    return number.has_value();
 }
 
 int readHexDigit(const Annotation& record, std::string_view key, int fallback) {

@@ -2,33 +2,17 @@
 #include "ExternalComm.h"
 
 #include "Gateway.h"
-
-#include <charconv>
-#include <cstdio>
+#include "RecordWords.h"
 
 namespace rs::project {
 
 namespace {
 
-std::optional<int> number(std::string_view word) {
-    int value = 0;
-    const auto [end, problem] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (word.empty() || problem != std::errc() || end != word.data() + word.size())
-        return std::nullopt;
-    return value;
-}
-
-std::string stationText(int station) {
-    char text[4];
-    std::snprintf(text, sizeof text, "%02d", station);
-    return text;
-}
-
 int numberAttribute(const Annotation& record, std::string_view key, int fallback) {
     const std::string text = record.value(key);
     if (text.empty())
         return fallback;
-    const auto value = number(text);
+    const auto value = wholeNumber(text);
     if (!value)
         throw ExternalCommRecordError{"@ext_comm " + std::string(key) + " must be a number, not '" +
                                       text + "'"};
@@ -63,9 +47,9 @@ std::vector<Annotation> externalCommRecords(int station, const ExternalComm& com
 
 void readExternalCommRecord(const Annotation& record, std::map<int, ExternalComm>& units) {
     const auto station =
-        record.arguments.size() == 2 ? number(record.arguments[0]) : std::optional<int>();
+        record.arguments.size() == 2 ? wholeNumber(record.arguments[0]) : std::optional<int>();
     const auto block =
-        record.arguments.size() == 2 ? number(record.arguments[1]) : std::optional<int>();
+        record.arguments.size() == 2 ? wholeNumber(record.arguments[1]) : std::optional<int>();
     if (!station || *station < 0 || *station > 31 || !block || *block < 0 ||
         *block >= kExternalCommBlocks)
         throw ExternalCommRecordError{"@ext_comm needs a station 0-31 and an External Comm "

@@ -1,19 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "GatewayRecords.h"
 
-#include <charconv>
+#include "RecordWords.h"
 
 namespace rs::project {
 
 namespace {
-
-std::optional<int> number(std::string_view word) {
-    int value = 0;
-    const auto [end, problem] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (word.empty() || problem != std::errc() || end != word.data() + word.size())
-        return std::nullopt;
-    return value;
-}
 
 // "0-3,5": numbers and runs, comma separated; nothing when malformed.
 std::optional<std::set<int>> numberList(std::string_view text) {
@@ -23,8 +15,9 @@ std::optional<std::set<int>> numberList(std::string_view text) {
         const std::string_view item = text.substr(0, comma);
         text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
         const auto dash = item.find('-');
-        const auto first = number(item.substr(0, dash));
-        const auto last = dash == std::string_view::npos ? first : number(item.substr(dash + 1));
+        const auto first = wholeNumber(item.substr(0, dash));
+        const auto last =
+            dash == std::string_view::npos ? first : wholeNumber(item.substr(dash + 1));
         if (!first || !last || *last < *first || *last - *first > 31)
             return std::nullopt;
         for (int n = *first; n <= *last; ++n)
@@ -56,7 +49,7 @@ GatewayRecordError formError(const Annotation& record) {
 
 int nodeOf(const Annotation& record, std::size_t arguments) {
     const auto node =
-        record.arguments.size() == arguments ? number(record.arguments.front()) : std::nullopt;
+        record.arguments.size() == arguments ? wholeNumber(record.arguments.front()) : std::nullopt;
     if (!node || *node < 0 || *node >= kGatewayNodes)
         throw formError(record);
     return *node;
@@ -66,7 +59,7 @@ int numberAttribute(const Annotation& record, std::string_view key, int fallback
     const std::string text = record.value(key);
     if (text.empty())
         return fallback;
-    const auto value = number(text);
+    const auto value = wholeNumber(text);
     if (!value)
         throw GatewayRecordError{"@" + record.kind + " " + std::string(key) +
                                  " must be a number, not '" + text + "'"};
@@ -114,7 +107,7 @@ std::vector<Annotation> gatewayRecords(int node, const Gateway& gateway) {
 void readGatewayRecord(const Annotation& record, std::map<int, Gateway>& gateways) {
     if (record.kind == "gateway_area") {
         const int node = nodeOf(record, 2);
-        const auto area = number(record.arguments[1]);
+        const auto area = wholeNumber(record.arguments[1]);
         if (!area || *area < 0 || *area >= kGatewayAreas)
             throw formError(record);
         auto gateway = gateways.find(node);

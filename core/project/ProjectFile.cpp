@@ -6,6 +6,7 @@
 #include "Baseline.h"
 #include "CanBusCycle.h"
 #include "GatewayRecords.h"
+#include "RecordWords.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
 #include "lang/NameResolver.h"
@@ -16,7 +17,6 @@
 #include <QSaveFile>
 
 #include <algorithm>
-#include <charconv>
 #include <set>
 #include <tuple>
 
@@ -120,11 +120,8 @@ private:
             if (std::string description = annotation->value("description"); !description.empty())
                 m_project.unitDescriptions[station] = std::move(description);
             if (std::string cycle = annotation->value("can_cycle_ms"); !cycle.empty()) {
-                int ms = 0;
-                const auto [end, problem] =
-                    std::from_chars(cycle.data(), cycle.data() + cycle.size(), ms);
-                if (problem != std::errc() || end != cycle.data() + cycle.size() || ms == 0 ||
-                    setCanCycle(m_project, station, ms))
+                const auto ms = wholeNumber(cycle);
+                if (!ms || *ms == 0 || setCanCycle(m_project, station, *ms))
                     error(at, "@unit can_cycle_ms must be a number of milliseconds " +
                                   std::to_string(kMinCanCycleMs) + "-" +
                                   std::to_string(kMaxCanCycleMs) + ", not '" + cycle + "'");
@@ -226,10 +223,6 @@ bool isIdOf(const Line& line, int station) {
         if (auto* id = std::get_if<lang::IdDeclaration>(&declaration->body))
             return id->station == station;
     return false;
-}
-
-std::string stationText(int station) {
-    return (station < 10 ? "0" : "") + std::to_string(station);
 }
 
 // The records of one unit: its description and remanent variables, then its

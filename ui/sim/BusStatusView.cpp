@@ -45,6 +45,20 @@ BusStatusView::BusStatusView(SimulationSession* session, QWidget* parent)
     connect(m_session, &SimulationSession::stateChanged, this, &BusStatusView::refresh);
 }
 
+void BusStatusView::setRow(int row, const QStringList& cells, bool failing) {
+    for (int column = 0; column < cells.size(); ++column) {
+        QTableWidgetItem* item = m_table->item(row, column);
+        if (!item) {
+            item = new QTableWidgetItem;
+            m_table->setItem(row, column, item);
+        }
+        item->setText(cells[column]);
+        const bool state = column == CodeColumn || column == StateColumn;
+        item->setForeground(state && failing ? errorTextColor(palette())
+                                             : palette().color(QPalette::Text));
+    }
+}
+
 void BusStatusView::refresh() {
     const sim::Simulation* simulation = m_session->simulation();
     const ProjectDocument* document = m_session->document();
@@ -80,17 +94,7 @@ void BusStatusView::refresh() {
                                 present ? (code == 0 ? tr("E0=No Error") : tr("Er%1").arg(code))
                                         : QString(),
                                 m_signatures.count(station) ? m_signatures[station] : QString()};
-        for (int column = 0; column < cells.size(); ++column) {
-            QTableWidgetItem* item = m_table->item(row, column);
-            if (!item) {
-                item = new QTableWidgetItem;
-                m_table->setItem(row, column, item);
-            }
-            item->setText(cells[column]);
-            if (column == CodeColumn || column == StateColumn)
-                item->setForeground(code != 0 || !present ? errorTextColor(palette())
-                                                          : palette().color(QPalette::Text));
-        }
+        setRow(row, cells, code != 0 || !present);
     }
     // The gateways are nodes of the bus too (Gateway manual 3.4), by node address.
     for (std::size_t i = 0; i < gateways.size(); ++i) {
@@ -101,15 +105,7 @@ void BusStatusView::refresh() {
                 .arg(gateways[i].first)
                 .arg(QString::fromLatin1(project::gatewayTypeName(gateways[i].second).data())),
             running ? tr("Ok, running") : tr("Ok, stopped"), QString(), QString()};
-        for (int column = 0; column < cells.size(); ++column) {
-            QTableWidgetItem* item = m_table->item(row, column);
-            if (!item) {
-                item = new QTableWidgetItem;
-                m_table->setItem(row, column, item);
-            }
-            item->setText(cells[column]);
-            item->setForeground(palette().color(QPalette::Text));
-        }
+        setRow(row, cells, false);
     }
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include <cstdint>
@@ -32,6 +33,9 @@ public:
     void refresh();
 
 private:
+    // One row's cells; `failing` shows its state and code as an error.
+    void setRow(int row, const QStringList& cells, bool failing);
+
     SimulationSession* m_session;
     QTableWidget* m_table;
     // Each unit's signature, of the images whose project signature this is:
