@@ -22,6 +22,8 @@ void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& u
     const auto& code = unit.image().code;
     m_instructions = code.size();
     m_boxes.clear();
+    m_boxesOf.clear();
+    auto& memory = const_cast<sim::UnitMemory&>(unit.memory());
     for (std::size_t i = 0; i < code.size(); ++i) {
         const compiler::Instruction& in = code[i];
         const bool timer = in.op == compiler::Op::Timer;
@@ -32,14 +34,45 @@ void LiveLadderBuilder::rebuild(LadderLiveState& state, const sim::UnitEngine& u
             continue;
         const auto key = std::make_pair(in.statement, in.element);
         if (m_boxes.empty() || m_boxes.back().key != key)
-            m_boxes.push_back({key, {}, {}});
+            m_boxes.push_back({key, {}, {}, {}, {}});
         m_boxes.back().instructions.push_back(i);
+        Source source;
+        if (timer) {
+            source.kind = Source::Kind::Timer;
+            source.slot = in.slot;
+            if (in.flags & compiler::ConstantOperand)
+                source.preset = 10 * std::int64_t{in.constant};
+            else
+                source.word = sim::wordRef(memory, in.operand);
+        } else if (in.operand.kind == lang::AddressKind::Sequence) {
+            source.kind = Source::Kind::Step;
+            source.sequence = in.operand.index;
+        } else {
+            // As UnitEngine::read: a number where the address names one, else a bit.
+            source.word = sim::wordRef(memory, in.operand);
+            if (source.word.kind == sim::WordRef::Kind::None) {
+                source.kind = Source::Kind::Bit;
+                source.bit = sim::bitRef(memory, in.operand, false);
+            }
+        }
+        Box& box = m_boxes.back();
+        if (!timer) {
+            // One label for each operand: the same operand twice reads the same value.
+            const QString label =
+                QString::fromStdString(lang::toString(in.operand)) + QLatin1Char('=');
+            if (std::none_of(box.labels.begin(), box.labels.end(),
+                             [&](const auto& known) { return known.second == label; }))
+                box.labels.emplace_back(box.sources.size(), label);
+        }
+        box.sources.push_back(source);
+        if (in.operand.valid())
+            m_boxesOf[in.operand].push_back(key);
     }
     state.annotations.clear();
     for (Box& box : m_boxes) {
         box.values.clear();
         readValues(unit, box);
-        state.annotations[box.key] = textOf(unit, box);
+        state.annotations[box.key] = textOf(box);
     }
 }
 
@@ -49,7 +82,6 @@ void LiveLadderBuilder::reset() {
 }
 
 bool LiveLadderBuilder::readValues(const sim::UnitEngine& unit, Box& box) const {
-    const auto& code = unit.image().code;
     bool changed = false;
     std::size_t at = 0;
     const auto put = [&](std::int64_t value) {
@@ -62,35 +94,40 @@ bool LiveLadderBuilder::readValues(const sim::UnitEngine& unit, Box& box) const 
         }
         ++at;
     };
-    for (std::size_t index : box.instructions) {
-        const compiler::Instruction& in = code[index];
-        if (in.op == compiler::Op::Timer) {
-            const std::int64_t preset =
-                10 * ((in.flags & compiler::ConstantOperand) ? in.constant : unit.read(in.operand));
-            put(std::min(unit.timer(in.slot).elapsedMs, preset));
+    for (const Source& source : box.sources) {
+        switch (source.kind) {
+        case Source::Kind::Timer: {
+            const std::int64_t preset = source.word.kind == sim::WordRef::Kind::None
+                                            ? source.preset
+                                            : 10 * source.word.read();
+            put(std::min(unit.timer(source.slot).elapsedMs, preset));
             put(preset);
-        } else {
-            put(unit.read(in.operand));
+            break;
+        }
+        case Source::Kind::Word:
+            put(source.word.read());
+            break;
+        case Source::Kind::Bit:
+            put(source.bit.read());
+            break;
+        case Source::Kind::Step:
+            put(unit.activeStep(source.sequence));
+            break;
         }
     }
     return changed;
 }
 
-QString LiveLadderBuilder::textOf(const sim::UnitEngine& unit, const Box& box) const {
-    const auto& code = unit.image().code;
-    const compiler::Instruction& first = code[box.instructions.front()];
-    if (first.op == compiler::Op::Timer)
+QString LiveLadderBuilder::textOf(const Box& box) {
+    if (box.sources.front().kind == Source::Kind::Timer)
         return seconds(box.values[0]) + QStringLiteral(" / ") + seconds(box.values[1]);
-    QStringList parts;
-    for (std::size_t i = 0; i < box.instructions.size(); ++i) {
-        const QString part =
-            QStringLiteral("%1=%2")
-                .arg(QString::fromStdString(lang::toString(code[box.instructions[i]].operand)))
-                .arg(box.values[i]);
-        if (!parts.contains(part))
-            parts << part;
+    QString text;
+    for (const auto& [index, label] : box.labels) {
+        if (!text.isEmpty())
+            text += QStringLiteral("  ");
+        text += label + QString::number(box.values[index]);
     }
-    return parts.join(QStringLiteral("  "));
+    return text;
 }
 
 void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& simulation,
@@ -110,14 +147,12 @@ void LiveLadderBuilder::update(LadderLiveState& state, const sim::Simulation& si
     } else {
         for (Box& box : m_boxes)
             if (readValues(*unit, box))
-                state.annotations[box.key] = textOf(*unit, box);
+                state.annotations[box.key] = textOf(box);
     }
     state.forcedElements.clear();
-    const auto& code = unit->image().code;
-    for (const Box& box : m_boxes)
-        for (std::size_t index : box.instructions)
-            if (unit->forces().count(code[index].operand))
-                state.forcedElements.insert(box.key);
+    for (const auto& [address, value] : unit->forces())
+        if (auto boxes = m_boxesOf.find(address); boxes != m_boxesOf.end())
+            state.forcedElements.insert(boxes->second.begin(), boxes->second.end());
     state.forced.clear();
     for (const auto& [address, value] : unit->forces()) {
         const QString text = QString::fromStdString(lang::toString(address));

@@ -3,7 +3,11 @@
 
 #include "LivePower.h"
 #include "ladder/LadderLiveState.h"
+#include "sim/UnitMemory.h"
 
+#include <QString>
+
+#include <map>
 #include <set>
 #include <vector>
 
@@ -29,19 +33,34 @@ public:
     void reset();
 
 private:
+    // Where one value of a box is read: resolved once per rebuild to the
+    // unit's memory, so an update reads it without looking the address up.
+    struct Source {
+        enum class Kind : std::uint8_t { Word, Bit, Step, Timer } kind = Kind::Word;
+        sim::WordRef word; // Word; Timer: its preset's register (None: a constant preset)
+        sim::BitRef bit;
+        int sequence = 0;        // Step
+        std::size_t slot = 0;    // Timer
+        std::int64_t preset = 0; // Timer with a constant preset, in ms
+    };
     struct Box {
         std::pair<std::uint32_t, std::uint16_t> key;
         std::vector<std::size_t> instructions; // the box's timer or operands, in code order
+        std::vector<Source> sources;           // one per instruction
         std::vector<std::int64_t> values;      // what the text shows now
+        // An operand box's text, "R0.5=" for each operand once, by its value's index.
+        std::vector<std::pair<std::size_t, QString>> labels;
     };
     void rebuild(LadderLiveState& state, const sim::UnitEngine& unit);
     // Reads the box's values again; whether any changed.
     bool readValues(const sim::UnitEngine& unit, Box& box) const;
-    QString textOf(const sim::UnitEngine& unit, const Box& box) const;
+    static QString textOf(const Box& box);
 
     const sim::UnitEngine* m_unit = nullptr;
     std::size_t m_instructions = 0; // in the code the boxes were found in
     std::vector<Box> m_boxes;
+    // The boxes each operand appears in, to mark the forced ones.
+    std::map<lang::Address, std::vector<std::pair<std::uint32_t, std::uint16_t>>> m_boxesOf;
     render::LivePower m_power;
 };
 
