@@ -36,6 +36,10 @@ LadderView::LadderView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(s
     // Items paint opaque backgrounds and restore the painter themselves.
     setOptimizationFlags(QGraphicsView::DontSavePainterState);
     setViewportUpdateMode(QGraphicsView::MinimalViewportUpdate);
+    // The background brush fills the whole viewport in drawBackground; a widget
+    // fill of its own before it would write every pixel twice a frame.
+    viewport()->setAutoFillBackground(false);
+    viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
     m_glide.setDuration(kGlideMs);
     m_glide.setEasingCurve(QEasingCurve::OutCubic);
