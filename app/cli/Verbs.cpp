@@ -71,7 +71,7 @@ int runFormat(const QString& path, const QStringList& libraryFiles, Streams stre
 
 compiler::CompileResult compiled(const LoadedProject& loaded,
                                  const compiler::CheckOptions& options) {
-    return blocks::compileProject(loaded.project, loaded.diagnostics, options);
+    return blocks::compileProject(loaded.project, loaded.diagnostics, options, loaded.text);
 }
 
 } // namespace rs::cli

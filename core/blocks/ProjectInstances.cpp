@@ -138,13 +138,14 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics,
-                                       const compiler::CheckOptions& options) {
+                                       const compiler::CheckOptions& options,
+                                       std::string_view readFrom) {
     if (lang::errorCount(readDiagnostics) > 0) {
         compiler::CompileResult failed;
         failed.diagnostics = readDiagnostics;
         return failed;
     }
-    compiler::CompileResult result = compiler::compile(project, options);
+    compiler::CompileResult result = compiler::compile(project, options, readFrom);
     result.diagnostics.insert(result.diagnostics.begin(), readDiagnostics.begin(),
                               readDiagnostics.end());
     lang::sortByPlace(result.diagnostics);

@@ -69,6 +69,7 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 // compiles to the same image.
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics,
-                                       const compiler::CheckOptions& options = {});
+                                       const compiler::CheckOptions& options = {},
+                                       std::string_view readFrom = {});
 
 } // namespace rs::blocks

@@ -16,7 +16,8 @@
 
 namespace rs::compiler {
 
-CompileResult compile(const project::Project& project, const CheckOptions& options) {
+CompileResult compile(const project::Project& project, const CheckOptions& options,
+                      std::string_view readFrom) {
     CompileResult result;
     UnitSetups units = collectUnits(project.program, result.diagnostics);
     collectExports(project, units, result.diagnostics);
@@ -33,8 +34,12 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     // The code is generated from the canonical text read back, so the line
     // and column each instruction keeps are places in that text: formatting
     // cannot move them, and they are places in the source an image includes.
-    const project::ProjectReadResult reread = project::readProject(canonical);
-    const project::Project& source = reread.ok() ? reread.project : project;
+    // A project read from its canonical text has those places already: a file
+    // saved by Rungsmith is not parsed twice.
+    const bool canonicalAlready = !readFrom.empty() && readFrom == canonical;
+    const project::ProjectReadResult reread =
+        canonicalAlready ? project::ProjectReadResult{} : project::readProject(canonical);
+    const project::Project& source = canonicalAlready || !reread.ok() ? project : reread.project;
     lang::Diagnostics again; // the same as above: the checks passed
     UnitSetups sourceUnits = collectUnits(source.program, again);
     collectExports(source, sourceUnits, again);

@@ -23,8 +23,11 @@ struct CompileResult {
 
 // Checks the project against everything the manuals state and, when nothing
 // is an error, generates every unit's image. The same project always gives the
-// same images.
-CompileResult compile(const project::Project& project, const CheckOptions& options = {});
+// same images. `readFrom`: the text the project was read from, when the
+// caller has it; when that is already the canonical text, the project's
+// places are the canonical ones and it is not read again.
+CompileResult compile(const project::Project& project, const CheckOptions& options = {},
+                      std::string_view readFrom = {});
 
 // Reads, resolves and compiles project text; syntax errors and check results together.
 CompileResult compileText(std::string_view text, const CheckOptions& options = {});

@@ -205,18 +205,34 @@ std::string printDeclaration(const Declaration& declaration) {
     return std::visit(DeclarationPrinter{}, declaration.body);
 }
 
-std::string print(const Document& document) {
+namespace {
+
+// `declarations` of unit i, or its own when null.
+std::string printDocument(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
+                          const std::vector<std::vector<Line>>* declarations) {
     std::string out;
-    printLines(out, document.preamble);
-    for (const auto& unit : document.units) {
+    printLines(out, preamble);
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        const UnitProgram& unit = units[i];
         std::visit(LinePrinter{out, unit.header.comment}, unit.header.body);
-        printLines(out, unit.declarations);
+        printLines(out, declarations ? (*declarations)[i] : unit.declarations);
         for (const auto& step : unit.steps) {
             appendWithComment(out, toString(step.address), step.comment);
             printLines(out, step.lines);
         }
     }
     return out;
+}
+
+} // namespace
+
+std::string print(const Document& document) {
+    return printDocument(document.preamble, document.units, nullptr);
+}
+
+std::string print(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
+                  const std::vector<std::vector<Line>>& declarations) {
+    return printDocument(preamble, units, &declarations);
 }
 
 } // namespace rs::lang

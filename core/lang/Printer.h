@@ -4,6 +4,7 @@
 #include "Ast.h"
 
 #include <string>
+#include <vector>
 
 namespace rs::lang {
 
@@ -14,6 +15,10 @@ inline constexpr int kCommentColumn = 32;
 // statement per line, comments kept and aligned. Printing a parsed canonical
 // text gives the same text back.
 std::string print(const Document& document);
+// The same with the preamble and each unit's declarations given apart, for a
+// writer that adds lines to them without copying the units' code.
+std::string print(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
+                  const std::vector<std::vector<Line>>& declarations);
 
 std::string printStatement(const Statement& statement);
 std::string printExpression(const Expr& expr);

@@ -294,8 +294,12 @@ ProjectReadResult readProject(std::string_view text) {
 }
 
 std::string writeProject(const Project& project) {
-    lang::Document document = project.program;
-    auto& preamble = document.preamble;
+    // The records go into copies of the preamble and the units' declarations;
+    // the units' code, nearly all of a large project, is printed where it is.
+    std::vector<Line> preamble = project.program.preamble;
+    std::vector<std::vector<Line>> declarations;
+    for (const auto& unit : project.program.units)
+        declarations.push_back(unit.declarations);
 
     // Project record right after "$name" (or first).
     std::size_t at = 0;
@@ -353,14 +357,17 @@ std::string writeProject(const Project& project) {
             preamble.insert(id + 1, records.begin(), records.end());
             continue;
         }
-        auto unit = std::find_if(document.units.begin(), document.units.end(),
+        const auto& units = project.program.units;
+        auto unit = std::find_if(units.begin(), units.end(),
                                  [&](const auto& u) { return u.station() == station; });
-        if (unit != document.units.end())
-            unit->declarations.insert(unit->declarations.begin(), records.begin(), records.end());
-        else
+        if (unit != units.end()) {
+            auto& own = declarations[static_cast<std::size_t>(unit - units.begin())];
+            own.insert(own.begin(), records.begin(), records.end());
+        } else {
             preamble.insert(preamble.end(), records.begin(), records.end());
+        }
     }
-    return lang::print(document);
+    return lang::print(preamble, project.program.units, declarations);
 }
 
 namespace {
