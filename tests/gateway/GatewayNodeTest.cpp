@@ -275,3 +275,51 @@ TEST(GatewayNode, TheCompilerChecksWhatTheManualStates) {
           "External Comm Block 3 of unit 1 receives nothing"})
         EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
 }
+
+namespace {
+
+// The telegram unit 0, of type `type`, sends in one scan with `inputs` set.
+std::uint32_t telegramOf(const std::string& type, const std::string& block,
+                         const std::vector<const char*>& inputs) {
+    const std::string family = type == "B46" ? "_Double" : type == "ASi" ? "_ASi" : "";
+    const auto result = compiled("! id_pluto" + family +
+                                 ":00=000000000000\n"
+                                 "! type_pluto:00=" +
+                                 type +
+                                 ",is3\n"
+                                 "! pgm_pluto:00\n"
+                                 "S0.0_0\n"
+                                 ";@system " +
+                                 block + " Send=\"M0.1\" Q=\"M0.2\"\nM0.1 = /M0.99\n");
+    EXPECT_EQ(result.errors(), 0) << messages(result.diagnostics);
+    sim::Simulation simulation(result.images);
+    for (const char* input : inputs)
+        simulation.set(address(input), 1);
+    simulation.scan(); // M0.1 comes on
+    simulation.scan();
+    const auto& telegrams = simulation.unit(0)->telegrams();
+    EXPECT_EQ(telegrams.size(), 1u);
+    return telegrams.empty() ? 0 : telegrams.front().data;
+}
+
+} // namespace
+
+// Gateway manual 4.3.3.2: byte 0 the least significant, bit 0 of a byte its lowest.
+TEST(GatewayNode, StandardBlocksReadTheUnitInTheManualsLayouts) {
+    // 101: I20-I27, I30-I37, I40-I47, then the error code.
+    EXPECT_EQ(telegramOf("B46", "ToGateway_B46_I20_I47", {"I0.20", "I0.27", "I0.35", "I0.47"}),
+              0x00802081u);
+    // 104: slaves 4-7, each byte .1-.4 low, the B slave's .1-.4 high.
+    EXPECT_EQ(telegramOf("ASi", "ToGateway_ASi_4_7_NonSafe_In", {"ASi0.4.1", "ASi0.5B.4"}),
+              0x00008001u);
+    // 103: byte 0 undefined, then slaves 1-3.
+    EXPECT_EQ(telegramOf("ASi", "ToGateway_ASi_1_3_NonSafe_In", {"ASi0.1.2", "ASi0.3.1"}),
+              0x01000200u);
+    // 113: I10-I17, then the safety slaves 1-7 from bit 1 of byte 1, 8-15 in byte 2.
+    EXPECT_EQ(telegramOf("ASi", "ToGateway_ASi_1_15_Safe", {"I0.10", "ASi0.1", "ASi0.15"}),
+              0x00800201u);
+    // 102: I1-I3 from bit 1, I10-I13 from bit 4; safety slaves 16-31 in bytes 1-2.
+    EXPECT_EQ(
+        telegramOf("ASi", "ToGateway_ASi_16_31_Safe", {"I0.1", "I0.13", "ASi0.16", "ASi0.31"}),
+        0x00800182u);
+}
