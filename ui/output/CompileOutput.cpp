@@ -77,10 +77,15 @@ void CompileOutput::showResult(const QString& projectName, std::string_view cano
     auto* start = new QTreeWidgetItem(this);
     start->setText(MessageColumn, tr("Compiling %1").arg(projectName));
     const project::TextPlaces places(canonicalText);
+    // Made apart and added at once: a large project's tens of thousands of
+    // rows, one insertion each, would each tell the view.
+    QList<QTreeWidgetItem*> rows;
+    rows.reserve(static_cast<qsizetype>(result.diagnostics.size()));
     for (const auto& diagnostic : result.diagnostics) {
         const bool error = diagnostic.severity == lang::Severity::Error;
         const project::TextPlace place = places.of(diagnostic.line);
-        auto* item = new QTreeWidgetItem(this);
+        auto* item = new QTreeWidgetItem;
+        rows.append(item);
         item->setIcon(PlaceColumn, error ? errorIcon : warningIcon);
         item->setText(PlaceColumn, placeText(place, diagnostic.column));
         item->setToolTip(PlaceColumn, tr("Line %1 of the project file").arg(diagnostic.line));
@@ -94,6 +99,7 @@ void CompileOutput::showResult(const QString& projectName, std::string_view cano
         item->setData(PlaceColumn, kAddressRole,
                       QString::fromStdString(lang::toString(place.address)));
     }
+    addTopLevelItems(rows);
     if (!writtenFile.isEmpty()) {
         auto* written = new QTreeWidgetItem(this);
         written->setText(MessageColumn, tr("Wrote %1").arg(writtenFile));

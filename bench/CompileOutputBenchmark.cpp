@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ProjectGenerator.h"
+
+#include "compiler/Compiler.h"
+#include "output/CompileOutput.h"
+#include "project/ProjectFile.h"
+#include "shell/MainWindow.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+
+// What the IDE's Build > Compile adds to the compiler's own time on a large
+// project (issue 23): the Output dock showing the result of the generated
+// plant (32 units x 2,000 statements), tens of thousands of warnings.
+namespace {
+
+struct Compiled {
+    std::string text;
+    rs::compiler::CompileResult result;
+};
+
+const Compiled& plant() {
+    static const Compiled compiled = [] {
+        Compiled c;
+        c.text = rs::bench::generateProject(rs::bench::GeneratorOptions{});
+        const auto read = rs::project::readProject(c.text);
+        c.result = rs::compiler::compile(read.project, {}, c.text);
+        return c;
+    }();
+    return compiled;
+}
+
+void BM_ShowCompileResult(benchmark::State& state) {
+    const Compiled& c = plant();
+    rs::ui::CompileOutput output;
+    output.resize(1200, 300);
+    output.show();
+    for (auto _ : state) {
+        output.showResult(QStringLiteral("plant"), c.text, c.result, QString());
+        QApplication::processEvents(); // the view lays the rows out and paints
+    }
+    state.counters["diagnostics"] = static_cast<double>(c.result.diagnostics.size());
+}
+BENCHMARK(BM_ShowCompileResult)->Unit(benchmark::kMillisecond);
+
+// Build > Compile in the window, from the action to the result shown: the
+// compile on its worker, the image written beside the project, the Output.
+void BM_CompileInTheWindow(benchmark::State& state) {
+    QTemporaryDir directory;
+    const QString path = directory.filePath(QStringLiteral("plant.sps"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        state.SkipWithError("cannot write the project");
+        return;
+    }
+    file.write(QByteArray::fromStdString(plant().text));
+    file.close();
+    rs::ui::MainWindow window;
+    if (!window.loadFile(path).isEmpty()) {
+        state.SkipWithError("cannot open the project");
+        return;
+    }
+    window.show();
+    QAction* compile = window.findChild<QAction*>(QStringLiteral("compileAction"));
+    for (auto _ : state) {
+        compile->trigger();
+        while (window.isCompiling())
+            QApplication::processEvents(QEventLoop::WaitForMoreEvents, 5);
+    }
+}
+BENCHMARK(BM_CompileInTheWindow)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
