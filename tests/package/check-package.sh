@@ -130,7 +130,11 @@ grep -q "0 Error(s) detected Result=OK" <<<"$check_output" || fail "check printe
     fail "rungsmith-cli compile on the bundled example"
 # The standard libraries are found from the program's own place, wherever
 # the package is unpacked.
-env -u LD_LIBRARY_PATH "$cli" blocks list | grep -q "^Rungsmith_Basics ResetLatch(" ||
+# (Read whole first: grep -q stops at the first match, and the list, long
+# enough to be written still, would die of SIGPIPE under pipefail.)
+blocks_output=$(env -u LD_LIBRARY_PATH "$cli" blocks list) ||
+    fail "rungsmith-cli blocks list failed"
+grep -q "^Rungsmith_Basics ResetLatch(" <<<"$blocks_output" ||
     fail "rungsmith-cli blocks list does not find the standard library"
 [ "$("$cli" --version)" = "rungsmith-cli $version" ] || fail "rungsmith-cli --version: $("$cli" --version)"
 gui_version=$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/rungsmith" --version 2>/dev/null) || true
@@ -169,7 +173,8 @@ for word in --screenshot --page ladder:N text:N io:N variables:N --simulate --th
     grep -qF -- "$word" <<<"$gui_page" || fail "the rungsmith man page lacks '$word'"
 done
 for program in rungsmith-cli rungsmith; do
-    gzip -dc "$share/man/man1/$program.1.gz" | grep -q "^\.TH .*\"$program $version\"" ||
+    page=$(gzip -dc "$share/man/man1/$program.1.gz")
+    grep -q "^\.TH .*\"$program $version\"" <<<"$page" ||
         fail "the $program man page does not carry the version $version"
 done
 
