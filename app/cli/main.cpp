@@ -4,6 +4,7 @@
 #include "LadderVerbs.h"
 #include "MergeVerb.h"
 #include "ProtectVerb.h"
+#include "ProveVerb.h"
 #include "ReviewVerbs.h"
 #include "RungsmithBuildVersion.h"
 #include "ServeVerb.h"
@@ -115,6 +116,11 @@ const rs::cli::Verb kVerbs[] = {
      "                                 password protect the project (the manual's 4.1): it\n"
      "                                 reads freely, and writes only with the password",
      rs::cli::runProtect},
+    {"prove",
+     "prove FILE.sps PROPS.prop [--cex DIR] [--depth N]\n"
+     "                                 prove each property for every input sequence, or write\n"
+     "                                 the one that breaks it as a scenario (default folder .)",
+     rs::cli::runProve},
     {"serve",
      "serve FILE.sps [--modbus HOST:PORT] [--scenario SCN.scn] [--speed FACTOR]\n"
      "                                 simulate in real time and serve the project's Ethernet\n"
@@ -214,6 +220,13 @@ int run(int argc, char* argv[]) {
     parser.addOption({QStringLiteral("speed"),
                       QStringLiteral("serve: run the simulation FACTOR times real time."),
                       QStringLiteral("FACTOR")});
+    parser.addOption({QStringLiteral("cex"),
+                      QStringLiteral("prove: the folder for counterexamples and witnesses, as "
+                                     "scenarios (default the current folder)."),
+                      QStringLiteral("DIR")});
+    parser.addOption({QStringLiteral("depth"),
+                      QStringLiteral("prove: how many scans to search at most (default 200)."),
+                      QStringLiteral("N")});
     parser.addOption({QStringLiteral("no-io-warnings"),
                       QStringLiteral("Do not warn about inputs and outputs used without an I/O "
                                      "declaration.")});
