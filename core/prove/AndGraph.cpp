@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "AndGraph.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace rs::prove {
@@ -14,6 +15,16 @@ Lit AndGraph::variable() {
     return (nodes() - 1) * 2;
 }
 
+namespace {
+
+std::size_t slotOf(Lit a, Lit b, std::size_t mask) {
+    std::uint64_t key = (std::uint64_t{a} << 32) | b;
+    key *= 0x9E3779B97F4A7C15ull; // Fibonacci hashing: the high bits mix every input bit
+    return static_cast<std::size_t>(key >> 32) & mask;
+}
+
+} // namespace
+
 Lit AndGraph::conj(Lit a, Lit b) {
     if (a > b)
         std::swap(a, b);
@@ -21,11 +32,32 @@ Lit AndGraph::conj(Lit a, Lit b) {
         return kFalse;
     if (a == kTrue || a == b)
         return b;
-    const std::uint64_t key = (std::uint64_t{a} << 32) | b;
-    const auto [at, added] = m_gates.try_emplace(key, nodes());
-    if (added)
-        m_fanin.push_back({a, b});
-    return at->second * 2;
+    const std::size_t mask = m_table.size() - 1;
+    std::size_t slot = slotOf(a, b, mask);
+    while (const std::uint32_t node = m_table[slot]) {
+        if (m_fanin[node].left == a && m_fanin[node].right == b)
+            return node * 2;
+        slot = (slot + 1) & mask;
+    }
+    const std::uint32_t node = nodes();
+    m_fanin.push_back({a, b});
+    m_table[slot] = node;
+    if (++m_gates * 2 > m_table.size())
+        grow();
+    return node * 2;
+}
+
+void AndGraph::grow() {
+    std::vector<std::uint32_t> table(m_table.size() * 2, 0);
+    const std::size_t mask = table.size() - 1;
+    for (std::uint32_t node : m_table)
+        if (node) {
+            std::size_t slot = slotOf(m_fanin[node].left, m_fanin[node].right, mask);
+            while (table[slot])
+                slot = (slot + 1) & mask;
+            table[slot] = node;
+        }
+    m_table = std::move(table);
 }
 
 Lit AndGraph::exclusive(Lit a, Lit b) {
@@ -58,6 +90,36 @@ void AndGraph::evaluate(std::vector<std::uint64_t>& values, std::uint32_t from) 
     for (std::uint32_t node = from; node < nodes(); ++node)
         if (m_fanin[node].left != 0)
             values[node] = value(values, m_fanin[node].left) & value(values, m_fanin[node].right);
+}
+
+void AndGraph::evaluate(std::vector<std::uint64_t>& values,
+                        const std::vector<std::uint32_t>& gates) const {
+    values.resize(m_fanin.size());
+    values[0] = 0;
+    for (std::uint32_t node : gates)
+        values[node] = value(values, m_fanin[node].left) & value(values, m_fanin[node].right);
+}
+
+std::vector<std::uint32_t> AndGraph::gatesOf(const std::vector<Lit>& roots) const {
+    std::vector<bool> seen(m_fanin.size(), false);
+    std::vector<std::uint32_t> stack;
+    for (Lit root : roots)
+        stack.push_back(nodeOf(root));
+    std::vector<std::uint32_t> gates;
+    while (!stack.empty()) {
+        const std::uint32_t node = stack.back();
+        stack.pop_back();
+        if (node == 0 || seen[node])
+            continue;
+        seen[node] = true;
+        if (m_fanin[node].left == 0)
+            continue;
+        gates.push_back(node);
+        stack.push_back(nodeOf(m_fanin[node].left));
+        stack.push_back(nodeOf(m_fanin[node].right));
+    }
+    std::sort(gates.begin(), gates.end());
+    return gates;
 }
 
 } // namespace rs::prove

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 // An and-inverter graph: the prover's circuits, built once per property set
@@ -49,6 +48,11 @@ public:
     // 64 evaluations at once: `values` holds a word per node, variables set
     // by the caller; every gate from `from` on is computed.
     void evaluate(std::vector<std::uint64_t>& values, std::uint32_t from = 1) const;
+    // Only these gates, in ascending order (a gate's fanins come before it).
+    void evaluate(std::vector<std::uint64_t>& values,
+                  const std::vector<std::uint32_t>& gates) const;
+    // The gates the literals depend on, in ascending order.
+    std::vector<std::uint32_t> gatesOf(const std::vector<Lit>& roots) const;
     static std::uint64_t value(const std::vector<std::uint64_t>& values, Lit a) {
         return values[nodeOf(a)] ^ (isNegated(a) ? ~std::uint64_t{0} : 0);
     }
@@ -59,8 +63,12 @@ private:
         Lit left;
         Lit right;
     };
+    void grow();
+
     std::vector<Fanin> m_fanin;
-    std::unordered_map<std::uint64_t, std::uint32_t> m_gates;
+    // Gates by their fanins: open addressing, node numbers, 0 for a free slot.
+    std::vector<std::uint32_t> m_table = std::vector<std::uint32_t>(1024, 0);
+    std::uint32_t m_gates = 0;
 };
 
 } // namespace rs::prove

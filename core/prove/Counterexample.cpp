@@ -4,7 +4,7 @@
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
 
-#include <map>
+#include <memory>
 
 namespace rs::prove {
 
@@ -154,6 +154,78 @@ std::string durationText(std::int64_t ms) {
     return std::to_string(ms) + "ms";
 }
 
+// How a scenario names a variable: its declared name where it has one (an
+// input read through an IQ button by the button's name), else its address.
+std::string operandText(const lang::Address& address, const sim::OperandNames& names) {
+    std::string name = names.nameOf(address);
+    if (name.empty() && address.kind == lang::AddressKind::Input) {
+        lang::Address button = address;
+        button.kind = lang::AddressKind::InputOutput;
+        name = names.nameOf(button);
+    }
+    return name.empty() ? lang::toString(address) : name;
+}
+
+// The trace run on the simulator from power on, the property watched by its
+// own reading: whether it breaks the property in the last scan and in no
+// scan before, with every assumption kept.
+struct Replay {
+    std::string problem;                         // empty when it does
+    std::unique_ptr<sim::Simulation> simulation; // as the last scan left it
+};
+
+Replay replay(const std::vector<compiler::UnitImage>& images, const PropertyFile& file,
+              const Property& property, const std::vector<ScanInputs>& trace) {
+    Replay result;
+    result.simulation = std::make_unique<sim::Simulation>(images, file.cycleMs);
+    sim::Simulation& simulation = *result.simulation;
+    Monitor monitor(property, file.cycleMs);
+    for (std::size_t scan = 0; scan < trace.size(); ++scan) {
+        for (const auto& [address, value] : trace[scan])
+            if (simulation.value(address) != value)
+                simulation.set(address, value);
+        simulation.scan();
+        for (const Property& assumption : file.properties)
+            if (assumption.kind == Property::Kind::Assume && !holds(simulation, assumption.first))
+                result.problem = "the simulator breaks an assumption";
+        const bool broken = monitor.breaks(simulation);
+        if (broken && scan + 1 < trace.size())
+            result.problem = "the simulator breaks the property before the last scan";
+        if (!broken && scan + 1 == trace.size())
+            result.problem = "the simulator does not break the property in the last scan";
+        if (!result.problem.empty())
+            return result;
+    }
+    return result;
+}
+
+// Fewer input changes, the same violation: each change the violation does
+// without is taken back, so that the scenario shows what matters.
+std::vector<ScanInputs> simplified(const std::vector<compiler::UnitImage>& images,
+                                   const PropertyFile& file, const Property& property,
+                                   std::vector<ScanInputs> trace) {
+    constexpr int kMaxReplays = 2000;
+    int replays = 0;
+    const sim::Simulation powerOn(images, file.cycleMs);
+    for (std::size_t scan = 0; scan < trace.size(); ++scan)
+        for (std::size_t i = 0; i < trace[scan].size(); ++i) {
+            const auto& [address, value] = trace[scan][i];
+            const std::int64_t before =
+                scan == 0 ? powerOn.value(address) : trace[scan - 1][i].second;
+            if (value == before || ++replays > kMaxReplays)
+                continue;
+            std::vector<ScanInputs> candidate = trace;
+            for (std::size_t later = scan; later < trace.size(); ++later) {
+                if (later > scan && candidate[later][i].second != value)
+                    break; // the input changes again on its own
+                candidate[later][i].second = before;
+            }
+            if (replay(images, file, property, candidate).problem.empty())
+                trace = std::move(candidate);
+        }
+    return trace;
+}
+
 } // namespace
 
 CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage>& images,
@@ -163,60 +235,36 @@ CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage
     CounterexampleScenario out;
     const Property& property = *verdict.property;
     const bool witness = property.kind == Property::Kind::Cover;
-    // The scans' inputs as scenario lines, and the simulator run along.
-    sim::Simulation simulation(images, file.cycleMs);
-    Monitor monitor(property, file.cycleMs);
-    std::vector<const Property*> assumptions;
-    for (const Property& p : file.properties)
-        if (p.kind == Property::Kind::Assume)
-            assumptions.push_back(&p);
+    Replay found = replay(images, file, property, verdict.inputs);
+    if (!found.problem.empty()) {
+        out.problem = found.problem;
+        return out;
+    }
+    const std::vector<ScanInputs> trace = simplified(images, file, property, verdict.inputs);
+    found = replay(images, file, property, trace);
+    // The scans' inputs as scenario lines: what changes, then how many scans.
     std::string body;
-    std::map<lang::Address, std::int64_t> set;
     int pendingScans = 0;
-    auto flushScans = [&] {
-        if (pendingScans > 0)
-            body += "scans " + std::to_string(pendingScans) + "\n";
-        pendingScans = 0;
-    };
-    bool brokeEarly = false;
-    bool assumed = true;
-    for (std::size_t scan = 0; scan < verdict.inputs.size(); ++scan) {
+    const sim::Simulation powerOn(images, file.cycleMs);
+    for (std::size_t scan = 0; scan < trace.size(); ++scan) {
         std::string lines;
-        for (const auto& [address, value] : verdict.inputs[scan]) {
+        for (std::size_t i = 0; i < trace[scan].size(); ++i) {
+            const auto& [address, value] = trace[scan][i];
             const std::int64_t before =
-                set.count(address) ? set[address] : simulation.value(address);
-            if (value != before) {
-                lines += "set " + lang::toString(address) + " " + std::to_string(value) + "\n";
-                simulation.set(address, value);
-            }
-            set[address] = value;
+                scan == 0 ? powerOn.value(address) : trace[scan - 1][i].second;
+            if (value != before)
+                lines += "set " + operandText(address, names) + " " + std::to_string(value) + "\n";
         }
-        if (!lines.empty()) {
-            flushScans();
-            body += lines;
+        if (!lines.empty() && pendingScans > 0) {
+            body += "scans " + std::to_string(pendingScans) + "\n";
+            pendingScans = 0;
         }
+        body += lines;
         ++pendingScans;
-        simulation.scan();
-        for (const Property* assumption : assumptions)
-            assumed = assumed && holds(simulation, assumption->first);
-        const bool broken = monitor.breaks(simulation);
-        if (broken && scan + 1 < verdict.inputs.size())
-            brokeEarly = true;
-        if (scan + 1 == verdict.inputs.size() && !broken) {
-            out.problem = "the simulator does not break the property in the last scan";
-            return out;
-        }
     }
-    flushScans();
-    if (brokeEarly) {
-        out.problem = "the simulator breaks the property before the last scan";
-        return out;
-    }
-    if (!assumed) {
-        out.problem = "the simulator breaks an assumption";
-        return out;
-    }
+    body += "scans " + std::to_string(pendingScans) + "\n";
     // The last line: what the property wanted of the last scan.
+    const sim::Simulation& simulation = *found.simulation;
     const Condition& wantedOf = property.kind == Property::Kind::Implies ||
                                         property.kind == Property::Kind::Within ||
                                         property.kind == Property::Kind::Next
@@ -225,24 +273,26 @@ CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage
     Shown shown = explain(simulation, wantedOf, property.kind != Property::Kind::Never);
     if (witness) // what the witness reached: the expect holds
         shown.value = simulation.value(shown.operand);
+    const std::size_t scans = trace.size();
     std::string text = "; " + std::string(witness ? "witness for " : "counterexample to ") +
                        propertyFileName + ":" + std::to_string(property.line) + ": " +
                        property.text + "\n";
-    text += "; found by rungsmith-cli prove: " + std::to_string(verdict.inputs.size()) +
-            " scans from power on; " + (witness ? "the last line holds" : "the last line fails") +
-            "\n";
+    text += "; found by rungsmith-cli prove: " + std::to_string(scans) +
+            (scans == 1 ? " scan" : " scans") + " from power on; " +
+            (witness ? "the last line holds" : "the last line fails") + "\n";
     if (file.cycleMs != 10)
         text += "cycle " + durationText(file.cycleMs) + "\n";
     text += body;
-    text += "expect " + lang::toString(shown.operand) + " " + std::to_string(shown.value) + "\n";
+    text +=
+        "expect " + operandText(shown.operand, names) + " " + std::to_string(shown.value) + "\n";
     // Run it as `rungsmith-cli test` would.
     const sim::Scenario scenario = sim::parseScenario(text, names);
     if (!scenario.diagnostics.empty()) {
         out.problem = "the scenario does not read: " + scenario.diagnostics.front().message;
         return out;
     }
-    sim::Simulation replay(images);
-    const sim::ScenarioReport report = sim::runScenario("cex.scn", scenario, replay);
+    sim::Simulation run(images);
+    const sim::ScenarioReport report = sim::runScenario("cex.scn", scenario, run);
     int lines = 0;
     for (char c : text)
         lines += c == '\n';

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <random>
-#include <set>
 
 namespace rs::prove {
 
@@ -166,48 +165,79 @@ std::vector<bool> coneOfInfluence(const ScanModel& model, const std::vector<Lit>
     return cone;
 }
 
-// Whether every state bit a literal reads is in the cone (inputs it must not read).
-bool withinCone(const ScanModel& model, Lit literal, const std::vector<bool>& cone,
-                const std::vector<int>& stateOf) {
-    const AndGraph& g = model.graph();
-    std::vector<std::uint32_t> stack{nodeOf(literal)};
-    std::set<std::uint32_t> seen;
-    while (!stack.empty()) {
-        const std::uint32_t node = stack.back();
-        stack.pop_back();
-        if (node == 0 || !seen.insert(node).second)
-            continue;
-        if (g.isVariable(node)) {
-            const int state = stateOf[node];
-            if (state < 0 || !cone[static_cast<std::size_t>(state)])
-                return false;
-            continue;
-        }
-        stack.push_back(nodeOf(g.left(node)));
-        stack.push_back(nodeOf(g.right(node)));
+// Whether every state bit a literal reads is in the cone (inputs it must
+// not read): a walk that marks what it saw with a number of its own.
+class ConeCheck {
+public:
+    explicit ConeCheck(const ScanModel& model)
+        : m_model(model), m_stateOf(model.graph().nodes(), -1), m_seen(model.graph().nodes(), 0) {
+        for (std::size_t i = 0; i < model.state().size(); ++i)
+            m_stateOf[nodeOf(model.state()[i].current)] = static_cast<int>(i);
     }
-    return true;
-}
 
-// Drops the candidates that some simulated run breaks: random inputs that
-// mostly hold their value, 64 runs at once, from power on; a run that breaks
-// an assumption stops counting.
-std::vector<Lit> filterBySimulation(const ScanModel& model, Lit assumption,
-                                    std::vector<Lit> candidates, int scans) {
+    int stateOf(std::uint32_t node) const { return m_stateOf[node]; }
+
+    bool within(Lit literal, const std::vector<bool>& cone) {
+        const AndGraph& g = m_model.graph();
+        ++m_walk;
+        m_stack.assign(1, nodeOf(literal));
+        while (!m_stack.empty()) {
+            const std::uint32_t node = m_stack.back();
+            m_stack.pop_back();
+            if (node == 0 || m_seen[node] == m_walk)
+                continue;
+            m_seen[node] = m_walk;
+            if (g.isVariable(node)) {
+                const int state = m_stateOf[node];
+                if (state < 0 || !cone[static_cast<std::size_t>(state)])
+                    return false;
+                continue;
+            }
+            m_stack.push_back(nodeOf(g.left(node)));
+            m_stack.push_back(nodeOf(g.right(node)));
+        }
+        return true;
+    }
+
+private:
+    const ScanModel& m_model;
+    std::vector<int> m_stateOf;
+    std::vector<std::uint32_t> m_seen;
+    std::vector<std::uint32_t> m_stack;
+    std::uint32_t m_walk = 0;
+};
+
+// The candidates that no simulated run breaks: random inputs that mostly
+// hold their value, 64 runs at once, from power on; a run that breaks an
+// assumption stops counting. Only the gates the candidates and the state in
+// `cone` need are computed.
+std::vector<bool> survivesSimulation(const ScanModel& model, Lit assumption,
+                                     const std::vector<Lit>& candidates,
+                                     const std::vector<bool>& cone, int scans) {
     const AndGraph& g = model.graph();
     std::vector<bool> isState(g.nodes(), false);
-    for (const StateBit& bit : model.state())
-        isState[nodeOf(bit.current)] = true;
+    std::vector<Lit> roots = candidates;
+    roots.push_back(assumption);
+    std::vector<std::size_t> carried; // state bits in the cone
+    for (std::size_t i = 0; i < model.state().size(); ++i) {
+        isState[nodeOf(model.state()[i].current)] = true;
+        if (cone[i]) {
+            carried.push_back(i);
+            roots.push_back(model.state()[i].next);
+        }
+    }
+    const std::vector<std::uint32_t> gates = g.gatesOf(roots);
     std::vector<std::uint32_t> inputNodes;
     for (std::uint32_t node = 1; node < g.nodes(); ++node)
         if (g.isVariable(node) && !isState[node])
             inputNodes.push_back(node);
+    std::vector<bool> survives(candidates.size(), true);
     std::mt19937_64 random(20261203);
     std::vector<std::uint64_t> values(g.nodes(), 0);
-    for (int run = 0; run < 4 && !candidates.empty(); ++run) {
+    for (int run = 0; run < 4; ++run) {
         std::vector<std::uint64_t> state;
-        for (const StateBit& bit : model.state())
-            state.push_back(bit.initial ? ~std::uint64_t{0} : 0);
+        for (std::size_t i : carried)
+            state.push_back(model.state()[i].initial ? ~std::uint64_t{0} : 0);
         std::vector<std::uint64_t> inputs(inputNodes.size(), 0);
         std::uint64_t alive = ~std::uint64_t{0};
         for (int scan = 0; scan < scans && alive; ++scan) {
@@ -219,16 +249,18 @@ std::vector<Lit> filterBySimulation(const ScanModel& model, Lit assumption,
                 inputs[i] ^= flip;
                 values[inputNodes[i]] = inputs[i];
             }
-            for (std::size_t i = 0; i < state.size(); ++i)
-                values[nodeOf(model.state()[i].current)] = state[i];
-            g.evaluate(values);
-            std::erase_if(candidates, [&](Lit c) { return ~AndGraph::value(values, c) & alive; });
+            for (std::size_t j = 0; j < carried.size(); ++j)
+                values[nodeOf(model.state()[carried[j]].current)] = state[j];
+            g.evaluate(values, gates);
+            for (std::size_t c = 0; c < candidates.size(); ++c)
+                if (survives[c] && (~AndGraph::value(values, candidates[c]) & alive))
+                    survives[c] = false;
             alive &= AndGraph::value(values, assumption);
-            for (std::size_t i = 0; i < state.size(); ++i)
-                state[i] = AndGraph::value(values, model.state()[i].next);
+            for (std::size_t j = 0; j < carried.size(); ++j)
+                state[j] = AndGraph::value(values, model.state()[carried[j]].next);
         }
     }
-    return candidates;
+    return survives;
 }
 
 class Deadline : public CaDiCaL::Terminator {
@@ -372,42 +404,51 @@ std::vector<Verdict> proveProperties(const std::vector<compiler::UnitImage>& ima
     for (const Property& property : file.properties)
         if (property.kind != Property::Kind::Assume)
             circuits.push_back(buildCircuit(model, property));
-    // Candidates per property, made before the solvers copy the graph's size.
+    // Candidates per property, all made before the solvers copy the graph's
+    // size: what the compiler knows, the monitor's relations, and for small
+    // cones pairs of bits that imply one another.
+    ConeCheck check(model);
+    std::vector<bool> anyCone(model.state().size(), false);
     std::vector<std::vector<Lit>> candidates;
-    std::vector<int> stateOf(model.graph().nodes(), -1);
-    for (std::size_t i = 0; i < model.state().size(); ++i)
-        stateOf[nodeOf(model.state()[i].current)] = static_cast<int>(i);
     for (const PropertyCircuit& circuit : circuits) {
         const std::vector<bool> cone = coneOfInfluence(model, {circuit.bad, assumption});
+        for (std::size_t i = 0; i < cone.size(); ++i)
+            if (cone[i])
+                anyCone[i] = true;
         std::vector<Lit> list;
         for (Lit invariant : model.structuralInvariants())
-            if (withinCone(model, invariant, cone, stateOf))
+            if (check.within(invariant, cone))
                 list.push_back(invariant);
         for (Lit candidate : circuit.candidates)
-            if (withinCone(model, candidate, cone, stateOf))
+            if (check.within(candidate, cone))
                 list.push_back(candidate);
-        candidates.push_back(std::move(list));
-    }
-    // Pairs of bits in the cone that imply one another, for small cones.
-    for (std::size_t p = 0; p < circuits.size(); ++p) {
-        const std::vector<bool> cone = coneOfInfluence(model, {circuits[p].bad, assumption});
         std::vector<Lit> bits;
         for (const Word& word : model.stateWords())
-            if (word.width() == 1 && cone[static_cast<std::size_t>(stateOf[nodeOf(word.bits[0])])])
+            if (word.width() == 1 &&
+                cone[static_cast<std::size_t>(check.stateOf(nodeOf(word.bits[0])))])
                 bits.push_back(word.bits[0]);
-        if (bits.size() > 48)
-            continue;
-        for (std::size_t i = 0; i < bits.size(); ++i)
-            for (std::size_t j = 0; j < bits.size(); ++j)
-                if (i != j)
+        if (bits.size() <= 48)
+            for (std::size_t i = 0; i < bits.size(); ++i)
+                for (std::size_t j = i + 1; j < bits.size(); ++j)
                     for (Lit x : {bits[i], negate(bits[i])})
                         for (Lit y : {bits[j], negate(bits[j])})
-                            if (i < j || isNegated(x) == isNegated(y))
-                                candidates[p].push_back(model.graph().disj(negate(x), y));
+                            list.push_back(model.graph().disj(negate(x), y));
+        candidates.push_back(std::move(list));
     }
+    // One simulation for every property's candidates.
+    std::vector<Lit> all;
+    for (const auto& list : candidates)
+        all.insert(all.end(), list.begin(), list.end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    const std::vector<bool> survives = survivesSimulation(model, assumption, all, anyCone, 400);
     std::vector<Verdict> verdicts;
     for (std::size_t p = 0; p < circuits.size(); ++p) {
-        std::vector<Lit> kept = filterBySimulation(model, assumption, candidates[p], 400);
+        std::vector<Lit> kept;
+        for (Lit candidate : candidates[p])
+            if (survives[static_cast<std::size_t>(
+                    std::lower_bound(all.begin(), all.end(), candidate) - all.begin())])
+                kept.push_back(candidate);
         Verdict verdict = runEngines(model, circuits[p], assumption, std::move(kept), options);
         if (circuits[p].property->kind == Property::Kind::Cover) {
             if (verdict.status == Verdict::Status::Failed)

@@ -163,7 +163,7 @@ OperandNames::OperandNames(const project::Project& project) {
                     auto it = std::find_if(m_names.begin(), m_names.end(),
                                            [&](const auto& entry) { return entry.first == key; });
                     if (it == m_names.end())
-                        m_names.push_back({key, {name->variable.address, false}});
+                        m_names.push_back({key, {name->variable.address, false, name->name}});
                     else if (!(it->second.address == name->variable.address))
                         it->second.ambiguous = true;
                 }
@@ -195,6 +195,13 @@ bool OperandNames::resolveChannel(std::string_view word, lang::Address& address,
         return false;
     }
     return true;
+}
+
+std::string OperandNames::nameOf(const lang::Address& address) const {
+    for (const auto& [key, entry] : m_names)
+        if (entry.address == address && !entry.ambiguous)
+            return entry.spelling;
+    return {};
 }
 
 bool OperandNames::hasStation(int station) const {

@@ -54,6 +54,9 @@ public:
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
     bool hasStation(int station) const;
+    // The declared name of the variable at `address`, as declared; empty when
+    // it has none or its name is ambiguous.
+    std::string nameOf(const lang::Address& address) const;
     // As resolve(), and OPERAND.ch1 or OPERAND.ch2 for one channel of a safe
     // input slave the AS-i Options page defines: `channel` is 1 or 2, else 0.
     bool resolveChannel(std::string_view word, lang::Address& address, int& channel,
@@ -63,6 +66,7 @@ private:
     struct Entry {
         lang::Address address;
         bool ambiguous = false;
+        std::string spelling; // as declared
     };
     std::vector<std::pair<std::string, Entry>> m_names; // folded name -> address
     std::vector<int> m_stations;

@@ -260,7 +260,9 @@ void UnitEngine::write(const lang::Address& address, std::int64_t value) {
                                            narrow ? 32767 : INT32_MAX));
         return;
     }
-    bitRef(memory, address, true).write(value != 0);
+    // A scenario or the GUI sets an IQ's button, which the program reads,
+    // not its lamp, which the program writes.
+    bitRef(memory, address, address.kind != AddressKind::InputOutput).write(value != 0);
 }
 
 void UnitEngine::scan(std::int64_t timeMs, int cycleMs) {

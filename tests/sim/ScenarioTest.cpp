@@ -171,3 +171,20 @@ TEST(Scenario, AUnitOffTheBusSeesNoOtherAndIsSeenByNone) {
     EXPECT_EQ(unknown.report.diagnostics[0],
               "t.scn:1:12: error: expected the number of one of the project's units, found '7'");
 }
+
+// An illuminated push button: `set` presses the button the program reads,
+// whatever the program does with the lamp.
+TEST(Scenario, SetsAnIqButtonNotItsLamp) {
+    const char* program = "! id_pluto:00=000000000000\n"
+                          "! type_pluto:00=A20,is3\n"
+                          "! IQ0.14=Reset\n"
+                          "! pgm_pluto:00\n"
+                          "S0.0_0\n"
+                          "Q0.2 = Reset\n"
+                          "Q0.14 = /Q0.2\n";
+    const auto result = run("set Reset 1\nscans 1\nexpect Q0.2 1\nexpect Q0.14 0\n"
+                            "set IQ0.14 0\nscans 2\nexpect Q0.2 0\nexpect Q0.14 1\n",
+                            program);
+    EXPECT_EQ(result.report.failed, 0) << result.report.failures.front();
+    EXPECT_EQ(result.report.passed, 4);
+}
