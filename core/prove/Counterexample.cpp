@@ -182,7 +182,7 @@ Replay replay(const std::vector<compiler::UnitImage>& images, const PropertyFile
     Monitor monitor(property, file.cycleMs);
     for (std::size_t scan = 0; scan < trace.size(); ++scan) {
         for (const auto& [address, value] : trace[scan])
-            if (simulation.value(address) != value)
+            if (address.valid() && simulation.value(address) != value)
                 simulation.set(address, value);
         simulation.scan();
         for (const Property& assumption : file.properties)
@@ -210,6 +210,8 @@ std::vector<ScanInputs> simplified(const std::vector<compiler::UnitImage>& image
     for (std::size_t scan = 0; scan < trace.size(); ++scan)
         for (std::size_t i = 0; i < trace[scan].size(); ++i) {
             const auto& [address, value] = trace[scan][i];
+            if (!address.valid())
+                continue;
             const std::int64_t before =
                 scan == 0 ? powerOn.value(address) : trace[scan - 1][i].second;
             if (value == before || ++replays > kMaxReplays)
@@ -227,6 +229,11 @@ std::vector<ScanInputs> simplified(const std::vector<compiler::UnitImage>& image
 }
 
 } // namespace
+
+std::string replayProblem(const std::vector<compiler::UnitImage>& images, const PropertyFile& file,
+                          const Verdict& verdict) {
+    return replay(images, file, *verdict.property, verdict.inputs).problem;
+}
 
 CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage>& images,
                                            const PropertyFile& file, const Verdict& verdict,
@@ -250,6 +257,8 @@ CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage
         std::string lines;
         for (std::size_t i = 0; i < trace[scan].size(); ++i) {
             const auto& [address, value] = trace[scan][i];
+            if (!address.valid())
+                continue;
             const std::int64_t before =
                 scan == 0 ? powerOn.value(address) : trace[scan - 1][i].second;
             if (value != before)

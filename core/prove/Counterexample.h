@@ -23,6 +23,12 @@ struct CounterexampleScenario {
     std::string problem; // why not, when not
 };
 
+// Empty when the simulator, given the verdict's inputs from power on, breaks
+// the property (reaches the cover) in the last scan and in no scan before,
+// with every assumption kept; else what it does instead.
+std::string replayProblem(const std::vector<compiler::UnitImage>& images, const PropertyFile& file,
+                          const Verdict& verdict);
+
 CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage>& images,
                                            const PropertyFile& file, const Verdict& verdict,
                                            const sim::OperandNames& names,

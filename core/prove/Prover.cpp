@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Prover.h"
 
+#include "Counterexample.h"
 #include "ScanModel.h"
 #include "Unrolling.h"
 
@@ -263,6 +264,16 @@ std::vector<bool> survivesSimulation(const ScanModel& model, Lit assumption,
     return survives;
 }
 
+// At most three, then how many more.
+std::string listed(const std::vector<std::string>& items) {
+    std::string text;
+    for (std::size_t i = 0; i < items.size() && i < 3; ++i)
+        text += (i ? "; " : "") + items[i];
+    if (items.size() > 3)
+        text += "; and " + std::to_string(items.size() - 3) + " more";
+    return text;
+}
+
 class Deadline : public CaDiCaL::Terminator {
 public:
     Deadline(Clock::time_point end, const std::function<bool()>& cancelled)
@@ -288,7 +299,6 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
     for (std::size_t i = 0; i < candidates.size(); ++i)
         activation.push_back(step.newVariable());
     std::vector<bool> active(candidates.size(), true);
-    const bool exact = model.unsupported().empty();
     auto stopped = [&](int depth) {
         verdict.status = Verdict::Status::Unknown;
         verdict.depth = depth;
@@ -315,8 +325,6 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
             return verdict;
         }
         base.addClause({-badNow});
-        if (!exact)
-            continue;
         // The induction step at depth k, with the candidates that still stand.
         step.addClause({step.literal(assumption, k)});
         while (true) {
@@ -384,10 +392,7 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
     }
     verdict.status = Verdict::Status::Unknown;
     verdict.depth = options.maxDepth;
-    verdict.reason =
-        exact ? "no counterexample within " + std::to_string(options.maxDepth) + " scans"
-              : "the model leaves out " + model.unsupported().front() +
-                    "; no counterexample within " + std::to_string(options.maxDepth) + " scans";
+    verdict.reason = "no counterexample within " + std::to_string(options.maxDepth) + " scans";
     return verdict;
 }
 
@@ -450,6 +455,21 @@ std::vector<Verdict> proveProperties(const std::vector<compiler::UnitImage>& ima
                     std::lower_bound(all.begin(), all.end(), candidate) - all.begin())])
                 kept.push_back(candidate);
         Verdict verdict = runEngines(model, circuits[p], assumption, std::move(kept), options);
+        // What the solver found must be what the simulator does.
+        if (verdict.status == Verdict::Status::Failed) {
+            if (const std::string problem = replayProblem(images, file, verdict);
+                !problem.empty()) {
+                verdict.status = Verdict::Status::Unknown;
+                verdict.reason =
+                    model.abstractions().empty()
+                        ? "internal error: the counterexample of " + std::to_string(verdict.depth) +
+                              " scans does not replay (" + problem + "); please report it"
+                        : "the counterexample of " + std::to_string(verdict.depth) +
+                              " scans needs values the prover leaves free, and the simulator " +
+                              "does not repeat it (" + listed(model.abstractions()) + ")";
+                verdict.inputs.clear();
+            }
+        }
         if (circuits[p].property->kind == Property::Kind::Cover) {
             if (verdict.status == Verdict::Status::Failed)
                 verdict.status = Verdict::Status::Covered;

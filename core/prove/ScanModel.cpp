@@ -229,6 +229,7 @@ bool isWordAddress(AddressKind kind) {
     }
 }
 
+constexpr Cell kChannelFault = cell(Area::SystemRegister, 16); // SR_ASi_Slave_Chanf
 constexpr int kStepNew = 0;
 constexpr int kSysInit = 9;
 constexpr int kFlashMemories[] = {2, 3, 4, 5, 6};
@@ -246,6 +247,7 @@ struct ScanModel::Unit {
     std::map<Cell, Word> previousInput; // input cells as the last scan had them (the bus)
     std::map<Cell, Word> published;     // with a CAN bus cycle time: what the bus holds
     Lit publishes = kTrue;              // whether this scan's end goes onto the bus
+    bool monitoredChannels = false;     // safe AS-i input slaves: SR_ASi_Slave_Chanf is set
 
     struct Edge {
         Lit seen, last;
@@ -320,8 +322,19 @@ private:
     Lit timer(ScanModel::Unit& unit, const compiler::Instruction& in, Lit guard, Lit input);
     void arithmetic(ScanModel::Unit& unit, const compiler::Instruction& in, Lit guard,
                     const Word& a, const Word& b);
-    void unsupported(const ScanModel::Unit& unit, const compiler::Instruction& in,
-                     const std::string& what);
+    void abstracted(const ScanModel::Unit& unit, const compiler::Instruction& in,
+                    const std::string& what);
+    // A value no scenario can set: an input of the model only. A bit for an
+    // address that is no number.
+    Word freeWord(const lang::Address& address) {
+        const WordPlace place = wordPlace(address);
+        const int width = place.kind == WordPlace::Kind::None       ? 1
+                          : place.kind == WordPlace::Kind::Register ? 16
+                                                                    : 32;
+        Word word = w.variables(width);
+        m.m_inputs.push_back({lang::Address{}, word, width == 1});
+        return word;
+    }
 
     ScanModel& m;
     WordBuilder& w;
@@ -345,7 +358,7 @@ Word ScanBuilder::inputWord(ScanModel::Unit& unit, Cell c) {
 Word ScanBuilder::readCell(ScanModel::Unit& unit, Cell c) {
     if (auto at = unit.now.find(c); at != unit.now.end())
         return at->second;
-    if (isInputCell(c))
+    if (isInputCell(c) || (unit.monitoredChannels && c == kChannelFault))
         return inputWord(unit, c);
     if (auto at = unit.current.find(c); at != unit.current.end())
         return at->second;
@@ -369,7 +382,7 @@ Word ScanBuilder::readRemote(int station, Cell c) {
         }
         return at->second;
     }
-    if (isInputCell(c)) {
+    if (isInputCell(c) || (unit->monitoredChannels && c == kChannelFault)) {
         auto [at, added] = unit->previousInput.try_emplace(c);
         if (added) {
             at->second = state(cellWidth(c), powerOnValue(c));
@@ -460,12 +473,12 @@ void ScanBuilder::writeWord(ScanModel::Unit& unit, const lang::Address& a, Lit g
     }
 }
 
-void ScanBuilder::unsupported(const ScanModel::Unit& unit, const compiler::Instruction& in,
-                              const std::string& what) {
+void ScanBuilder::abstracted(const ScanModel::Unit& unit, const compiler::Instruction& in,
+                             const std::string& what) {
     std::string sentence =
         "unit " + std::to_string(unit.station) + " line " + std::to_string(in.line) + ": " + what;
     if (m_reported.insert(sentence).second)
-        m.m_unsupported.push_back(sentence);
+        m.m_abstractions.push_back(sentence);
 }
 
 // The cells a unit's scan can change: they are the state.
@@ -627,10 +640,6 @@ Lit ScanBuilder::timer(ScanModel::Unit& unit, const compiler::Instruction& in, L
 
 void ScanBuilder::arithmetic(ScanModel::Unit& unit, const compiler::Instruction& in, Lit guard,
                              const Word& a, const Word& b) {
-    if (in.aux >= sim::engine::kUnknownArithmetic) {
-        unsupported(unit, in, "an arithmetic instruction the engine does not know");
-        return;
-    }
     const WordPlace place = wordPlace(in.operand);
     const bool wide = place.kind != WordPlace::Kind::Register;
     const sim::engine::Bounds bounds =
@@ -785,10 +794,23 @@ void ScanBuilder::runStep(ScanModel::Unit& unit, std::size_t stepCode, Lit guard
             arithmetic(unit, in, g.conj(guard, power), a, b);
             break;
         case Op::System: {
+            // What a system block computes is left free: each output it
+            // writes may take any value, every scan its step runs. Proofs
+            // stay sound; a counterexample must be one the simulator repeats.
             const compiler::SystemInstruction* system = compiler::findSystemInstruction(in.aux);
-            unsupported(unit, in,
-                        "the system instruction " +
-                            (system ? std::string(system->name) : std::to_string(in.aux)));
+            abstracted(unit, in,
+                       "the outputs of " +
+                           (system ? std::string(system->name) : std::to_string(in.aux)));
+            for (std::uint32_t k = 1; k <= in.slot && i + k < step.first + step.count; ++k) {
+                const compiler::Instruction& argument = unit.image->code[i + k];
+                if (argument.op != Op::Argument || !(argument.aux & compiler::ArgumentWritten) ||
+                    (argument.flags & compiler::ConstantOperand))
+                    continue;
+                if (argument.aux & compiler::ArgumentWord)
+                    writeWord(unit, argument.operand, guard, freeWord(argument.operand));
+                else
+                    writeBit(unit, argument.operand, guard, freeWord({}).bits[0]);
+            }
             power = kTrue;
             break;
         }
@@ -803,8 +825,10 @@ void ScanBuilder::leaveStep(ScanModel::Unit& unit, std::size_t stepCode, Lit gua
     const compiler::StepCode& step = unit.image->steps[stepCode];
     for (std::uint32_t i = step.first; i < step.first + step.count && i < unit.image->code.size();
          ++i)
-        if (unit.image->code[i].op == Op::Coil)
-            writeBit(unit, unit.image->code[i].operand, guard, kFalse);
+        if (const auto& in = unit.image->code[i];
+            in.op == Op::Coil || (in.op == Op::Argument && in.aux == compiler::ArgumentWritten &&
+                                  !(in.flags & compiler::ConstantOperand)))
+            writeBit(unit, in.operand, guard, kFalse);
 }
 
 void ScanBuilder::scan(ScanModel::Unit& unit) {
@@ -919,12 +943,17 @@ ScanModel::ScanModel(const std::vector<compiler::UnitImage>& images, int cycleMs
         auto unit = std::make_unique<Unit>();
         unit->image = &image;
         unit->station = image.station;
-        m_units.push_back(std::move(unit));
+        // A safe input slave's input follows its two channels through the
+        // channel monitoring; the model takes it, and SR_ASi_Slave_Chanf,
+        // as inputs of their own.
         for (const auto& slave : image.asi.slaves)
-            if (project::hasChannels(static_cast<project::AsiSlaveType>(slave.type)) && !slave.b)
-                m_unsupported.push_back(
-                    "unit " + std::to_string(image.station) + ": the AS-i safe input slave " +
-                    std::to_string(slave.number) + ", whose channels the simulator monitors");
+            if (project::hasChannels(static_cast<project::AsiSlaveType>(slave.type)) && !slave.b) {
+                unit->monitoredChannels = true;
+                m_abstractions.push_back("unit " + std::to_string(image.station) +
+                                         ": the channel monitoring of AS-i safe input slave " +
+                                         std::to_string(slave.number));
+            }
+        m_units.push_back(std::move(unit));
     }
     std::sort(m_units.begin(), m_units.end(),
               [](const auto& a, const auto& b) { return a->station < b->station; });

@@ -24,7 +24,8 @@ struct StateBit {
     bool initial; // at power on
 };
 
-// An input of the scan: what a scenario sets to give it its value.
+// An input of the scan: what a scenario sets to give it its value (no
+// address: a value the model leaves free that no scenario sets).
 struct ScanInput {
     lang::Address address;
     Word word; // variables of the graph; a bit is one, a number 16 or 32
@@ -43,9 +44,10 @@ public:
     WordBuilder& words() { return m_words; }
     int cycleMs() const { return m_cycleMs; }
 
-    // What the model leaves out, as sentences ("unit 0 line 12: the system
-    // instruction Ext_Sig"): with any, nothing is called proved.
-    const std::vector<std::string>& unsupported() const { return m_unsupported; }
+    // What the model leaves free instead of computing it, as sentences ("unit
+    // 0 line 12: the outputs of Ext_Sig"): a proof holds whatever values
+    // they take; a counterexample may need values the simulator never gives.
+    const std::vector<std::string>& abstractions() const { return m_abstractions; }
 
     // A variable's value at the end of the scan, as Simulation::value reads
     // it (S<u>.<s>: the active step, -1 without the sequence). Reading an
@@ -94,7 +96,7 @@ private:
     std::vector<std::pair<Word, std::int64_t>> m_timerCounters;
     std::map<Lit, std::size_t> m_stateIndex; // current literal -> index in m_state
     std::vector<ScanInput> m_inputs;
-    std::vector<std::string> m_unsupported;
+    std::vector<std::string> m_abstractions;
     std::vector<Lit> m_invariants;
     Lit m_firstScan = kFalse;
     std::map<int, Word> m_timeOfDay; // period -> time modulo it at the start of the scan

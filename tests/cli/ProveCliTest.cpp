@@ -97,6 +97,28 @@ TEST(ProveCli, UsageAndUnreadableFiles) {
     EXPECT_EQ(runCli({"prove", project, props, "--depth", "many"}).exitCode, 2);
 }
 
+// A system block's outputs are free in the model: a property that does not
+// depend on them is proved; one whose only counterexample needs a gateway's
+// data is unknown, and says why; one the simulator repeats fails.
+TEST(ProveCli, SystemBlocksAreLeftFree) {
+    QTemporaryDir dir;
+    const QString props = writeFile(dir, "gw.prop",
+                                    "always ContactorK1 -> EStopA * EStopB\n"
+                                    "never M0.10\n"
+                                    "always DriveEnable -> GM0.0\n");
+    const auto run = runCli({"prove", QStringLiteral(RUNGSMITH_EXAMPLES "/gateway-line.sps"), props,
+                             "--cex", dir.path()});
+    EXPECT_EQ(run.exitCode, 1);
+    const QStringList lines = run.outText().split('\n');
+    ASSERT_GE(lines.size(), 4);
+    EXPECT_EQ(lines[0], "gw.prop:1: proved");
+    EXPECT_TRUE(lines[1].startsWith("gw.prop:2: failed: counterexample of 1 scans in "));
+    EXPECT_TRUE(lines[2].startsWith("gw.prop:3: unknown: the counterexample of 2 scans needs "
+                                    "values the prover leaves free"));
+    EXPECT_TRUE(lines[2].contains("unit 1 line 58: the outputs of ExtVarBlock"))
+        << lines[2].toStdString();
+}
+
 // The examples prove what their property files say, and the deliberately
 // wrong one fails with a counterexample that replays.
 TEST(ProveCli, TheExamplesAsShipped) {

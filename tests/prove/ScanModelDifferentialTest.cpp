@@ -58,7 +58,7 @@ void compareScans(const std::string& text, unsigned seed, int scans) {
     const rs::compiler::CompileResult compiled = rs::compiler::compileText(text);
     ASSERT_EQ(compiled.errors(), 0) << text << errors(compiled);
     ScanModel model(compiled.images, 10);
-    ASSERT_TRUE(model.unsupported().empty()) << model.unsupported().front();
+    ASSERT_TRUE(model.abstractions().empty()) << model.abstractions().front();
     const std::vector<rs::lang::Address> addresses = observed();
     std::vector<Word> after;
     for (const auto& address : addresses)
