@@ -13,8 +13,9 @@
 
 // How long `prove` takes (docs/performance.md, "Prover"): the examples'
 // property files, and ten invariants of a generated 32-unit plant of 500
-// statements per unit. Each run reports the deepest k, the properties
-// proved and the clauses of the last query.
+// statements per unit. Each run reports the properties proved, the deepest
+// induction, the longest counterexample or witness and the most clauses a
+// property's solvers held.
 
 namespace {
 
@@ -45,16 +46,22 @@ Case load(const std::string& project, const std::string& properties) {
 
 void report(benchmark::State& state, const std::vector<Verdict>& verdicts) {
     int proved = 0;
-    int deepest = 0;
+    int deepestProof = 0;
+    int longestTrace = 0;
     std::int64_t clauses = 0;
     for (const Verdict& verdict : verdicts) {
-        proved += verdict.status == Verdict::Status::Proved;
-        deepest = std::max(deepest, verdict.depth);
+        if (verdict.status == Verdict::Status::Proved) {
+            ++proved;
+            deepestProof = std::max(deepestProof, verdict.depth);
+        } else {
+            longestTrace = std::max(longestTrace, verdict.depth);
+        }
         clauses = std::max(clauses, verdict.clauses);
     }
     state.counters["properties"] = static_cast<double>(verdicts.size());
     state.counters["proved"] = proved;
-    state.counters["k"] = deepest;
+    state.counters["k"] = deepestProof;           // the deepest induction of a proof
+    state.counters["trace_scans"] = longestTrace; // the longest counterexample or witness
     state.counters["clauses"] = static_cast<double>(clauses);
 }
 
