@@ -291,8 +291,11 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
     Verdict verdict;
     verdict.property = circuit.property;
     Deadline deadline(Clock::now() + options.timeLimit, options.cancelled);
-    Unrolling base(model, false);
-    Unrolling step(model, true);
+    std::vector<Lit> roots = candidates;
+    roots.push_back(circuit.bad);
+    roots.push_back(assumption);
+    Unrolling base(model, false, roots);
+    Unrolling step(model, true, roots);
     base.setTerminator(&deadline);
     step.setTerminator(&deadline);
     std::vector<int> activation;

@@ -5,11 +5,38 @@
 
 namespace rs::prove {
 
-Unrolling::Unrolling(const ScanModel& model, bool freeStart)
+Unrolling::Unrolling(const ScanModel& model, bool freeStart, const std::vector<Lit>& roots)
     : m_model(model), m_freeStart(freeStart), m_solver(std::make_unique<CaDiCaL::Solver>()) {
-    m_stateOf.assign(model.graph().nodes(), -1);
+    const AndGraph& graph = model.graph();
+    m_stateOf.assign(graph.nodes(), -1);
     for (std::size_t i = 0; i < model.state().size(); ++i)
-        m_stateOf[nodeOf(model.state()[i].current)] = static_cast<int>(i);
+        m_stateOf[nodeOf(model.state()[i].current)] = static_cast<std::int32_t>(i);
+    m_place.assign(graph.nodes(), -1);
+    if (roots.empty()) {
+        for (std::uint32_t node = 0; node < graph.nodes(); ++node)
+            m_place[node] = static_cast<std::int32_t>(node);
+        m_coneSize = graph.nodes();
+    } else {
+        std::vector<std::uint32_t> stack{0};
+        for (Lit root : roots)
+            stack.push_back(nodeOf(root));
+        while (!stack.empty()) {
+            const std::uint32_t node = stack.back();
+            stack.pop_back();
+            if (m_place[node] >= 0)
+                continue;
+            m_place[node] = static_cast<std::int32_t>(m_coneSize++);
+            if (node == 0)
+                continue;
+            if (graph.isVariable(node)) {
+                if (const int state = m_stateOf[node]; state >= 0)
+                    stack.push_back(nodeOf(model.state()[static_cast<std::size_t>(state)].next));
+                continue;
+            }
+            stack.push_back(nodeOf(graph.left(node)));
+            stack.push_back(nodeOf(graph.right(node)));
+        }
+    }
     m_true = newVariable();
     addClause({m_true});
 }
@@ -34,48 +61,49 @@ int Unrolling::literal(Lit a, int frame) {
     const AndGraph& graph = m_model.graph();
     if (m_frames.size() <= static_cast<std::size_t>(frame))
         m_frames.resize(static_cast<std::size_t>(frame) + 1);
+    auto slot = [&](std::uint32_t node, int f) -> int& {
+        auto& map = m_frames[static_cast<std::size_t>(f)];
+        if (map.empty())
+            map.assign(m_coneSize, 0);
+        return map[static_cast<std::size_t>(m_place[node])];
+    };
     // Depth first without recursion: a node is encoded once its fanins are.
     std::vector<std::pair<std::uint32_t, int>> stack{{nodeOf(a), frame}};
     while (!stack.empty()) {
         const auto [node, f] = stack.back();
-        auto& map = m_frames[static_cast<std::size_t>(f)];
-        if (map.empty())
-            map.assign(graph.nodes(), 0);
-        if (map[node] != 0) {
+        int& variable = slot(node, f);
+        if (variable != 0) {
             stack.pop_back();
             continue;
         }
         if (node == 0) {
-            map[node] = -m_true;
+            variable = -m_true;
             stack.pop_back();
             continue;
         }
         if (graph.isVariable(node)) {
             const int state = m_stateOf[node];
             if (state < 0 || (f == 0 && m_freeStart)) {
-                map[node] = newVariable();
+                variable = newVariable();
             } else if (f == 0) {
-                map[node] =
+                variable =
                     m_model.state()[static_cast<std::size_t>(state)].initial ? m_true : -m_true;
             } else {
                 const Lit next = m_model.state()[static_cast<std::size_t>(state)].next;
-                auto& previous = m_frames[static_cast<std::size_t>(f - 1)];
-                if (previous.empty())
-                    previous.assign(graph.nodes(), 0);
-                const int known = previous[nodeOf(next)];
+                const int known = slot(nodeOf(next), f - 1);
                 if (known == 0) {
                     stack.emplace_back(nodeOf(next), f - 1);
                     continue;
                 }
-                map[node] = isNegated(next) ? -known : known;
+                slot(node, f) = isNegated(next) ? -known : known;
             }
             stack.pop_back();
             continue;
         }
         const Lit left = graph.left(node);
         const Lit right = graph.right(node);
-        const int l = map[nodeOf(left)];
-        const int r = map[nodeOf(right)];
+        const int l = slot(nodeOf(left), f);
+        const int r = slot(nodeOf(right), f);
         if (l == 0 || r == 0) {
             if (l == 0)
                 stack.emplace_back(nodeOf(left), f);
@@ -89,10 +117,10 @@ int Unrolling::literal(Lit a, int frame) {
         addClause({-x, sl});
         addClause({-x, sr});
         addClause({x, -sl, -sr});
-        map[node] = x;
+        slot(node, f) = x;
         stack.pop_back();
     }
-    const int v = m_frames[static_cast<std::size_t>(frame)][nodeOf(a)];
+    const int v = slot(nodeOf(a), frame);
     return isNegated(a) ? -v : v;
 }
 
@@ -108,9 +136,10 @@ bool Unrolling::value(Lit a, int frame) {
     if (nodeOf(a) == 0)
         return a == kTrue;
     if (static_cast<std::size_t>(frame) >= m_frames.size() ||
-        m_frames[static_cast<std::size_t>(frame)].empty())
+        m_frames[static_cast<std::size_t>(frame)].empty() || m_place[nodeOf(a)] < 0)
         return false;
-    const int v = m_frames[static_cast<std::size_t>(frame)][nodeOf(a)];
+    const int v =
+        m_frames[static_cast<std::size_t>(frame)][static_cast<std::size_t>(m_place[nodeOf(a)])];
     if (v == 0)
         return false;
     return (m_solver->val(v) > 0) != isNegated(a);

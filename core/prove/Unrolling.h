@@ -17,8 +17,9 @@ namespace rs::prove {
 class Unrolling {
 public:
     // From power on, or (`freeStart`) from any state at all, as an induction
-    // step starts.
-    Unrolling(const ScanModel& model, bool freeStart);
+    // step starts. Only the cone of `roots` (through any number of scans)
+    // can be asked for; no roots: the whole model.
+    Unrolling(const ScanModel& model, bool freeStart, const std::vector<Lit>& roots = {});
     ~Unrolling();
     Unrolling(const Unrolling&) = delete;
     Unrolling& operator=(const Unrolling&) = delete;
@@ -46,8 +47,13 @@ private:
     const ScanModel& m_model;
     bool m_freeStart;
     std::unique_ptr<CaDiCaL::Solver> m_solver;
-    std::vector<std::vector<int>> m_frames; // node -> solver variable (0 none yet), per frame
-    std::vector<int> m_stateOf;             // node -> index in model.state(), or -1
+    // Per frame, by the node's place in the cone: its solver variable, 0 none
+    // yet. Sized by the cone, not the model, so deep unrollings of a large
+    // project stay small.
+    std::vector<std::vector<int>> m_frames;
+    std::vector<std::int32_t> m_place;   // node -> place in the cone, or -1
+    std::vector<std::int32_t> m_stateOf; // node -> index in model.state(), or -1
+    std::size_t m_coneSize = 0;
     int m_variables = 0;
     int m_true = 0;
     std::int64_t m_clauses = 0;
