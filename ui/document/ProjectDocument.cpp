@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 
+#include <QDir>
 #include <QFileInfo>
 #include <QUuid>
 
@@ -55,6 +56,11 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
     }
     ProjectDocument* document = fromText(QByteArray::fromStdString(file.text), parent);
     document->m_path = QFileInfo(path).absoluteFilePath();
+    if (const QString properties = document->propertiesPath(); QFileInfo::exists(properties)) {
+        const project::FileText read = project::readTextFile(properties);
+        document->m_propertiesError = read.error;
+        document->m_propertiesText = QByteArray::fromStdString(read.text);
+    }
     if (!document->isDamaged()) {
         // Instances written without their statements get them now, as one
         // undoable edit, so the project shows them and saving writes them.
@@ -122,7 +128,27 @@ QString ProjectDocument::displayName() const {
 }
 
 bool ProjectDocument::isModified() const {
-    return m_modifiedWithoutUndo || !m_undoStack.isClean();
+    return m_modifiedWithoutUndo || m_propertiesModified || !m_undoStack.isClean();
+}
+
+void ProjectDocument::setPropertiesText(const QByteArray& text) {
+    if (text == m_propertiesText)
+        return;
+    m_propertiesText = text;
+    m_propertiesModified = true;
+    emit propertiesChanged();
+    emitModification();
+}
+
+QString ProjectDocument::propertiesPathOf(const QString& projectPath) {
+    if (projectPath.isEmpty() || projectPath.startsWith(QLatin1Char(':')))
+        return {};
+    const QFileInfo info(projectPath);
+    return info.dir().filePath(info.completeBaseName() + QStringLiteral(".prop"));
+}
+
+QString ProjectDocument::propertiesPath() const {
+    return propertiesPathOf(m_path);
 }
 
 void ProjectDocument::setModifiedWithoutUndo(bool modified) {
@@ -183,11 +209,20 @@ QString ProjectDocument::saveTo(const QString& path) {
     const QString error = project::writeTextFile(path, view(text));
     if (!error.isEmpty())
         return error;
+    // The properties go with the project: to a new place too, once they have any text.
+    const QString propertiesFile = propertiesPathOf(QFileInfo(path).absoluteFilePath());
+    const bool moved = propertiesFile != propertiesPath();
+    QString propertiesError;
+    const bool wanted = !m_propertiesText.isEmpty() || QFileInfo::exists(propertiesFile);
+    if (wanted && (m_propertiesModified || moved))
+        propertiesError = project::writeTextFile(propertiesFile, view(m_propertiesText));
+    if (propertiesError.isEmpty())
+        m_propertiesModified = false;
     setPath(path);
     m_modifiedWithoutUndo = false;
     m_undoStack.setClean();
     emitModification();
-    return {};
+    return propertiesError;
 }
 
 void ProjectDocument::setPath(const QString& path) {

@@ -85,8 +85,22 @@ public:
 
     // What Save writes: the canonical text, or the damaged text as it is.
     QByteArray fileText() const;
-    // Writes the file atomically; returns the error message, empty on success.
+    // Writes the file atomically, and the properties beside it when they
+    // changed or the project moved; returns the error message, empty on success.
     QString saveTo(const QString& path);
+
+    // The project's properties (docs/ide.md, "Properties"): the text of the
+    // .prop file beside the project with its base name, which
+    // `rungsmith-cli prove` takes too. Read when the project is opened, empty
+    // when there is none; a change marks the project modified and Save
+    // writes it. Not an undo step of the project: the editor undoes its typing.
+    const QByteArray& propertiesText() const { return m_propertiesText; }
+    void setPropertiesText(const QByteArray& text);
+    // Why the properties file could not be read when the project was opened.
+    const QString& propertiesError() const { return m_propertiesError; }
+    // Where the properties are saved: beside the project file; empty without one.
+    QString propertiesPath() const;
+    static QString propertiesPathOf(const QString& projectPath);
     void setPath(const QString& path);
 
     // Identifies the project's autosave file.
@@ -101,6 +115,8 @@ public:
 
 signals:
     void changed();
+    // The properties' text changed (setPropertiesText).
+    void propertiesChanged();
     void modificationChanged(bool modified);
     void pathChanged();
     // An edit was refused for the permission; `reason` says why, for the status bar.
@@ -119,6 +135,9 @@ private:
     bool m_lastModified = false;
     bool m_damaged = false;
     QByteArray m_damagedText;
+    QByteArray m_propertiesText;
+    QString m_propertiesError;
+    bool m_propertiesModified = false;
     project::Permission m_permission = project::Permission::Full;
     project::Keyring m_keys;
     std::optional<lang::Diagnostic> m_tampering;
