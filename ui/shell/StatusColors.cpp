@@ -13,6 +13,14 @@ QColor errorTextColor(const QPalette& palette) {
     return isDark(palette) ? QColor(0xff7b72) : QColor(0xcf222e);
 }
 
+QColor passTextColor(const QPalette& palette) {
+    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 128, 0);
+}
+
+QColor undecidedTextColor(const QPalette& palette) {
+    return isDark(palette) ? QColor(0xe3b341) : QColor(0x9a6700);
+}
+
 void markAsError(QWidget* widget) {
     QPalette palette = widget->palette();
     palette.setColor(QPalette::WindowText, errorTextColor(palette));

@@ -16,10 +16,6 @@ namespace {
 constexpr int kPathRole = Qt::UserRole;
 constexpr int kLineRole = Qt::UserRole + 1;
 
-QColor passColor(const QPalette& palette) {
-    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 128, 0);
-}
-
 } // namespace
 
 ScenarioResultsView::ScenarioResultsView(QWidget* parent)
@@ -54,7 +50,7 @@ void ScenarioResultsView::addResult(const SimulationSession::ScenarioResult& res
     } else {
         run->setText(
             0, tr("%1: %2 passed, %3 failed").arg(file).arg(result.passed).arg(result.failed));
-        run->setForeground(0, result.failed ? errorTextColor(palette()) : passColor(palette()));
+        run->setForeground(0, result.failed ? errorTextColor(palette()) : passTextColor(palette()));
     }
     for (const auto& failure : result.failures) {
         auto* line = new QTreeWidgetItem(run);

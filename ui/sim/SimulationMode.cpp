@@ -56,10 +56,6 @@ lang::Address addressOf(const QString& spelled) {
     return read.shape == lang::AddressWord::Shape::Variable ? read.address : lang::Address{};
 }
 
-QColor okColor(const QPalette& palette) {
-    return isDark(palette) ? QColor(80, 220, 80) : QColor(0, 128, 0);
-}
-
 } // namespace
 
 SimulationMode::SimulationMode(MainWindow* window)
@@ -368,7 +364,7 @@ void SimulationMode::refresh() {
         m_unitCode->setText(unitCodeText(station, static_cast<int>(code)));
         QPalette palette = m_unitCode->palette();
         palette.setColor(QPalette::WindowText,
-                         code == 0 ? okColor(palette) : errorTextColor(palette));
+                         code == 0 ? passTextColor(palette) : errorTextColor(palette));
         m_unitCode->setPalette(palette);
     }
 }
