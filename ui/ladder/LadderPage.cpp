@@ -13,6 +13,7 @@
 #include "document/PermissionNote.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
+#include "lang/Address.h"
 #include "output/SettledCompile.h"
 #include "shell/PageTitle.h"
 #include "shell/UnitCaption.h"
@@ -412,6 +413,23 @@ bool LadderPage::selectElement(std::uint32_t statement, std::uint16_t element) {
                     setCursor(ladder::cursorOn(item->step(), item->index(), e));
                     return true;
                 }
+    return false;
+}
+
+bool LadderPage::selectOperand(const lang::Address& operand) {
+    const auto has = [&operand](const ladder::ElementLayout& e) {
+        const lang::AddressWord word = lang::readAddressWord(e.address.toStdString());
+        return word.shape == lang::AddressWord::Shape::Variable && word.address == operand;
+    };
+    // Why an output is on or off is what the live page explains.
+    for (const bool output : {true, false})
+        for (std::size_t s = 0; s < m_items.size(); ++s)
+            for (NetworkItem* item : m_items[s])
+                for (const auto& e : item->layout().elements)
+                    if ((e.output >= 0) == output && has(e)) {
+                        setCursor(ladder::cursorOn(item->step(), item->index(), e));
+                        return true;
+                    }
     return false;
 }
 

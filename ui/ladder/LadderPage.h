@@ -129,6 +129,9 @@ public:
     void setCursor(const LadderCursor& cursor);
     // Selects the element or output drawn with this number (statement, element).
     bool selectElement(std::uint32_t statement, std::uint16_t element);
+    // Selects the output that writes the operand, else the first element that
+    // reads it; false when no element of the page has it.
+    bool selectOperand(const lang::Address& operand);
     // Selects a whole network of a step of the page, numbered from 1.
     bool selectNetwork(const lang::StepAddress& step, int number);
     // Why the last edit was refused, or what the page has to say.

@@ -285,17 +285,23 @@ void PlutoLexer::styleText(int start, int end) {
         const std::size_t newline = all.find('\n', lineStart);
         const std::size_t lineEnd = newline == std::string_view::npos ? all.size() : newline;
         const std::size_t next = newline == std::string_view::npos ? all.size() : newline + 1;
-        std::size_t styled = 0;
-        for (const Span& span : spansOf(all.substr(lineStart, lineEnd - lineStart))) {
-            if (span.begin > styled)
-                setStyling(static_cast<int>(span.begin - styled), Default);
-            setStyling(static_cast<int>(span.length), span.style);
-            styled = span.begin + span.length;
-        }
-        if (lineStart + styled < next)
-            setStyling(static_cast<int>(next - lineStart - styled), Default);
+        styleLine(all.substr(lineStart, lineEnd - lineStart));
+        if (lineEnd < next)
+            setStyling(static_cast<int>(next - lineEnd), Default);
         lineStart = next;
     }
+}
+
+void PlutoLexer::styleLine(std::string_view line) {
+    std::size_t styled = 0;
+    for (const Span& span : spansOf(line)) {
+        if (span.begin > styled)
+            setStyling(static_cast<int>(span.begin - styled), Default);
+        setStyling(static_cast<int>(span.length), span.style);
+        styled = span.begin + span.length;
+    }
+    if (styled < line.size())
+        setStyling(static_cast<int>(line.size() - styled), Default);
 }
 
 } // namespace rs::ui

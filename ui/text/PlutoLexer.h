@@ -3,6 +3,8 @@
 
 #include <Qsci/qscilexercustom.h>
 
+#include <string_view>
+
 namespace rs::ui {
 
 // Colours Pluto program text. Words are classified with the language core's
@@ -45,6 +47,10 @@ public:
 
     // Colours for a dark background instead of a light one.
     void setDark(bool dark);
+
+protected:
+    // Styles one line, without its end, from where the styling stands.
+    virtual void styleLine(std::string_view line);
 
 private:
     bool m_dark = false;

@@ -35,12 +35,15 @@ QFont annotationFont() {
 
 } // namespace
 
-ProgramEditor::ProgramEditor(QWidget* parent)
-    : QsciScintilla(parent), m_lexer(new PlutoLexer(this)),
+ProgramEditor::ProgramEditor(QWidget* parent) : ProgramEditor(new PlutoLexer, parent) {}
+
+ProgramEditor::ProgramEditor(PlutoLexer* lexer, QWidget* parent)
+    : QsciScintilla(parent), m_lexer(lexer),
       m_errorAnnotation(kErrorAnnotationStyle, tr("Error message"), QColor(0x82071e),
                         QColor(0xffebe9), annotationFont()),
       m_warningAnnotation(kWarningAnnotationStyle, tr("Warning message"), QColor(0x6b4400),
                           QColor(0xfff8c5), annotationFont()) {
+    m_lexer->setParent(this);
     setUtf8(true);
     setLexer(m_lexer);
     SendScintilla(SCI_SETWORDCHARS, m_lexer->wordCharacters());

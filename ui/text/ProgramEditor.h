@@ -20,6 +20,8 @@ public:
     enum Margin { MarkerMargin = 0, LineNumberMargin = 1 };
 
     explicit ProgramEditor(QWidget* parent = nullptr);
+    // Colours the text with another lexer (a property file's); the editor owns it.
+    ProgramEditor(PlutoLexer* lexer, QWidget* parent);
 
     // Replaces the shown findings. Lines and columns are 1-based, as the
     // checker reports them.
