@@ -4,6 +4,7 @@
 #include "lang/Diagnostic.h"
 #include "output/SettledCompile.h"
 #include "project/SaveFileCommit.h"
+#include "prove/PropertiesPage.h"
 #include "shell/MainWindow.h"
 #include "shell/PageRef.h"
 #include "shell/Preferences.h"
@@ -47,10 +48,13 @@ struct Page {
 
 // "ladder:N", "text:N", "io:N", "asi:N", "variables:N" and "unit:N": a page of the unit
 // with station number N; "gateway:N" the gateway with node address N; "ladder:N.S" and "text:N.S"
-// its sequence S, as the language writes a sequence (S0.1); "project": the project's own page.
+// its sequence S, as the language writes a sequence (S0.1); "project": the project's own page;
+// "properties": its properties and their proofs.
 std::optional<Page> pageOf(const QString& text) {
     if (text == QLatin1String("project"))
         return Page{rs::ui::PageRef::Kind::Project, -1};
+    if (text == QLatin1String("properties"))
+        return Page{rs::ui::PageRef::Kind::Properties, -1};
     static const QRegularExpression form(
         QStringLiteral("^(?:(ladder|text):(\\d{1,2})(?:\\.([1-9]))?|(io|asi|variables|unit|gateway)"
                        ":(\\d{1,2}))$"));
@@ -127,6 +131,13 @@ void awaitSettledCompile(rs::ui::MainWindow& window) {
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
 }
 
+// Build > Prove All, waited for: a proof runs as long as its properties take.
+void awaitProof(rs::ui::MainWindow& window) {
+    window.proveAll();
+    while (window.propertiesPage()->isProving())
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -158,7 +169,8 @@ int main(int argc, char* argv[]) {
         CommandLine::tr("The page to show: ladder:N (the code of unit N as ladder), text:N (as "
                         "text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), "
                         "asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway "
-                        "with node address N), or project."),
+                        "with node address N), project, or properties (the project's properties "
+                        "and their proofs)."),
         QStringLiteral("PAGE"));
     const QCommandLineOption themeOption(
         QStringLiteral("theme"),
@@ -169,7 +181,11 @@ int main(int argc, char* argv[]) {
         CommandLine::tr("Run the scenario in the simulator first, so the window shows the live "
                         "state it ends in."),
         QStringLiteral("SCENARIO.scn"));
-    parser.addOptions({screenshotOption, pageOption, themeOption, simulateOption});
+    const QCommandLineOption proveOption(
+        QStringLiteral("prove"),
+        CommandLine::tr("Prove the project's properties first (Build > Prove All), so the window "
+                        "shows their results."));
+    parser.addOptions({screenshotOption, pageOption, themeOption, simulateOption, proveOption});
 
     if (!parser.parse(QCoreApplication::arguments()))
         return usageError(parser.errorText());
@@ -190,7 +206,8 @@ int main(int argc, char* argv[]) {
             return usageError(CommandLine::tr("unknown page '%1'; the pages are ladder:N, text:N, "
                                               "io:N, asi:N, variables:N and unit:N for unit N, "
                                               "ladder:N.S and text:N.S for its sequence S, "
-                                              "gateway:N for gateway N, and project")
+                                              "gateway:N for gateway N, project and "
+                                              "properties")
                                   .arg(parser.value(pageOption)));
     }
     std::optional<rs::ui::Preferences::Theme> theme = preferences.theme;
@@ -210,6 +227,8 @@ int main(int argc, char* argv[]) {
                                           .arg(page->station)
         : page && page->kind == rs::ui::PageRef::Kind::Gateway
             ? CommandLine::tr("%1 has no gateway %2").arg(shownFile).arg(page->station)
+        : page && page->kind == rs::ui::PageRef::Kind::Properties
+            ? CommandLine::tr("%1 does not read, so it has no properties page").arg(shownFile)
             : CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
 
     rs::ui::MainWindow window;
@@ -230,6 +249,8 @@ int main(int argc, char* argv[]) {
             if (reportSyntaxErrors(result))
                 return 1;
         }
+        if (parser.isSet(proveOption))
+            awaitProof(window);
         awaitSettledCompile(window);
         settle();
         if (const QString error =
@@ -248,6 +269,8 @@ int main(int argc, char* argv[]) {
         window.openFile(files.first());
     if (page && !window.showPage(page->kind, page->station, page->sequence))
         complain(noSuchUnit);
+    if (parser.isSet(proveOption))
+        window.proveAll();
     if (parser.isSet(simulateOption)) {
         QObject::connect(
             window.simulation()->session(), &rs::ui::SimulationSession::scenarioFinished, &window,

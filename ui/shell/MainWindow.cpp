@@ -19,6 +19,9 @@
 #include "project/Sequences.h"
 #include "project/TextPlace.h"
 #include "project/UnitSettings.h"
+#include "prove/CounterexampleOpening.h"
+#include "prove/PropertiesPage.h"
+#include "prove/PropertyEditor.h"
 #include "review/CompareDialog.h"
 #include "shell/NamedIcon.h"
 #include "shell/PreferencesDialog.h"
@@ -34,6 +37,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -79,9 +83,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
     m_variablesPage = new VariablesPage(m_pages);
     m_textPage = new TextPage(m_pages);
     m_ladderPage = new LadderPage(m_pages);
-    for (QWidget* page : std::initializer_list<QWidget*>{m_welcomePage, m_projectPage, m_unitPage,
-                                                         m_ioPage, m_asiPage, m_gatewayPage,
-                                                         m_variablesPage, m_textPage, m_ladderPage})
+    m_propertiesPage = new PropertiesPage(m_pages);
+    for (QWidget* page : std::initializer_list<QWidget*>{
+             m_welcomePage, m_projectPage, m_unitPage, m_ioPage, m_asiPage, m_gatewayPage,
+             m_variablesPage, m_textPage, m_ladderPage, m_propertiesPage})
         m_pages->addWidget(page);
 
     createCommands();
@@ -115,6 +120,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_preferences(Pre
         showFirstPageOf(document, PageRef::Kind::Code);
         showMessage(tr("The project reads without errors now; its pages are back."));
     });
+    m_propertiesPage->setProveAllAction(m_proveAllAction);
+    connect(m_propertiesPage, &PropertiesPage::provingChanged, this, &MainWindow::updateActions);
+    connect(m_propertiesPage, &PropertiesPage::counterexampleRequested, this,
+            [this](ProjectDocument* document, const PropertyProof& proof) {
+                QString error;
+                const QString path = openCounterexample(*this, document, proof, error);
+                if (!error.isEmpty())
+                    showMessage(error);
+                else if (!path.isEmpty())
+                    showMessage(
+                        tr("Running %1 in the simulator.").arg(QDir::toNativeSeparators(path)));
+            });
     connect(m_ladderPage, &LadderPage::textRequested, this, [this] {
         showPage({PageRef::Kind::Code, m_ladderPage->document(), m_ladderPage->station(),
                   m_ladderPage->sequence()});
@@ -304,6 +321,14 @@ void MainWindow::createActions() {
     m_compileAction->setStatusTip(tr("Check the project and write the compiled file (.hps)"));
     connect(m_compileAction, &QAction::triggered, this, &MainWindow::compile);
 
+    m_proveAllAction =
+        action(tr("&Prove All"), "proveAllAction", QKeySequence(Qt::CTRL | Qt::Key_F7));
+    m_proveAllAction->setIcon(namedIcon("prove"));
+    m_proveAllAction->setStatusTip(
+        tr("Prove every property of the project for every input sequence, or find one that "
+           "breaks it"));
+    connect(m_proveAllAction, &QAction::triggered, this, &MainWindow::proveAll);
+
     m_aboutAction = action(tr("&About Rungsmith"), "aboutAction");
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
@@ -378,6 +403,8 @@ void MainWindow::createMenus() {
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     build->setObjectName(QStringLiteral("buildMenu"));
     build->addAction(m_compileAction);
+    build->addSeparator();
+    build->addAction(m_proveAllAction);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->setObjectName(QStringLiteral("helpMenu"));
@@ -495,6 +522,8 @@ void MainWindow::documentRemoved(ProjectDocument* document) {
         m_current = {};
         m_textPage->showUnit(nullptr, 0);
     }
+    if (m_propertiesPage->document() == document)
+        m_propertiesPage->showProject(nullptr);
     rebuildTree();
     if (documents().empty())
         showPage(PageRef{});
@@ -596,6 +625,10 @@ bool MainWindow::showPage(const PageRef& page) {
         m_ladderPage->showUnit(document, page.station, page.sequence);
         m_pages->setCurrentWidget(m_ladderPage);
         break;
+    case PageRef::Kind::Properties:
+        m_propertiesPage->showProject(document);
+        m_pages->setCurrentWidget(m_propertiesPage);
+        break;
     }
     const bool onText = m_pages->currentWidget() == m_textPage;
     if (!onText) {
@@ -617,6 +650,8 @@ bool MainWindow::showPage(PageRef::Kind kind, int station, int sequence) {
     ProjectDocument* document = currentDocument();
     if (document && kind == PageRef::Kind::Project)
         return showPage(PageRef{kind, document});
+    if (kind == PageRef::Kind::Properties)
+        return document && !document->isDamaged() && showPage(PageRef{kind, document});
     if (kind == PageRef::Kind::Gateway)
         return document && !document->isDamaged() && document->project().gateways.count(station) &&
                showPage(PageRef{kind, document, station});
@@ -660,6 +695,8 @@ void MainWindow::updateActions() {
     m_units->updateActions(shown);
     m_gateways->updateActions(shown);
     m_compileAction->setEnabled(document != nullptr && !isCompiling());
+    m_proveAllAction->setEnabled(document != nullptr && !document->isDamaged() &&
+                                 !m_propertiesPage->isProving());
     const bool writable =
         document != nullptr && document->permission() == project::Permission::Full;
     m_formatAction->setEnabled(onText && writable);
@@ -669,7 +706,9 @@ void MainWindow::updateActions() {
                                          document->project().baseline.has_value());
     m_codeViewAction->setEnabled(m_current.kind == PageRef::Kind::Code ||
                                  m_current.kind == PageRef::Kind::Ladder);
-    if (onText && m_textPage->station() == TextPage::kWholeProject) {
+    // A text with an undo of its own: the damaged project's, the properties'.
+    if ((onText && m_textPage->station() == TextPage::kWholeProject) ||
+        m_pages->currentWidget() == m_propertiesPage) {
         m_undoAction->setEnabled(true);
         m_redoAction->setEnabled(true);
         m_undoAction->setText(tr("&Undo"));
@@ -700,6 +739,10 @@ void MainWindow::openComparison(ProjectDocument* document, const QString& oldPat
 // ----- edits
 
 void MainWindow::undo() {
+    if (m_pages->currentWidget() == m_propertiesPage) {
+        m_propertiesPage->editor()->undo();
+        return;
+    }
     if (m_pages->currentWidget() == m_textPage) {
         if (m_textPage->station() == TextPage::kWholeProject) {
             m_textPage->editor()->undo();
@@ -712,6 +755,10 @@ void MainWindow::undo() {
 }
 
 void MainWindow::redo() {
+    if (m_pages->currentWidget() == m_propertiesPage) {
+        m_propertiesPage->editor()->redo();
+        return;
+    }
     if (m_pages->currentWidget() == m_textPage &&
         m_textPage->station() == TextPage::kWholeProject) {
         m_textPage->editor()->redo();
@@ -808,6 +855,12 @@ void MainWindow::showTreeMenu(const PageRef& page, const QPoint& globalPosition)
         add(tr("Remove Gate&way..."),
             [this, document, page] { m_gateways->removeGateway(document, page.station); });
         break;
+    case PageRef::Kind::Properties:
+        add(tr("&Prove All"), [this, document] {
+            if (showPage({PageRef::Kind::Properties, document}))
+                proveAll();
+        });
+        break;
     }
     menu.exec(globalPosition);
 }
@@ -850,6 +903,19 @@ void MainWindow::compile() {
     compiler::CheckOptions options;
     options.warnUnconfiguredIo = m_preferences.warnUnconfiguredIo;
     m_compileRun->start(document, options, image);
+}
+
+void MainWindow::proveAll() {
+    ProjectDocument* document = currentDocument();
+    if (!document || document->isDamaged() || m_propertiesPage->isProving())
+        return;
+    if (m_textPage->document() == document)
+        m_textPage->applyNow();
+    if (!showPage({PageRef::Kind::Properties, document}))
+        return;
+    compiler::CheckOptions options;
+    options.warnUnconfiguredIo = m_preferences.warnUnconfiguredIo;
+    m_propertiesPage->proveAll(options);
 }
 
 void MainWindow::showCompilePlace(const project::TextPlace& place, int column) {

@@ -39,6 +39,7 @@ class ProgramEditor;
 class ProjectDocument;
 class ProjectPage;
 class ProjectTree;
+class PropertiesPage;
 class SimulationMode;
 class TextPage;
 class UnitPage;
@@ -96,6 +97,8 @@ public:
     // Builds the current project off the window's thread.
     void compile();
     bool isCompiling() const { return m_compileRun->isRunning(); }
+    // Build > Prove All: the current project's properties page, proving them all.
+    void proveAll();
 
     // Window size, position and dock layout as the user left them.
     void restoreLayout();
@@ -109,6 +112,7 @@ public:
     AsiOptionsPage* asiOptionsPage() const { return m_asiPage; }
     GatewayPage* gatewayPage() const { return m_gatewayPage; }
     VariablesPage* variablesPage() const { return m_variablesPage; }
+    PropertiesPage* propertiesPage() const { return m_propertiesPage; }
     ProjectTree* projectTree() const { return m_tree; }
     CompileOutput* compileOutput() const { return m_output; }
     SimulationMode* simulation() const { return m_simulation; }
@@ -167,6 +171,7 @@ private:
     VariablesPage* m_variablesPage = nullptr;
     TextPage* m_textPage = nullptr;
     LadderPage* m_ladderPage = nullptr;
+    PropertiesPage* m_propertiesPage = nullptr;
     ProjectTree* m_tree = nullptr;
     ProblemsView* m_problems = nullptr;
     CompileOutput* m_output = nullptr;
@@ -193,6 +198,7 @@ private:
     QAction* m_codeViewAction = nullptr; // between the code's ladder and its text
     QAction* m_preferencesAction = nullptr;
     QAction* m_compileAction = nullptr;
+    QAction* m_proveAllAction = nullptr;
     QAction* m_aboutAction = nullptr;
 };
 

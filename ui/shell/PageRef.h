@@ -20,7 +20,8 @@ struct PageRef {
         Gateway, // station: the gateway's node address
         Variables,
         Code,
-        Ladder
+        Ladder,
+        Properties // the project's properties (.prop) and their proofs
     };
 
     Kind kind = Kind::None;

@@ -138,6 +138,8 @@ void ProjectTree::setDocuments(const std::vector<ProjectDocument*>& documents) {
                     .arg(node)
                     .arg(QString::fromLatin1(project::gatewayTypeName(gateway.type).data())),
                 QStringLiteral("gateway"), {PageRef::Kind::Gateway, document, node});
+        add(projectItem, tr("Properties"), QStringLiteral("properties"),
+            {PageRef::Kind::Properties, document});
         updateProjectItem(document);
     }
     root->setExpanded(true);

@@ -13,8 +13,8 @@ class ProjectDocument;
 
 // The tree at the left of the window (manual Part 1, 4): Projects, each open
 // project, its units ("Pluto 3 — B46"), and under each unit its I/O Options,
-// Variables, PLC Code and sequences. Choosing a node asks for its page; a
-// right click asks for its context menu.
+// Variables, PLC Code and sequences; the project's gateways and its Properties. Choosing a node
+// asks for its page; a right click asks for its context menu.
 class ProjectTree : public QTreeWidget {
     Q_OBJECT
 public:
