@@ -216,16 +216,24 @@
         <translation>%1 hat keine Sequenz %2 in Einheit %3</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
-        <translation>Die anzuzeigende Seite: ladder:N (der Code der Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), asi:N (ihre AS-i-Optionen), variables:N, unit:N, gateway:N (das Gateway mit der Knotenadresse N) oder project.</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
-        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, asi:N, variables:N und unit:N für die Einheit N, ladder:N.S und text:N.S für ihre Sequenz S, gateway:N für das Gateway N und project</translation>
-    </message>
-    <message>
         <source>%1 has no gateway %2</source>
         <translation>%1 hat kein Gateway %2</translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), project, or properties (the project&apos;s properties and their proofs).</source>
+        <translation>Die anzuzeigende Seite: ladder:N (der Code der Einheit N als Kontaktplan), text:N (als Text), ladder:N.S oder text:N.S (ihre Sequenz S), io:N (ihre E/A-Optionen), asi:N (ihre AS-i-Optionen), variables:N, unit:N, gateway:N (das Gateway mit der Knotenadresse N), project oder properties (die Eigenschaften des Projekts und ihre Beweise).</translation>
+    </message>
+    <message>
+        <source>Prove the project&apos;s properties first (Build &gt; Prove All), so the window shows their results.</source>
+        <translation>Zuerst die Eigenschaften des Projekts beweisen (Erstellen &gt; Alle beweisen), damit das Fenster ihre Ergebnisse zeigt.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, project and properties</source>
+        <translation>unbekannte Seite &apos;%1&apos;; die Seiten sind ladder:N, text:N, io:N, asi:N, variables:N und unit:N für die Einheit N, ladder:N.S und text:N.S für ihre Sequenz S, gateway:N für das Gateway N, project und properties</translation>
+    </message>
+    <message>
+        <source>%1 does not read, so it has no properties page</source>
+        <translation>%1 lässt sich nicht lesen und hat deshalb keine Eigenschaftsseite</translation>
     </message>
 </context>
 <context>
@@ -2608,6 +2616,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Remove Gate&amp;way...</source>
         <translation>Gate&amp;way entfernen...</translation>
     </message>
+    <message>
+        <source>Running %1 in the simulator.</source>
+        <translation>%1 läuft im Simulator.</translation>
+    </message>
+    <message>
+        <source>&amp;Prove All</source>
+        <translation>Alle &amp;beweisen</translation>
+    </message>
+    <message>
+        <source>Prove every property of the project for every input sequence, or find one that breaks it</source>
+        <translation>Jede Eigenschaft des Projekts für jede Eingangsfolge beweisen oder eine Folge finden, die sie verletzt</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -3476,6 +3496,250 @@ Konfigurationsoptionen ändern sich %2; geöffnet %3</translation>
     <message>
         <source>Gateway %1 (%2)</source>
         <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofResultsView</name>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Property</source>
+        <translation>Eigenschaft</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Zyklen</translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation>Grund</translation>
+    </message>
+    <message>
+        <source>proved</source>
+        <translation>bewiesen</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>verletzt</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>covered</source>
+        <translation>erreicht</translation>
+    </message>
+    <message>
+        <source>never covered</source>
+        <translation>nie erreicht</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>wartet</translation>
+    </message>
+    <message>
+        <source>proving…</source>
+        <translation>wird bewiesen …</translation>
+    </message>
+    <message numerus="yes">
+        <source>Proved by induction over %n scan(s)</source>
+        <translation>
+            <numerusform>Durch Induktion über %n Zyklus bewiesen</numerusform>
+            <numerusform>Durch Induktion über %n Zyklen bewiesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>A counterexample of %n scan(s) from power on</source>
+        <translation>
+            <numerusform>Ein Gegenbeispiel von %n Zyklus ab dem Einschalten</numerusform>
+            <numerusform>Ein Gegenbeispiel von %n Zyklen ab dem Einschalten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reached in %n scan(s) from power on</source>
+        <translation>
+            <numerusform>In %n Zyklus ab dem Einschalten erreicht</numerusform>
+            <numerusform>In %n Zyklen ab dem Einschalten erreicht</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open Counterexample runs it in the simulator</source>
+        <translation>Gegenbeispiel öffnen führt es im Simulator aus</translation>
+    </message>
+    <message>
+        <source>not proved</source>
+        <translation>nicht bewiesen</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofRun</name>
+    <message>
+        <source>The property has no counterexample to open.</source>
+        <translation>Die Eigenschaft hat kein Gegenbeispiel zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Es läuft bereits ein Szenario.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message numerus="yes">
+        <source>the time limit of %n s per property ran out</source>
+        <translation>
+            <numerusform>die Zeitgrenze von %n s je Eigenschaft ist abgelaufen</numerusform>
+            <numerusform>die Zeitgrenze von %n s je Eigenschaft ist abgelaufen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>no counterexample within %n scans</source>
+        <translation>
+            <numerusform>kein Gegenbeispiel innerhalb von %n Zyklus</numerusform>
+            <numerusform>kein Gegenbeispiel innerhalb von %n Zyklen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s counterexample of %n scans does not replay (%1); please report it</source>
+        <translation>
+            <numerusform>interner Fehler: Das Gegenbeispiel des Beweisers von %n Zyklus lässt sich nicht nachspielen (%1); bitte melden Sie das</numerusform>
+            <numerusform>interner Fehler: Das Gegenbeispiel des Beweisers von %n Zyklen lässt sich nicht nachspielen (%1); bitte melden Sie das</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s witness of %n scans does not replay (%1); please report it</source>
+        <translation>
+            <numerusform>interner Fehler: Der Zeuge des Beweisers von %n Zyklus lässt sich nicht nachspielen (%1); bitte melden Sie das</numerusform>
+            <numerusform>interner Fehler: Der Zeuge des Beweisers von %n Zyklen lässt sich nicht nachspielen (%1); bitte melden Sie das</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation>
+            <numerusform>Das Projekt hat %n Fehler; kompilieren Sie es (F7), um den Fehler zu sehen.</numerusform>
+            <numerusform>Das Projekt hat %n Fehler; kompilieren Sie es (F7), um die Fehler zu sehen.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PropertiesPage</name>
+    <message>
+        <source>; What must hold in every scan, for every input sequence: one property a line.
+; Remove the &apos;;&apos; before a line to use it, with the operands of this project.
+; always Q0.2 -&gt; I0.12                 ; the output only with the stop circuit closed
+; never Q0.2 * Q0.3                    ; never both contactors at once
+; always /I0.12 -&gt; within 20ms /Q0.2   ; the output drops within 20 ms of a stop
+; always I0.0 -&gt; next Q0.2             ; the output follows the start in the next scan
+; assume /(I0.0 * I0.1)                ; the two sensors are never made at once
+; cover Q0.2                           ; the output can come on
+</source>
+        <translation>; Was in jedem Zyklus für jede Eingangsfolge gelten muss: eine Eigenschaft je Zeile.
+; Entfernen Sie das &apos;;&apos; vor einer Zeile, um sie mit den Operanden dieses Projekts zu nutzen.
+; always Q0.2 -&gt; I0.12                 ; der Ausgang nur bei geschlossenem Stoppkreis
+; never Q0.2 * Q0.3                    ; nie beide Schütze zugleich
+; always /I0.12 -&gt; within 20ms /Q0.2   ; der Ausgang fällt binnen 20 ms nach einem Stopp ab
+; always I0.0 -&gt; next Q0.2             ; der Ausgang folgt dem Start im nächsten Zyklus
+; assume /(I0.0 * I0.1)                ; die beiden Sensoren sind nie zugleich betätigt
+; cover Q0.2                           ; der Ausgang kann einschalten
+</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Open Counterexample</source>
+        <translation>Gegenbeispiel öffnen</translation>
+    </message>
+    <message>
+        <source>Complete Word</source>
+        <translation>Wort vervollständigen</translation>
+    </message>
+    <message>
+        <source>Insert Example</source>
+        <translation>Beispiel einfügen</translation>
+    </message>
+    <message>
+        <source>Stop proving; the properties proved so far keep their results</source>
+        <translation>Das Beweisen anhalten; die bisher bewiesenen Eigenschaften behalten ihre Ergebnisse</translation>
+    </message>
+    <message>
+        <source>Run the chosen property&apos;s counterexample (or witness) in the simulator, with the waveform, stopped at its last scan</source>
+        <translation>Das Gegenbeispiel (oder den Zeugen) der gewählten Eigenschaft im Simulator ausführen, mit Signalverlauf, angehalten nach seinem letzten Zyklus</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No properties yet. Write one a line, with conditions as in the code (operands, names, &lt;code&gt;/&lt;/code&gt;, &lt;code&gt;*&lt;/code&gt;, &lt;code&gt;+&lt;/code&gt;, parentheses):&lt;/p&gt;&lt;p&gt;&lt;code&gt;always A&lt;/code&gt;, &lt;code&gt;never A&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; within 20ms B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; next B&lt;/code&gt;, &lt;code&gt;assume A&lt;/code&gt;, &lt;code&gt;cover A&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Prove All&lt;/b&gt; proves each for every input sequence, or finds one that breaks it and opens it in the simulator.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Noch keine Eigenschaften. Schreiben Sie eine je Zeile, mit Bedingungen wie im Code (Operanden, Namen, &lt;code&gt;/&lt;/code&gt;, &lt;code&gt;*&lt;/code&gt;, &lt;code&gt;+&lt;/code&gt;, Klammern):&lt;/p&gt;&lt;p&gt;&lt;code&gt;always A&lt;/code&gt;, &lt;code&gt;never A&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; within 20ms B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; next B&lt;/code&gt;, &lt;code&gt;assume A&lt;/code&gt;, &lt;code&gt;cover A&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Alle beweisen&lt;/b&gt; beweist jede für jede Eingangsfolge oder findet eine Folge, die sie verletzt, und öffnet sie im Simulator.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Put a commented example of every kind of line in the text</source>
+        <translation>Ein auskommentiertes Beispiel jeder Zeilenart in den Text einfügen</translation>
+    </message>
+    <message>
+        <source>%1 — Properties</source>
+        <translation>%1 — Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Saved with the project, beside its file, once it has one: its name with the extension .prop.</source>
+        <translation>Wird mit dem Projekt gespeichert, neben seiner Datei, sobald es eine hat: ihr Name mit der Endung .prop.</translation>
+    </message>
+    <message>
+        <source>Saved with the project as %1, which rungsmith-cli prove takes too.</source>
+        <translation>Wird mit dem Projekt als %1 gespeichert, die auch rungsmith-cli prove liest.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The properties have %n error(s), marked in the text: nothing is proved until they read.</source>
+        <translation>
+            <numerusform>Die Eigenschaften haben %n Fehler, im Text markiert: Nichts wird bewiesen, bis sie sich lesen lassen.</numerusform>
+            <numerusform>Die Eigenschaften haben %n Fehler, im Text markiert: Nichts wird bewiesen, bis sie sich lesen lassen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write a property first: there is nothing to prove.</source>
+        <translation>Schreiben Sie zuerst eine Eigenschaft: Es gibt nichts zu beweisen.</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>%1 wird kompiliert …</translation>
+    </message>
+    <message>
+        <source>Property %1 of %2</source>
+        <translation>Eigenschaft %1 von %2</translation>
+    </message>
+    <message>
+        <source>Proving property %1 of %2...</source>
+        <translation>Eigenschaft %1 von %2 wird bewiesen …</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>%1 proved, %2 failed, %3 unknown</source>
+        <translation>%1 bewiesen, %2 verletzt, %3 unbekannt</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1.</source>
+        <translation>Abgebrochen: %1.</translation>
+    </message>
+    <message>
+        <source>The properties or the project changed since this proof; Prove All again for results of the text as it is now.</source>
+        <translation>Die Eigenschaften oder das Projekt haben sich seit diesem Beweis geändert; wählen Sie erneut Alle beweisen, um Ergebnisse für den aktuellen Text zu erhalten.</translation>
+    </message>
+    <message>
+        <source>Open Witness</source>
+        <translation>Zeugen öffnen</translation>
     </message>
 </context>
 <context>

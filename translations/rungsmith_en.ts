@@ -216,15 +216,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 has no gateway %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), project, or properties (the project&apos;s properties and their proofs).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Prove the project&apos;s properties first (Build &gt; Prove All), so the window shows their results.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, project and properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 does not read, so it has no properties page</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2607,6 +2615,18 @@ Its text page (F6) shows and edits it.</source>
         <source>Remove Gate&amp;way...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Running %1 in the simulator.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Prove All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Prove every property of the project for every input sequence, or find one that breaks it</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -3473,6 +3493,242 @@ Config Options change %2; opened %3</source>
     </message>
     <message>
         <source>Gateway %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofResultsView</name>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Property</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>proved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>covered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>never covered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>proving…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Proved by induction over %n scan(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>A counterexample of %n scan(s) from power on</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reached in %n scan(s) from power on</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open Counterexample runs it in the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not proved</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofRun</name>
+    <message>
+        <source>The property has no counterexample to open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>the time limit of %n s per property ran out</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>no counterexample within %n scans</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s counterexample of %n scans does not replay (%1); please report it</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s witness of %n scans does not replay (%1); please report it</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PropertiesPage</name>
+    <message>
+        <source>; What must hold in every scan, for every input sequence: one property a line.
+; Remove the &apos;;&apos; before a line to use it, with the operands of this project.
+; always Q0.2 -&gt; I0.12                 ; the output only with the stop circuit closed
+; never Q0.2 * Q0.3                    ; never both contactors at once
+; always /I0.12 -&gt; within 20ms /Q0.2   ; the output drops within 20 ms of a stop
+; always I0.0 -&gt; next Q0.2             ; the output follows the start in the next scan
+; assume /(I0.0 * I0.1)                ; the two sensors are never made at once
+; cover Q0.2                           ; the output can come on
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Counterexample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complete Word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Insert Example</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop proving; the properties proved so far keep their results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the chosen property&apos;s counterexample (or witness) in the simulator, with the waveform, stopped at its last scan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No properties yet. Write one a line, with conditions as in the code (operands, names, &lt;code&gt;/&lt;/code&gt;, &lt;code&gt;*&lt;/code&gt;, &lt;code&gt;+&lt;/code&gt;, parentheses):&lt;/p&gt;&lt;p&gt;&lt;code&gt;always A&lt;/code&gt;, &lt;code&gt;never A&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; within 20ms B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; next B&lt;/code&gt;, &lt;code&gt;assume A&lt;/code&gt;, &lt;code&gt;cover A&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Prove All&lt;/b&gt; proves each for every input sequence, or finds one that breaks it and opens it in the simulator.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put a commented example of every kind of line in the text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — Properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved with the project, beside its file, once it has one: its name with the extension .prop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved with the project as %1, which rungsmith-cli prove takes too.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The properties have %n error(s), marked in the text: nothing is proved until they read.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write a property first: there is nothing to prove.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Property %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Proving property %1 of %2...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 proved, %2 failed, %3 unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The properties or the project changed since this proof; Prove All again for results of the text as it is now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Witness</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -216,16 +216,24 @@
         <translation>%1 har ingen sekvens %2 i enhet %3</translation>
     </message>
     <message>
-        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), or project.</source>
-        <translation>Sidan som ska visas: ladder:N (koden för enhet N som ladder), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), asi:N (dess AS-i-alternativ), variables:N, unit:N, gateway:N (gatewayen med nodadress N) eller project.</translation>
-    </message>
-    <message>
-        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, and project</source>
-        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, asi:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, gateway:N för gateway N och project</translation>
-    </message>
-    <message>
         <source>%1 has no gateway %2</source>
         <translation>%1 har ingen gateway %2</translation>
+    </message>
+    <message>
+        <source>The page to show: ladder:N (the code of unit N as ladder), text:N (as text), ladder:N.S or text:N.S (its sequence S), io:N (its I/O options), asi:N (its AS-i options), variables:N, unit:N, gateway:N (the gateway with node address N), project, or properties (the project&apos;s properties and their proofs).</source>
+        <translation>Sidan som ska visas: ladder:N (koden för enhet N som ladder), text:N (som text), ladder:N.S eller text:N.S (dess sekvens S), io:N (dess I/O-alternativ), asi:N (dess AS-i-alternativ), variables:N, unit:N, gateway:N (gatewayen med nodadress N), project eller properties (projektets egenskaper och deras bevis).</translation>
+    </message>
+    <message>
+        <source>Prove the project&apos;s properties first (Build &gt; Prove All), so the window shows their results.</source>
+        <translation>Bevisa först projektets egenskaper (Bygg &gt; Bevisa alla), så att fönstret visar resultaten.</translation>
+    </message>
+    <message>
+        <source>unknown page &apos;%1&apos;; the pages are ladder:N, text:N, io:N, asi:N, variables:N and unit:N for unit N, ladder:N.S and text:N.S for its sequence S, gateway:N for gateway N, project and properties</source>
+        <translation>okänd sida &apos;%1&apos;; sidorna är ladder:N, text:N, io:N, asi:N, variables:N och unit:N för enhet N, ladder:N.S och text:N.S för dess sekvens S, gateway:N för gateway N, project och properties</translation>
+    </message>
+    <message>
+        <source>%1 does not read, so it has no properties page</source>
+        <translation>%1 går inte att läsa och har därför ingen egenskapssida</translation>
     </message>
 </context>
 <context>
@@ -2608,6 +2616,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Remove Gate&amp;way...</source>
         <translation>Ta bort gate&amp;way...</translation>
     </message>
+    <message>
+        <source>Running %1 in the simulator.</source>
+        <translation>Kör %1 i simulatorn.</translation>
+    </message>
+    <message>
+        <source>&amp;Prove All</source>
+        <translation>&amp;Bevisa alla</translation>
+    </message>
+    <message>
+        <source>Prove every property of the project for every input sequence, or find one that breaks it</source>
+        <translation>Bevisa varje egenskap i projektet för varje insignalsföljd, eller hitta en följd som bryter den</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::MakeBlockDialog</name>
@@ -3476,6 +3496,250 @@ konfigurationsalternativen ändras %2; öppnat %3</translation>
     <message>
         <source>Gateway %1 (%2)</source>
         <translation>Gateway %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Egenskaper</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofResultsView</name>
+    <message>
+        <source>Line</source>
+        <translation>Rad</translation>
+    </message>
+    <message>
+        <source>Property</source>
+        <translation>Egenskap</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Resultat</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Cykler</translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation>Orsak</translation>
+    </message>
+    <message>
+        <source>proved</source>
+        <translation>bevisad</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>bruten</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>okänd</translation>
+    </message>
+    <message>
+        <source>covered</source>
+        <translation>nådd</translation>
+    </message>
+    <message>
+        <source>never covered</source>
+        <translation>aldrig nådd</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>väntar</translation>
+    </message>
+    <message>
+        <source>proving…</source>
+        <translation>bevisas …</translation>
+    </message>
+    <message numerus="yes">
+        <source>Proved by induction over %n scan(s)</source>
+        <translation>
+            <numerusform>Bevisad med induktion över %n cykel</numerusform>
+            <numerusform>Bevisad med induktion över %n cykler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>A counterexample of %n scan(s) from power on</source>
+        <translation>
+            <numerusform>Ett motexempel på %n cykel från tillslag</numerusform>
+            <numerusform>Ett motexempel på %n cykler från tillslag</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reached in %n scan(s) from power on</source>
+        <translation>
+            <numerusform>Nådd på %n cykel från tillslag</numerusform>
+            <numerusform>Nådd på %n cykler från tillslag</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open Counterexample runs it in the simulator</source>
+        <translation>Öppna motexempel kör det i simulatorn</translation>
+    </message>
+    <message>
+        <source>not proved</source>
+        <translation>inte bevisad</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::ProofRun</name>
+    <message>
+        <source>The property has no counterexample to open.</source>
+        <translation>Egenskapen har inget motexempel att öppna.</translation>
+    </message>
+    <message>
+        <source>A scenario is running already.</source>
+        <translation>Ett scenario körs redan.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>avbruten</translation>
+    </message>
+    <message numerus="yes">
+        <source>the time limit of %n s per property ran out</source>
+        <translation>
+            <numerusform>tidsgränsen på %n s per egenskap tog slut</numerusform>
+            <numerusform>tidsgränsen på %n s per egenskap tog slut</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>no counterexample within %n scans</source>
+        <translation>
+            <numerusform>inget motexempel inom %n cykel</numerusform>
+            <numerusform>inget motexempel inom %n cykler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s counterexample of %n scans does not replay (%1); please report it</source>
+        <translation>
+            <numerusform>internt fel: beviskontrollantens motexempel på %n cykel går inte att spela upp igen (%1); rapportera det gärna</numerusform>
+            <numerusform>internt fel: beviskontrollantens motexempel på %n cykler går inte att spela upp igen (%1); rapportera det gärna</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>internal error: the prover&apos;s witness of %n scans does not replay (%1); please report it</source>
+        <translation>
+            <numerusform>internt fel: beviskontrollantens vittne på %n cykel går inte att spela upp igen (%1); rapportera det gärna</numerusform>
+            <numerusform>internt fel: beviskontrollantens vittne på %n cykler går inte att spela upp igen (%1); rapportera det gärna</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The project has %n error(s); compile it (F7) to see them.</source>
+        <translation>
+            <numerusform>Projektet har %n fel; kompilera det (F7) för att se felet.</numerusform>
+            <numerusform>Projektet har %n fel; kompilera det (F7) för att se felen.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::PropertiesPage</name>
+    <message>
+        <source>; What must hold in every scan, for every input sequence: one property a line.
+; Remove the &apos;;&apos; before a line to use it, with the operands of this project.
+; always Q0.2 -&gt; I0.12                 ; the output only with the stop circuit closed
+; never Q0.2 * Q0.3                    ; never both contactors at once
+; always /I0.12 -&gt; within 20ms /Q0.2   ; the output drops within 20 ms of a stop
+; always I0.0 -&gt; next Q0.2             ; the output follows the start in the next scan
+; assume /(I0.0 * I0.1)                ; the two sensors are never made at once
+; cover Q0.2                           ; the output can come on
+</source>
+        <translation>; Det som måste gälla i varje cykel, för varje insignalsföljd: en egenskap per rad.
+; Ta bort &apos;;&apos; före en rad för att använda den, med operanderna i detta projekt.
+; always Q0.2 -&gt; I0.12                 ; utgången bara med stoppkretsen sluten
+; never Q0.2 * Q0.3                    ; aldrig båda kontaktorerna samtidigt
+; always /I0.12 -&gt; within 20ms /Q0.2   ; utgången faller inom 20 ms efter ett stopp
+; always I0.0 -&gt; next Q0.2             ; utgången följer starten i nästa cykel
+; assume /(I0.0 * I0.1)                ; de två givarna är aldrig påverkade samtidigt
+; cover Q0.2                           ; utgången kan slå till
+</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Open Counterexample</source>
+        <translation>Öppna motexempel</translation>
+    </message>
+    <message>
+        <source>Complete Word</source>
+        <translation>Komplettera ord</translation>
+    </message>
+    <message>
+        <source>Insert Example</source>
+        <translation>Infoga exempel</translation>
+    </message>
+    <message>
+        <source>Stop proving; the properties proved so far keep their results</source>
+        <translation>Sluta bevisa; de egenskaper som hunnit bevisas behåller sina resultat</translation>
+    </message>
+    <message>
+        <source>Run the chosen property&apos;s counterexample (or witness) in the simulator, with the waveform, stopped at its last scan</source>
+        <translation>Kör den valda egenskapens motexempel (eller vittne) i simulatorn, med vågform, stoppat efter dess sista cykel</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No properties yet. Write one a line, with conditions as in the code (operands, names, &lt;code&gt;/&lt;/code&gt;, &lt;code&gt;*&lt;/code&gt;, &lt;code&gt;+&lt;/code&gt;, parentheses):&lt;/p&gt;&lt;p&gt;&lt;code&gt;always A&lt;/code&gt;, &lt;code&gt;never A&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; within 20ms B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; next B&lt;/code&gt;, &lt;code&gt;assume A&lt;/code&gt;, &lt;code&gt;cover A&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Prove All&lt;/b&gt; proves each for every input sequence, or finds one that breaks it and opens it in the simulator.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Inga egenskaper ännu. Skriv en per rad, med villkor som i koden (operander, namn, &lt;code&gt;/&lt;/code&gt;, &lt;code&gt;*&lt;/code&gt;, &lt;code&gt;+&lt;/code&gt;, parenteser):&lt;/p&gt;&lt;p&gt;&lt;code&gt;always A&lt;/code&gt;, &lt;code&gt;never A&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; within 20ms B&lt;/code&gt;, &lt;code&gt;always A -&amp;gt; next B&lt;/code&gt;, &lt;code&gt;assume A&lt;/code&gt;, &lt;code&gt;cover A&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bevisa alla&lt;/b&gt; bevisar var och en för varje insignalsföljd, eller hittar en följd som bryter den och öppnar den i simulatorn.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Put a commented example of every kind of line in the text</source>
+        <translation>Infoga ett bortkommenterat exempel på varje sorts rad i texten</translation>
+    </message>
+    <message>
+        <source>%1 — Properties</source>
+        <translation>%1 — Egenskaper</translation>
+    </message>
+    <message>
+        <source>Saved with the project, beside its file, once it has one: its name with the extension .prop.</source>
+        <translation>Sparas med projektet, bredvid dess fil när det har en: dess namn med filändelsen .prop.</translation>
+    </message>
+    <message>
+        <source>Saved with the project as %1, which rungsmith-cli prove takes too.</source>
+        <translation>Sparas med projektet som %1, som även rungsmith-cli prove läser.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The properties have %n error(s), marked in the text: nothing is proved until they read.</source>
+        <translation>
+            <numerusform>Egenskaperna har %n fel, markerat i texten: inget bevisas förrän de går att läsa.</numerusform>
+            <numerusform>Egenskaperna har %n fel, markerade i texten: inget bevisas förrän de går att läsa.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write a property first: there is nothing to prove.</source>
+        <translation>Skriv en egenskap först: det finns inget att bevisa.</translation>
+    </message>
+    <message>
+        <source>Compiling %1...</source>
+        <translation>Kompilerar %1 …</translation>
+    </message>
+    <message>
+        <source>Property %1 of %2</source>
+        <translation>Egenskap %1 av %2</translation>
+    </message>
+    <message>
+        <source>Proving property %1 of %2...</source>
+        <translation>Bevisar egenskap %1 av %2 …</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>avbruten</translation>
+    </message>
+    <message>
+        <source>%1 proved, %2 failed, %3 unknown</source>
+        <translation>%1 bevisade, %2 brutna, %3 okända</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1.</source>
+        <translation>Avbrutet: %1.</translation>
+    </message>
+    <message>
+        <source>The properties or the project changed since this proof; Prove All again for results of the text as it is now.</source>
+        <translation>Egenskaperna eller projektet har ändrats sedan detta bevis; välj Bevisa alla igen för resultat av texten som den är nu.</translation>
+    </message>
+    <message>
+        <source>Open Witness</source>
+        <translation>Öppna vittne</translation>
     </message>
 </context>
 <context>
