@@ -23,7 +23,8 @@ set(_docdir ${CMAKE_INSTALL_DATADIR}/doc/rungsmith)
 # The IDE opens the first example itself (compiled in); these are for users to
 # copy and for rungsmith-cli.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/examples/
-    DESTINATION ${_datadir}/rungsmith/examples FILES_MATCHING PATTERN "*.sps" PATTERN "*.scn")
+    DESTINATION ${_datadir}/rungsmith/examples FILES_MATCHING PATTERN "*.sps" PATTERN "*.scn"
+    PATTERN "*.prop")
 
 # The file types are the command line's as much as the IDE's.
 install(FILES ${_packaging}/rungsmith-mime.xml

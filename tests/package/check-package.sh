@@ -72,6 +72,7 @@ for path in \
     ./usr/bin/rungsmith \
     ./usr/bin/rungsmith-cli \
     ./usr/share/rungsmith/examples/muting.sps \
+    ./usr/share/rungsmith/examples/muting.prop \
     ./usr/share/rungsmith/examples/press-line.sps \
     ./usr/share/rungsmith/examples/safety-cell.sps \
     ./usr/share/rungsmith/examples/safety-cell-press.scn \
