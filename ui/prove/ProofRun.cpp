@@ -181,7 +181,6 @@ bool ProofRun::start(ProjectDocument* document, const prove::PropertyFile& file,
     m_job = job;
     m_watcher.setFuture(QtConcurrent::run([job] { job->run(); }));
     m_poll.start();
-    emit progress(0, job->total);
     return true;
 }
 

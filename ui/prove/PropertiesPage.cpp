@@ -97,7 +97,13 @@ PropertiesPage::PropertiesPage(QWidget* parent)
     });
     m_progress->setObjectName(QStringLiteral("proofProgress"));
     m_progress->setMaximumWidth(220);
-    m_progress->hide();
+    m_toolBar->addAction(m_cancel);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_openCounterexample);
+    m_toolBar->addSeparator();
+    // A tool bar shows and hides its widgets through their actions.
+    m_progressShown = m_toolBar->addWidget(m_progress);
+    m_progressShown->setVisible(false);
 
     m_editor->setObjectName(QStringLiteral("propertiesEditor"));
     m_editor->setProjectUndo(false);
@@ -173,12 +179,7 @@ PropertiesPage::PropertiesPage(QWidget* parent)
 }
 
 void PropertiesPage::setProveAllAction(QAction* action) {
-    m_toolBar->addAction(action);
-    m_toolBar->addAction(m_cancel);
-    m_toolBar->addSeparator();
-    m_toolBar->addAction(m_openCounterexample);
-    m_toolBar->addSeparator();
-    m_toolBar->addWidget(m_progress);
+    m_toolBar->insertAction(m_cancel, action);
 }
 
 void PropertiesPage::showProject(ProjectDocument* document) {
@@ -280,7 +281,7 @@ bool PropertiesPage::proveAll(const compiler::CheckOptions& options) {
     m_results->setProperties(m_run.properties());
     m_progress->setRange(0, static_cast<int>(m_run.properties().size()));
     m_progress->setValue(0);
-    m_progress->show();
+    m_progressShown->setVisible(true);
     setStatus(tr("Compiling %1...").arg(m_document->displayName()));
     updateActions();
     emit provingChanged();
@@ -304,7 +305,7 @@ void PropertiesPage::takeProofs() {
 
 void PropertiesPage::finished(const QString& error, bool cancelled) {
     takeProofs();
-    m_progress->hide();
+    m_progressShown->setVisible(false);
     const int shown = static_cast<int>(m_shownProofs);
     if (!error.isEmpty()) {
         m_results->setNotProved(0, error);

@@ -83,7 +83,8 @@ private:
     QAction* m_openCounterexample;
     QAction* m_complete;
     QProgressBar* m_progress;
-    QWidget* m_note; // a text without a property yet: what to write
+    QAction* m_progressShown; // the bar's place on the tool bar
+    QWidget* m_note;          // a text without a property yet: what to write
     QPushButton* m_insertExample;
     QLabel* m_status;
     PropertyEditor* m_editor;

@@ -21,6 +21,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolBar>
@@ -140,10 +141,18 @@ TEST_F(PropertiesPageTest, CompletionOffersTheKeywordsAndTheProjectsOperands) {
     }));
     EXPECT_EQ(editor()->completionsFor(QStringLiteral("stop")), QStringList{"StopCircuit"});
 
-    // Typing a word's second letter opens the list.
+    // Typing a word's second letter opens the list, and Ctrl+Space after the first.
     typeText("");
     editor()->setFocus();
     QTest::keyClicks(editor(), QStringLiteral("ne"));
+    EXPECT_TRUE(editor()->isListActive());
+    editor()->cancelList();
+    typeText("always ");
+    editor()->setFocus();
+    editor()->SendScintilla(QsciScintillaBase::SCI_DOCUMENTEND);
+    QTest::keyClick(editor(), Qt::Key_Q);
+    EXPECT_FALSE(editor()->isListActive());
+    QTest::keyClick(editor(), Qt::Key_Space, Qt::ControlModifier);
     EXPECT_TRUE(editor()->isListActive());
 }
 
@@ -195,6 +204,43 @@ TEST_F(PropertiesPageTest, ProveAllGivesARowPerPropertyProvedOrFailed) {
     int index = -1;
     editor()->getCursorPosition(&line, &index);
     EXPECT_EQ(line, 2);
+}
+
+TEST_F(PropertiesPageTest, ProgressCountsThePropertiesAndCancelStopsTheRun) {
+    showProperties();
+    QSignalSpy proving(page(), &rs::ui::PropertiesPage::provingChanged);
+    action("proveAllAction")->trigger();
+    EXPECT_TRUE(page()->isProving());
+    auto* bar = page()->findChild<QProgressBar*>(QStringLiteral("proofProgress"));
+    ASSERT_NE(bar, nullptr);
+    // The tool bar shows the bar through its action.
+    auto* toolBar = page()->findChild<QToolBar*>(QStringLiteral("propertiesToolBar"));
+    QAction* barShown = nullptr;
+    for (QAction* shown : toolBar->actions())
+        if (toolBar->widgetForAction(shown) == bar)
+            barShown = shown;
+    ASSERT_NE(barShown, nullptr);
+    EXPECT_TRUE(barShown->isVisible());
+    EXPECT_EQ(bar->maximum(), 2); // two properties; the assumption-free file has no other
+    EXPECT_EQ(page()->statusText(), QStringLiteral("Compiling line.sps..."));
+    EXPECT_TRUE(page()->cancelAction()->isEnabled());
+    EXPECT_FALSE(action("proveAllAction")->isEnabled());
+
+    // What was not proved when Cancel came says so; the window can prove again.
+    page()->cancelAction()->trigger();
+    ASSERT_TRUE(QTest::qWaitFor([this] { return !page()->isProving(); }, kProofMs));
+    EXPECT_EQ(proving.size(), 2);
+    EXPECT_FALSE(barShown->isVisible());
+    EXPECT_TRUE(page()->statusText().startsWith(QStringLiteral("Cancelled: ")))
+        << page()->statusText().toStdString();
+    for (int row = 0; row < 2; ++row)
+        EXPECT_TRUE(resultOf(row) == QStringLiteral("not proved") || results()->proofAt(row))
+            << resultOf(row).toStdString();
+    EXPECT_FALSE(page()->cancelAction()->isEnabled());
+    EXPECT_TRUE(action("proveAllAction")->isEnabled());
+    ASSERT_TRUE(proveAll());
+    EXPECT_EQ(resultOf(0), QStringLiteral("proved"));
+    EXPECT_EQ(resultOf(1), QStringLiteral("failed"));
 }
 
 TEST_F(PropertiesPageTest, SavingTheProjectWritesThePropertiesBesideIt) {
