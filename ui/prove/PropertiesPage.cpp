@@ -207,7 +207,8 @@ void PropertiesPage::showProject(ProjectDocument* document) {
         connect(document, &ProjectDocument::permissionChanged, this, &PropertiesPage::updateTitle);
     }
     if (m_provedDocument != document) {
-        // The rows are another project's.
+        // The rows, and a proof still running, are another project's.
+        m_run.cancel();
         m_results->setProperties({});
         setStatus({});
     }
@@ -289,6 +290,8 @@ bool PropertiesPage::proveAll(const compiler::CheckOptions& options) {
 }
 
 void PropertiesPage::progress(int index, int total) {
+    if (m_provedDocument != m_document)
+        return;
     takeProofs();
     m_progress->setRange(0, total);
     m_progress->setValue(index);
@@ -304,8 +307,13 @@ void PropertiesPage::takeProofs() {
 }
 
 void PropertiesPage::finished(const QString& error, bool cancelled) {
-    takeProofs();
     m_progressShown->setVisible(false);
+    if (m_provedDocument != m_document) { // cancelled as another project came
+        updateActions();
+        emit provingChanged();
+        return;
+    }
+    takeProofs();
     const int shown = static_cast<int>(m_shownProofs);
     if (!error.isEmpty()) {
         m_results->setNotProved(0, error);

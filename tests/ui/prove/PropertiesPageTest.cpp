@@ -243,6 +243,22 @@ TEST_F(PropertiesPageTest, ProgressCountsThePropertiesAndCancelStopsTheRun) {
     EXPECT_EQ(resultOf(1), QStringLiteral("failed"));
 }
 
+TEST_F(PropertiesPageTest, AnotherProjectsPropertiesCancelAProofAndShowNoneOfItsRows) {
+    showProperties();
+    rs::ui::ProjectDocument* first = document();
+    ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("other.sps"), kProject)).isEmpty());
+    ASSERT_NE(window.documents().back(), first);
+    ASSERT_TRUE(window.showPage({PageRef::Kind::Properties, first}));
+    action("proveAllAction")->trigger();
+    ASSERT_TRUE(page()->isProving());
+    ASSERT_TRUE(window.showPage({PageRef::Kind::Properties, window.documents().back()}));
+    ASSERT_TRUE(QTest::qWaitFor([this] { return !page()->isProving(); }, kProofMs));
+    EXPECT_EQ(page()->document(), window.documents().back());
+    EXPECT_EQ(results()->topLevelItemCount(), 0);
+    EXPECT_TRUE(page()->statusText().isEmpty()) << page()->statusText().toStdString();
+    EXPECT_TRUE(action("proveAllAction")->isEnabled());
+}
+
 TEST_F(PropertiesPageTest, SavingTheProjectWritesThePropertiesBesideIt) {
     showProperties();
     const QByteArray changed = "never Q0.2 * /I0.12\n";
