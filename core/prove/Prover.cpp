@@ -479,6 +479,8 @@ std::vector<Verdict> proveProperties(const std::vector<compiler::UnitImage>& ima
             else if (verdict.status == Verdict::Status::Proved)
                 verdict.status = Verdict::Status::Unreachable;
         }
+        if (options.verdictFound)
+            options.verdictFound(verdict);
         verdicts.push_back(std::move(verdict));
     }
     return verdicts;

@@ -17,10 +17,15 @@
 // CaDiCaL (docs/prove.md).
 namespace rs::prove {
 
+struct Verdict;
+
 struct ProofOptions {
     int maxDepth = 200;                          // scans
     std::chrono::milliseconds timeLimit{60'000}; // per property
     std::function<bool()> cancelled;             // asked while solving
+    // Told each verdict as soon as it is known, in file order, on the
+    // prover's thread: for a window that shows results as they come.
+    std::function<void(const Verdict&)> verdictFound;
 };
 
 // The inputs of one scan: every input the model has, with its value.

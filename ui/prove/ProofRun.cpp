@@ -64,15 +64,15 @@ struct ProofRun::Job {
     std::string fileName;
     sim::OperandNames names;
     std::atomic<bool> cancel = false;
-    std::atomic<int> current = 0; // the property being proved
+    std::atomic<int> current = 0; // the property being proved: how many are done
     int total = 0;
     int compileErrors = 0;
     std::mutex mutex; // guards proofs
     std::vector<PropertyProof> proofs;
 
     void run();
-    PropertyProof prove(const std::vector<compiler::UnitImage>& images,
-                        const prove::Property& property);
+    PropertyProof proof(const std::vector<compiler::UnitImage>& images,
+                        const prove::Verdict& verdict, const prove::ProofOptions& options);
 };
 
 void ProofRun::Job::run() {
@@ -82,37 +82,25 @@ void ProofRun::Job::run() {
         compileErrors = compiled.errors();
         return;
     }
-    int index = 0;
-    for (const prove::Property& property : file.properties) {
-        if (property.kind == prove::Property::Kind::Assume)
-            continue;
-        if (cancel)
-            return;
-        current = index++;
-        PropertyProof proof = prove(compiled.images, property);
-        if (cancel) // the solver stopped early: what it says is no finding
-            return;
-        const std::lock_guard lock(mutex);
-        proofs.push_back(std::move(proof));
-    }
-}
-
-PropertyProof ProofRun::Job::prove(const std::vector<compiler::UnitImage>& images,
-                                   const prove::Property& property) {
-    // The property with the file's assumptions, so that each is a step the
-    // window can count and cancel between.
-    prove::PropertyFile one;
-    one.cycleMs = file.cycleMs;
-    for (const prove::Property& assumption : file.properties)
-        if (assumption.kind == prove::Property::Kind::Assume)
-            one.properties.push_back(assumption);
-    one.properties.push_back(property);
     prove::ProofOptions options;
     options.cancelled = [this] {
         return cancel.load(std::memory_order_relaxed);
     };
-    const prove::Verdict verdict = prove::proveProperties(images, one, options).front();
+    options.verdictFound = [&](const prove::Verdict& verdict) {
+        if (cancel) // the solver stopped early: what it says is no finding
+            return;
+        PropertyProof proof = this->proof(compiled.images, verdict, options);
+        const std::lock_guard lock(mutex);
+        proofs.push_back(std::move(proof));
+        current = static_cast<int>(proofs.size());
+    };
+    prove::proveProperties(compiled.images, file, options);
+}
 
+PropertyProof ProofRun::Job::proof(const std::vector<compiler::UnitImage>& images,
+                                   const prove::Verdict& verdict,
+                                   const prove::ProofOptions& options) {
+    const prove::Property& property = *verdict.property;
     PropertyProof proof;
     proof.line = property.line;
     proof.text = QString::fromStdString(property.text).trimmed();
@@ -123,7 +111,7 @@ PropertyProof ProofRun::Job::prove(const std::vector<compiler::UnitImage>& image
     if (proof.status == PropertyProof::Status::Failed ||
         proof.status == PropertyProof::Status::Covered) {
         const prove::CounterexampleScenario scenario =
-            prove::writeCounterexample(images, one, verdict, names, fileName);
+            prove::writeCounterexample(images, file, verdict, names, fileName);
         if (scenario.reproduced) {
             proof.scenario = QString::fromStdString(scenario.text);
         } else {

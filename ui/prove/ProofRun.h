@@ -38,9 +38,9 @@ struct PropertyProof {
 };
 
 // Prove All: the project compiled as Build > Compile compiles it, then every
-// property proved on a worker thread, one after another with the file's
-// assumptions, so that the window stays usable, tells how far it got, and a
-// cancel stops the solver. A counterexample is turned into a scenario and
+// property proved on a worker thread, each result shown as soon as it is
+// known, so that the window stays usable, tells how far it got, and a cancel
+// stops the solver. A counterexample is turned into a scenario and
 // replayed by the simulator there too; one that does not replay is reported
 // as unknown, as the command line does.
 class ProofRun : public QObject {
