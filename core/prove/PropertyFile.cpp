@@ -17,6 +17,8 @@ bool isOperandCharacter(char c) {
            (static_cast<unsigned char>(c) & 0x80);
 }
 
+constexpr int kMaxNesting = 64;
+
 Condition node(Condition::Kind kind, int column) {
     Condition condition;
     condition.kind = kind;
@@ -94,6 +96,19 @@ private:
     Condition primary() {
         skipSpace();
         const std::size_t start = m_at;
+        // Each level is a call: a line of ten thousand '(' must not end the stack.
+        if (++m_depth > kMaxNesting) {
+            fail(start, "a condition nests at most " + std::to_string(kMaxNesting) +
+                            " parentheses and negations deep");
+            --m_depth;
+            return node(Condition::Kind::Bit, column(start));
+        }
+        Condition result = nested(start);
+        --m_depth;
+        return result;
+    }
+
+    Condition nested(std::size_t start) {
         if (take("/")) {
             Condition negation = node(Condition::Kind::Not, column(start));
             negation.children.push_back(primary());
@@ -217,6 +232,7 @@ private:
     const sim::OperandNames& m_names;
     std::string m_error;
     std::size_t m_errorAt = 0;
+    int m_depth = 0;
 };
 
 std::string_view withoutComment(std::string_view line) {

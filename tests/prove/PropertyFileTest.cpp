@@ -93,6 +93,21 @@ TEST(PropertyFileTest, SaysWhereALineIsWrong) {
     }
 }
 
+TEST(PropertyFileTest, RefusesConditionsNestedTooDeep) {
+    const std::string deep = "always " + std::string(100000, '(') + "Q0.2" +
+                             std::string(100000, ')') + "\nnever " + std::string(5000, '/') +
+                             "Q0.2\n";
+    const PropertyFile file = parse(deep);
+    ASSERT_EQ(file.diagnostics.size(), 2u);
+    EXPECT_EQ(file.diagnostics[0].line, 1);
+    EXPECT_EQ(file.diagnostics[0].column, 8 + 64);
+    EXPECT_NE(file.diagnostics[0].message.find("at most 64"), std::string::npos);
+    EXPECT_EQ(file.diagnostics[1].line, 2);
+    const PropertyFile fine =
+        parse("always " + std::string(60, '(') + "Q0.2" + std::string(60, ')') + "\n");
+    EXPECT_TRUE(fine.diagnostics.empty());
+}
+
 TEST(PropertyFileTest, WarnsWhenADurationIsNotWholeCycles) {
     const PropertyFile file = parse("always EStop -> within 25ms Q0.2\n");
     ASSERT_EQ(file.diagnostics.size(), 1u);
