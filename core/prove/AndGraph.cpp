@@ -100,26 +100,4 @@ void AndGraph::evaluate(std::vector<std::uint64_t>& values,
         values[node] = value(values, m_fanin[node].left) & value(values, m_fanin[node].right);
 }
 
-std::vector<std::uint32_t> AndGraph::gatesOf(const std::vector<Lit>& roots) const {
-    std::vector<bool> seen(m_fanin.size(), false);
-    std::vector<std::uint32_t> stack;
-    for (Lit root : roots)
-        stack.push_back(nodeOf(root));
-    std::vector<std::uint32_t> gates;
-    while (!stack.empty()) {
-        const std::uint32_t node = stack.back();
-        stack.pop_back();
-        if (node == 0 || seen[node])
-            continue;
-        seen[node] = true;
-        if (m_fanin[node].left == 0)
-            continue;
-        gates.push_back(node);
-        stack.push_back(nodeOf(m_fanin[node].left));
-        stack.push_back(nodeOf(m_fanin[node].right));
-    }
-    std::sort(gates.begin(), gates.end());
-    return gates;
-}
-
 } // namespace rs::prove

@@ -51,8 +51,6 @@ public:
     // Only these gates, in ascending order (a gate's fanins come before it).
     void evaluate(std::vector<std::uint64_t>& values,
                   const std::vector<std::uint32_t>& gates) const;
-    // The gates the literals depend on, in ascending order.
-    std::vector<std::uint32_t> gatesOf(const std::vector<Lit>& roots) const;
     static std::uint64_t value(const std::vector<std::uint64_t>& values, Lit a) {
         return values[nodeOf(a)] ^ (isNegated(a) ? ~std::uint64_t{0} : 0);
     }

@@ -138,31 +138,10 @@ PropertyCircuit buildCircuit(ScanModel& model, const Property& property) {
 
 // The state bits the literals depend on, through any number of scans.
 std::vector<bool> coneOfInfluence(const ScanModel& model, const std::vector<Lit>& roots) {
-    const AndGraph& g = model.graph();
-    std::vector<int> stateOf(g.nodes(), -1);
-    for (std::size_t i = 0; i < model.state().size(); ++i)
-        stateOf[nodeOf(model.state()[i].current)] = static_cast<int>(i);
-    std::vector<bool> seen(g.nodes(), false);
     std::vector<bool> cone(model.state().size(), false);
-    std::vector<std::uint32_t> stack;
-    for (Lit root : roots)
-        stack.push_back(nodeOf(root));
-    while (!stack.empty()) {
-        const std::uint32_t node = stack.back();
-        stack.pop_back();
-        if (node == 0 || seen[node])
-            continue;
-        seen[node] = true;
-        if (g.isVariable(node)) {
-            if (const int state = stateOf[node]; state >= 0) {
-                cone[static_cast<std::size_t>(state)] = true;
-                stack.push_back(nodeOf(model.state()[static_cast<std::size_t>(state)].next));
-            }
-            continue;
-        }
-        stack.push_back(nodeOf(g.left(node)));
-        stack.push_back(nodeOf(g.right(node)));
-    }
+    for (std::uint32_t node : model.cone(roots))
+        if (const int state = model.stateOf(node); state >= 0)
+            cone[static_cast<std::size_t>(state)] = true;
     return cone;
 }
 
@@ -170,13 +149,7 @@ std::vector<bool> coneOfInfluence(const ScanModel& model, const std::vector<Lit>
 // not read): a walk that marks what it saw with a number of its own.
 class ConeCheck {
 public:
-    explicit ConeCheck(const ScanModel& model)
-        : m_model(model), m_stateOf(model.graph().nodes(), -1), m_seen(model.graph().nodes(), 0) {
-        for (std::size_t i = 0; i < model.state().size(); ++i)
-            m_stateOf[nodeOf(model.state()[i].current)] = static_cast<int>(i);
-    }
-
-    int stateOf(std::uint32_t node) const { return m_stateOf[node]; }
+    explicit ConeCheck(const ScanModel& model) : m_model(model), m_seen(model.graph().nodes(), 0) {}
 
     bool within(Lit literal, const std::vector<bool>& cone) {
         const AndGraph& g = m_model.graph();
@@ -189,7 +162,7 @@ public:
                 continue;
             m_seen[node] = m_walk;
             if (g.isVariable(node)) {
-                const int state = m_stateOf[node];
+                const int state = m_model.stateOf(node);
                 if (state < 0 || !cone[static_cast<std::size_t>(state)])
                     return false;
                 continue;
@@ -202,7 +175,6 @@ public:
 
 private:
     const ScanModel& m_model;
-    std::vector<int> m_stateOf;
     std::vector<std::uint32_t> m_seen;
     std::vector<std::uint32_t> m_stack;
     std::uint32_t m_walk = 0;
@@ -227,7 +199,11 @@ std::vector<bool> survivesSimulation(const ScanModel& model, Lit assumption,
             roots.push_back(model.state()[i].next);
         }
     }
-    const std::vector<std::uint32_t> gates = g.gatesOf(roots);
+    std::vector<std::uint32_t> gates;
+    for (std::uint32_t node : model.cone(roots))
+        if (node != 0 && !g.isVariable(node))
+            gates.push_back(node);
+    std::sort(gates.begin(), gates.end()); // fanins first
     std::vector<std::uint32_t> inputNodes;
     for (std::uint32_t node = 1; node < g.nodes(); ++node)
         if (g.isVariable(node) && !isState[node])
@@ -433,7 +409,7 @@ std::vector<Verdict> proveProperties(const std::vector<compiler::UnitImage>& ima
         std::vector<Lit> bits;
         for (const Word& word : model.stateWords())
             if (word.width() == 1 &&
-                cone[static_cast<std::size_t>(check.stateOf(nodeOf(word.bits[0])))])
+                cone[static_cast<std::size_t>(model.stateOf(nodeOf(word.bits[0])))])
                 bits.push_back(word.bits[0]);
         if (bits.size() <= 48)
             for (std::size_t i = 0; i < bits.size(); ++i)

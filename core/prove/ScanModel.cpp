@@ -215,20 +215,6 @@ WordPlace wordPlace(const lang::Address& a) {
     }
 }
 
-bool isWordAddress(AddressKind kind) {
-    switch (kind) {
-    case AddressKind::Register:
-    case AddressKind::DoubleRegister:
-    case AddressKind::DoubleRegisterLow:
-    case AddressKind::DoubleRegisterHigh:
-    case AddressKind::SystemRegister:
-    case AddressKind::AnalogInput:
-        return true;
-    default:
-        return false;
-    }
-}
-
 constexpr Cell kChannelFault = cell(Area::SystemRegister, 16); // SR_ASi_Slave_Chanf
 constexpr int kStepNew = 0;
 constexpr int kSysInit = 9;
@@ -1011,8 +997,10 @@ void ScanModel::buildScan() {
 Word ScanModel::addState(int width, std::int64_t initial) {
     Word word = m_words.variables(width);
     m_stateWords.push_back(word);
+    m_stateOfNode.resize(m_graph.nodes(), -1);
     for (int i = 0; i < width; ++i) {
-        m_stateIndex[word.bits[static_cast<std::size_t>(i)]] = m_state.size();
+        m_stateOfNode[nodeOf(word.bits[static_cast<std::size_t>(i)])] =
+            static_cast<std::int32_t>(m_state.size());
         m_state.push_back({word.bits[static_cast<std::size_t>(i)], kFalse,
                            ((initial >> std::min(i, 63)) & 1) != 0});
     }
@@ -1023,8 +1011,9 @@ void ScanModel::setNext(const Word& current, const Word& next) {
     const Word extended = m_words.extended(next, current.width());
     for (int i = 0; i < current.width(); ++i) {
         const Lit bit = current.bits[static_cast<std::size_t>(i)];
-        if (auto at = m_stateIndex.find(bit); at != m_stateIndex.end())
-            m_state[at->second].next = extended.bits[static_cast<std::size_t>(i)];
+        if (const int state = stateOf(nodeOf(bit)); state >= 0)
+            m_state[static_cast<std::size_t>(state)].next =
+                extended.bits[static_cast<std::size_t>(i)];
     }
 }
 
@@ -1042,9 +1031,39 @@ Word ScanModel::valueAfterScan(const lang::Address& address) {
         return at->second.activeNow;
     }
     ScanBuilder builder(*this);
-    if (isWordAddress(address.kind))
+    if (sim::readsAsNumber(address.kind))
         return builder.readWord(*unit, address);
     return m_words.bit(builder.readBit(*unit, address));
+}
+
+int ScanModel::stateOf(std::uint32_t node) const {
+    return node < m_stateOfNode.size() ? m_stateOfNode[node] : -1;
+}
+
+std::vector<std::uint32_t> ScanModel::cone(const std::vector<Lit>& roots) const {
+    std::vector<bool> seen(m_graph.nodes(), false);
+    std::vector<std::uint32_t> stack{0};
+    for (Lit root : roots)
+        stack.push_back(nodeOf(root));
+    std::vector<std::uint32_t> nodes;
+    while (!stack.empty()) {
+        const std::uint32_t node = stack.back();
+        stack.pop_back();
+        if (seen[node])
+            continue;
+        seen[node] = true;
+        nodes.push_back(node);
+        if (node == 0)
+            continue;
+        if (m_graph.isVariable(node)) {
+            if (const int state = stateOf(node); state >= 0)
+                stack.push_back(nodeOf(m_state[static_cast<std::size_t>(state)].next));
+            continue;
+        }
+        stack.push_back(nodeOf(m_graph.left(node)));
+        stack.push_back(nodeOf(m_graph.right(node)));
+    }
+    return nodes;
 }
 
 const ScanModel::TimerState* ScanModel::timerState(int station, int slot) const {

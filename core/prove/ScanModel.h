@@ -59,6 +59,11 @@ public:
     void setNext(const Word& current, const Word& next);
 
     const std::vector<StateBit>& state() const { return m_state; }
+    // The state bit whose current value is `node`, or -1.
+    int stateOf(std::uint32_t node) const;
+    // Every node the literals depend on through any number of scans (at a
+    // state bit, its value after the scan too), node 0 first.
+    std::vector<std::uint32_t> cone(const std::vector<Lit>& roots) const;
     // The state as words, as added: a bit is a word of one.
     const std::vector<Word>& stateWords() const { return m_stateWords; }
     // Each timer's counter and how far it counts.
@@ -94,7 +99,7 @@ private:
     std::vector<StateBit> m_state;
     std::vector<Word> m_stateWords;
     std::vector<std::pair<Word, std::int64_t>> m_timerCounters;
-    std::map<Lit, std::size_t> m_stateIndex; // current literal -> index in m_state
+    std::vector<std::int32_t> m_stateOfNode; // node -> index in m_state, or -1
     std::vector<ScanInput> m_inputs;
     std::vector<std::string> m_abstractions;
     std::vector<Lit> m_invariants;

@@ -7,35 +7,14 @@ namespace rs::prove {
 
 Unrolling::Unrolling(const ScanModel& model, bool freeStart, const std::vector<Lit>& roots)
     : m_model(model), m_freeStart(freeStart), m_solver(std::make_unique<CaDiCaL::Solver>()) {
-    const AndGraph& graph = model.graph();
-    m_stateOf.assign(graph.nodes(), -1);
-    for (std::size_t i = 0; i < model.state().size(); ++i)
-        m_stateOf[nodeOf(model.state()[i].current)] = static_cast<std::int32_t>(i);
-    m_place.assign(graph.nodes(), -1);
+    m_place.assign(model.graph().nodes(), -1);
     if (roots.empty()) {
-        for (std::uint32_t node = 0; node < graph.nodes(); ++node)
+        for (std::uint32_t node = 0; node < model.graph().nodes(); ++node)
             m_place[node] = static_cast<std::int32_t>(node);
-        m_coneSize = graph.nodes();
+        m_coneSize = model.graph().nodes();
     } else {
-        std::vector<std::uint32_t> stack{0};
-        for (Lit root : roots)
-            stack.push_back(nodeOf(root));
-        while (!stack.empty()) {
-            const std::uint32_t node = stack.back();
-            stack.pop_back();
-            if (m_place[node] >= 0)
-                continue;
+        for (std::uint32_t node : model.cone(roots))
             m_place[node] = static_cast<std::int32_t>(m_coneSize++);
-            if (node == 0)
-                continue;
-            if (graph.isVariable(node)) {
-                if (const int state = m_stateOf[node]; state >= 0)
-                    stack.push_back(nodeOf(model.state()[static_cast<std::size_t>(state)].next));
-                continue;
-            }
-            stack.push_back(nodeOf(graph.left(node)));
-            stack.push_back(nodeOf(graph.right(node)));
-        }
     }
     m_true = newVariable();
     addClause({m_true});
@@ -82,7 +61,7 @@ int Unrolling::literal(Lit a, int frame) {
             continue;
         }
         if (graph.isVariable(node)) {
-            const int state = m_stateOf[node];
+            const int state = m_model.stateOf(node);
             if (state < 0 || (f == 0 && m_freeStart)) {
                 variable = newVariable();
             } else if (f == 0) {

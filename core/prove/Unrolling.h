@@ -51,8 +51,7 @@ private:
     // yet. Sized by the cone, not the model, so deep unrollings of a large
     // project stay small.
     std::vector<std::vector<int>> m_frames;
-    std::vector<std::int32_t> m_place;   // node -> place in the cone, or -1
-    std::vector<std::int32_t> m_stateOf; // node -> index in model.state(), or -1
+    std::vector<std::int32_t> m_place; // node -> place in the cone, or -1
     std::size_t m_coneSize = 0;
     int m_variables = 0;
     int m_true = 0;

@@ -47,19 +47,6 @@ bool flashing(int memory, std::int64_t t) {
     }
 }
 
-bool isWordKind(AddressKind kind) {
-    switch (kind) {
-    case AddressKind::Register:
-    case AddressKind::DoubleRegister:
-    case AddressKind::DoubleRegisterLow:
-    case AddressKind::DoubleRegisterHigh:
-    case AddressKind::SystemRegister:
-        return true;
-    default:
-        return false;
-    }
-}
-
 // Everything the steps of a scan read and write besides the code: what a
 // replay of the scan starts from.
 struct ScanState {
@@ -244,16 +231,14 @@ std::int64_t UnitEngine::read(const lang::Address& address) const {
     auto& memory = const_cast<UnitMemory&>(m_tiers->unit.memory);
     if (address.kind == AddressKind::Sequence)
         return activeStep(address.index);
-    if (isWordKind(address.kind))
-        return wordRef(memory, address).read();
-    if (address.kind == AddressKind::AnalogInput)
+    if (readsAsNumber(address.kind))
         return wordRef(memory, address).read();
     return bitRef(memory, address, false).read();
 }
 
 void UnitEngine::write(const lang::Address& address, std::int64_t value) {
     UnitMemory& memory = m_tiers->unit.memory;
-    if (isWordKind(address.kind) || address.kind == AddressKind::AnalogInput) {
+    if (readsAsNumber(address.kind)) {
         WordRef ref = wordRef(memory, address);
         const bool narrow = ref.kind == WordRef::Kind::Register;
         ref.write(std::clamp<std::int64_t>(value, narrow ? -32768 : INT32_MIN,

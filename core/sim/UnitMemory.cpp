@@ -24,6 +24,20 @@ BitRef byteRef(std::uint8_t* byte) {
 
 } // namespace
 
+bool readsAsNumber(AddressKind kind) {
+    switch (kind) {
+    case AddressKind::Register:
+    case AddressKind::DoubleRegister:
+    case AddressKind::DoubleRegisterLow:
+    case AddressKind::DoubleRegisterHigh:
+    case AddressKind::SystemRegister:
+    case AddressKind::AnalogInput:
+        return true;
+    default:
+        return false;
+    }
+}
+
 BitRef bitRef(UnitMemory& m, const lang::Address& a, bool forWriting) {
     switch (a.kind) {
     case AddressKind::Input:

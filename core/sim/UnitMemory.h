@@ -124,6 +124,10 @@ struct WordRef {
     bool isDouble() const { return kind == Kind::Double; }
 };
 
+// Whether a variable of this kind reads as a number (R, DR and its halves,
+// SR, IA) rather than as a bit, as scenarios, the GUI and the prover read it.
+bool readsAsNumber(lang::AddressKind kind);
+
 // The bit or word of `address` in `memory`; None when the memory has no such place.
 BitRef bitRef(UnitMemory& memory, const lang::Address& address, bool forWriting);
 WordRef wordRef(UnitMemory& memory, const lang::Address& address);

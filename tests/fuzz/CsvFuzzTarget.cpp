@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "project/ProjectFile.h"
 #include "project/Utf8Text.h"
 #include "project/VariableCsv.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 namespace {
+
+using rs::fuzz::fail;
 
 const char* kProject = "$name Csv\n"
                        "! id_pluto:00=000000000000\n"
@@ -22,11 +24,6 @@ const char* kProject = "$name Csv\n"
                        "Q0.2 = Start * Alpha\n"
                        "! pgm_pluto:01\n"
                        "S1.0_0\n";
-
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
 
 } // namespace
 

@@ -1,20 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "compiler/ImageCodec.h"
 #include "compiler/IntelHex.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <string_view>
 #include <vector>
 
 namespace {
 
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
+using rs::fuzz::fail;
 
 // Intel HEX: what reads writes back, and that text reads as the same data.
 void checkIntelHex(std::string_view text) {

@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "blocks/LibraryReader.h"
 #include "blocks/LibraryWriter.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 namespace {
 
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
+using rs::fuzz::fail;
 
 } // namespace
 

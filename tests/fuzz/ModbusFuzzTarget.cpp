@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "gateway/GatewayNode.h"
 #include "gateway/ModbusFrame.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 
 namespace {
 
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
+using rs::fuzz::fail;
 
 } // namespace
 

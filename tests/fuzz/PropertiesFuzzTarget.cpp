@@ -1,17 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "compiler/Compiler.h"
 #include "project/ProjectFile.h"
 #include "prove/Counterexample.h"
 #include "prove/Prover.h"
 #include "sim/Scenario.h"
 
-#include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 namespace {
+
+using rs::fuzz::fail;
 
 // A small program with every kind of state the prover models: a latch, an
 // edge, a timer, a sequence, saturating arithmetic.
@@ -30,11 +31,6 @@ const char* kProgram = "! id_pluto:00=000000000000\n"
                        "Q0.3 = I0.3\n"
                        "J(0) = /EStop\n";
 
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
-
 } // namespace
 
 // Any input: reading never crashes and its diagnostics point into the text;
@@ -46,13 +42,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const rs::sim::OperandNames names(read.project);
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const rs::prove::PropertyFile file = rs::prove::parseProperties(text, names);
-    const auto lines = static_cast<int>(std::count(text.begin(), text.end(), '\n') +
-                                        std::count(text.begin(), text.end(), '\r')) +
-                       1;
-    for (const auto& diagnostic : file.diagnostics)
-        if (diagnostic.line < 1 || diagnostic.line > lines || diagnostic.column < 1 ||
-            static_cast<std::size_t>(diagnostic.column) > size + 1)
-            fail("a diagnostic points outside the property file");
+    rs::fuzz::requireInside(text, file.diagnostics,
+                            "a diagnostic points outside the property file");
     if (rs::lang::errorCount(file.diagnostics))
         return 0;
     rs::prove::ProofOptions options;

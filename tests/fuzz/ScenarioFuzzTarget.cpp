@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "FuzzFailure.h"
+
 #include "compiler/Compiler.h"
 #include "project/ProjectFile.h"
 #include "sim/ScenarioRunner.h"
 
-#include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 namespace {
+
+using rs::fuzz::fail;
 
 const char* kProgram = "! id_pluto:00=000000000000\n"
                        "! type_pluto:00=A20,is3\n"
@@ -25,11 +26,6 @@ const char* kProgram = "! id_pluto:00=000000000000\n"
 // and 30 days of scans (the bound) take minutes.
 constexpr std::int64_t kRunAtMostMs = 10'000;
 
-[[noreturn]] void fail(const char* what) {
-    std::fprintf(stderr, "%s\n", what);
-    std::abort();
-}
-
 } // namespace
 
 // Any input: reading never crashes; diagnostics point into the text; a
@@ -40,13 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const rs::sim::OperandNames names(read.project);
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const rs::sim::Scenario scenario = rs::sim::parseScenario(text, names);
-    const auto lines = static_cast<int>(std::count(text.begin(), text.end(), '\n') +
-                                        std::count(text.begin(), text.end(), '\r')) +
-                       1;
-    for (const auto& diagnostic : scenario.diagnostics)
-        if (diagnostic.line < 1 || diagnostic.line > lines || diagnostic.column < 1 ||
-            static_cast<std::size_t>(diagnostic.column) > size + 1)
-            fail("a diagnostic points outside the scenario");
+    rs::fuzz::requireInside(text, scenario.diagnostics, "a diagnostic points outside the scenario");
     if (!scenario.diagnostics.empty())
         return 0;
     std::int64_t cycleMs = 10;
