@@ -4,6 +4,7 @@
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
 
+#include <algorithm>
 #include <memory>
 
 namespace rs::prove {
@@ -280,8 +281,18 @@ CounterexampleScenario writeCounterexample(const std::vector<compiler::UnitImage
                                     ? property.second
                                     : property.first;
     Shown shown = explain(simulation, wantedOf, property.kind != Property::Kind::Never);
-    if (witness) // what the witness reached: the expect holds
-        shown.value = simulation.value(shown.operand);
+    const std::int64_t actual = simulation.value(shown.operand);
+    if (witness) { // what the witness reached: the expect holds
+        shown.value = actual;
+    } else {
+        // A value the operand can hold that it does not have: what the
+        // property wanted, where the operand can hold that (S0.1 >= 0 can
+        // never be false).
+        const sim::ValueRange range = sim::valueRange(shown.operand);
+        shown.value = std::clamp(shown.value, range.low, range.high);
+        if (shown.value == actual)
+            shown.value = actual < range.high ? actual + 1 : actual - 1;
+    }
     const std::size_t scans = trace.size();
     std::string text = "; " + std::string(witness ? "witness for " : "counterexample to ") +
                        propertyFileName + ":" + std::to_string(property.line) + ": " +

@@ -222,6 +222,12 @@ private:
                          ", which is not in the project");
             return false;
         }
+        if (address.kind == lang::AddressKind::Sequence &&
+            !m_names.hasSequence(address.unit, address.index)) {
+            fail(at, "unit " + std::to_string(address.unit) + " has no sequence " +
+                         std::to_string(address.index));
+            return false;
+        }
         return true;
     }
 

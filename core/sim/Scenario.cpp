@@ -66,14 +66,14 @@ bool isBitOperand(const lang::Address& a) {
     return a.isBit() && a.kind != lang::AddressKind::AnalogInput;
 }
 
-struct ValueRange {
-    std::int64_t low;
-    std::int64_t high;
-    const char* what;
-};
+std::string rangeText(const ValueRange& range) {
+    if (range.low == 0 && range.high == 1)
+        return "0 or 1";
+    return std::to_string(range.low) + ".." + std::to_string(range.high);
+}
 
-// What the operand can hold: a value outside would be cut to fit, and the
-// scenario would test something other than what it says.
+} // namespace
+
 ValueRange valueRange(const lang::Address& a) {
     if (isBitOperand(a))
         return {0, 1, "a bit"};
@@ -89,14 +89,6 @@ ValueRange valueRange(const lang::Address& a) {
                 "a 32-bit value"};
     }
 }
-
-std::string rangeText(const ValueRange& range) {
-    if (range.low == 0 && range.high == 1)
-        return "0 or 1";
-    return std::to_string(range.low) + ".." + std::to_string(range.high);
-}
-
-} // namespace
 
 bool parseDuration(std::string_view text, std::int64_t& ms) {
     const std::string lower = lang::toLower(text);
@@ -169,8 +161,12 @@ OperandNames::OperandNames(const project::Project& project) {
                 }
     };
     add(project.program.preamble);
-    for (const auto& unit : project.program.units)
+    for (const auto& unit : project.program.units) {
         add(unit.declarations);
+        for (const auto& step : unit.steps)
+            m_sequences.emplace_back(step.address.unit, step.address.sequence);
+    }
+    std::sort(m_sequences.begin(), m_sequences.end());
     for (const auto& [station, options] : project.asiOptions)
         for (const auto& [slave, setup] : options.slaves)
             if (project::hasChannels(setup.type) && !slave.b)
@@ -202,6 +198,10 @@ std::string OperandNames::nameOf(const lang::Address& address) const {
         if (entry.address == address && !entry.ambiguous)
             return entry.spelling;
     return {};
+}
+
+bool OperandNames::hasSequence(int station, int sequence) const {
+    return std::binary_search(m_sequences.begin(), m_sequences.end(), std::pair(station, sequence));
 }
 
 bool OperandNames::hasStation(int station) const {

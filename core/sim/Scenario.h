@@ -54,6 +54,8 @@ public:
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
     bool hasStation(int station) const;
+    // Whether unit `station`'s program has sequence `sequence` (0: its PLC code).
+    bool hasSequence(int station, int sequence) const;
     // The declared name of the variable at `address`, as declared; empty when
     // it has none or its name is ambiguous.
     std::string nameOf(const lang::Address& address) const;
@@ -70,6 +72,7 @@ private:
     };
     std::vector<std::pair<std::string, Entry>> m_names; // folded name -> address
     std::vector<int> m_stations;
+    std::vector<std::pair<int, int>> m_sequences; // (station, sequence), sorted
     std::vector<lang::Address> m_channelSlaves;
 };
 
@@ -79,6 +82,16 @@ private:
 // the scenario's in total), text that is not UTF-8, and a scenario that
 // expects nothing.
 Scenario parseScenario(std::string_view text, const OperandNames& names);
+
+// What an operand can hold, which a `set` or `expect` must stay within: a
+// value outside would be cut to fit, and the scenario would test something
+// other than what it says.
+struct ValueRange {
+    std::int64_t low;
+    std::int64_t high;
+    const char* what; // "a bit", "a register", ...
+};
+ValueRange valueRange(const lang::Address& address);
 
 // "10ms", "2.5s", "2s50" (the language's notation), "1min"; false when malformed.
 bool parseDuration(std::string_view text, std::int64_t& ms);

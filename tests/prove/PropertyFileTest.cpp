@@ -80,7 +80,8 @@ TEST(PropertyFileTest, SaysWhereALineIsWrong) {
         {"assume Q0.2\n", 1, 1, "no property"},
         {"; nothing\n", 1, 1, "no property"},
         {"always (R0.5 > 99999999999)\n", 1, 16, "out of range"},
-        {"always S0.1\n", 1, 8, "compare it"},
+        {"always S0.0\n", 1, 8, "compare it"},
+        {"always (S0.0 = 0)\nalways S0.1 = 1\n", 2, 8, "unit 0 has no sequence 1"},
     };
     for (const BadLine& bad : cases) {
         const PropertyFile file = parse(bad.text);
