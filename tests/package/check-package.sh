@@ -73,6 +73,10 @@ for path in \
     ./usr/bin/rungsmith-cli \
     ./usr/share/rungsmith/examples/muting.sps \
     ./usr/share/rungsmith/examples/muting.prop \
+    ./usr/share/rungsmith/examples/estop.sps \
+    ./usr/share/rungsmith/examples/estop.prop \
+    ./usr/share/rungsmith/examples/two-hand.prop \
+    ./usr/share/rungsmith/examples/muting-wrong.prop \
     ./usr/share/rungsmith/examples/press-line.sps \
     ./usr/share/rungsmith/examples/safety-cell.sps \
     ./usr/share/rungsmith/examples/safety-cell-press.scn \
@@ -129,6 +133,11 @@ check_output=$(env -u LD_LIBRARY_PATH "$cli" check "$share/rungsmith/examples/mu
 grep -q "0 Error(s) detected Result=OK" <<<"$check_output" || fail "check printed: $check_output"
 "$cli" compile "$share/rungsmith/examples/muting.sps" -o "$scratch/files/muting.hps" >/dev/null ||
     fail "rungsmith-cli compile on the bundled example"
+# The prover (CaDiCaL linked in) proves the bundled example's properties.
+prove_output=$(env -u LD_LIBRARY_PATH "$cli" prove "$share/rungsmith/examples/estop.sps" \
+    "$share/rungsmith/examples/estop.prop" --cex "$scratch/files" 2>&1) ||
+    fail "rungsmith-cli prove on the bundled example: $prove_output"
+grep -q "^5 proved, 0 failed, 0 unknown$" <<<"$prove_output" || fail "prove printed: $prove_output"
 # The standard libraries are found from the program's own place, wherever
 # the package is unpacked.
 # (Read whole first: grep -q stops at the first match, and the list, long
