@@ -1066,16 +1066,14 @@ std::vector<std::uint32_t> ScanModel::cone(const std::vector<Lit>& roots) const 
     return nodes;
 }
 
-const ScanModel::TimerState* ScanModel::timerState(int station, int slot) const {
-    static thread_local TimerState state;
+std::optional<ScanModel::TimerState> ScanModel::timerState(int station, int slot) const {
     for (const auto& unit : m_units)
         if (unit->station == station && slot >= 0 &&
             static_cast<std::size_t>(slot) < unit->timersNow.size()) {
             const auto& t = unit->timersNow[static_cast<std::size_t>(slot)];
-            state = {t.ticks, t.lastInput, t.running, t.ranLast, t.cap};
-            return &state;
+            return TimerState{t.ticks, t.lastInput, t.running, t.ranLast, t.cap};
         }
-    return nullptr;
+    return std::nullopt;
 }
 
 } // namespace rs::prove

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -81,7 +82,7 @@ public:
         Lit ranLast;
         std::int64_t capTicks;
     };
-    const TimerState* timerState(int station, int slot) const;
+    std::optional<TimerState> timerState(int station, int slot) const;
 
     // The invariants the compiler knows: true in every reachable state, to be
     // proved with the property (a timer's counter within its cap, a sequence

@@ -94,7 +94,8 @@ void compareScans(const std::string& text, unsigned seed, int scans) {
                 << text;
         for (const auto& image : compiled.images)
             for (int slot = 0; slot < image.timers; ++slot) {
-                const auto* timer = model.timerState(image.station, slot);
+                const auto timer = model.timerState(image.station, slot);
+                ASSERT_TRUE(timer.has_value());
                 const auto& engine = simulation.unit(image.station)->timer(slot);
                 if (!(AndGraph::value(values, timer->ranLast) & 1))
                     continue; // a timer that did not run starts afresh: the rest is stale
