@@ -281,7 +281,9 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
     auto stopped = [&](int depth) {
         verdict.status = Verdict::Status::Unknown;
         verdict.depth = depth;
-        verdict.reason = options.cancelled && options.cancelled() ? "cancelled" : "time limit";
+        const bool cancelled = options.cancelled && options.cancelled();
+        verdict.why = cancelled ? Verdict::Why::Cancelled : Verdict::Why::TimeLimit;
+        verdict.reason = cancelled ? "cancelled" : "time limit";
         return verdict;
     };
     for (int k = 0; k < options.maxDepth; ++k) {
@@ -371,6 +373,7 @@ Verdict runEngines(ScanModel& model, const PropertyCircuit& circuit, Lit assumpt
     }
     verdict.status = Verdict::Status::Unknown;
     verdict.depth = options.maxDepth;
+    verdict.why = Verdict::Why::DepthReached;
     verdict.reason = "no counterexample within " + std::to_string(options.maxDepth) + " scans";
     return verdict;
 }
@@ -439,6 +442,7 @@ std::vector<Verdict> proveProperties(const std::vector<compiler::UnitImage>& ima
             if (const std::string problem = replayProblem(images, file, verdict);
                 !problem.empty()) {
                 verdict.status = Verdict::Status::Unknown;
+                verdict.why = Verdict::Why::NotRepeated;
                 verdict.reason =
                     model.abstractions().empty()
                         ? "internal error: the counterexample of " + std::to_string(verdict.depth) +

@@ -41,7 +41,10 @@ struct Verdict {
     } status = Status::Unknown;
     const Property* property = nullptr;
     int depth = 0;
-    std::string reason;             // why unknown
+    // Why unknown: the kind, for a window to word in its language, and in English.
+    enum class Why : std::uint8_t { None, DepthReached, TimeLimit, Cancelled, NotRepeated };
+    Why why = Why::None;
+    std::string reason;
     std::vector<ScanInputs> inputs; // Failed and Covered: the scans' inputs
     int invariants = 0;             // proved: the invariants the proof kept
     std::int64_t clauses = 0;       // of the last query

@@ -24,13 +24,18 @@ constexpr int kPollMs = 100;
 // The prover's reason for the user, in the window's language where it is one
 // the prover gives every time.
 QString reasonOf(const prove::Verdict& verdict, const prove::ProofOptions& options) {
-    if (verdict.reason == "cancelled")
+    switch (verdict.why) {
+    case prove::Verdict::Why::Cancelled:
         return ProofRun::tr("cancelled");
-    if (verdict.reason == "time limit")
+    case prove::Verdict::Why::TimeLimit:
         return ProofRun::tr("the time limit of %n s per property ran out", nullptr,
                             static_cast<int>(options.timeLimit.count() / 1000));
-    if (verdict.reason == "no counterexample within " + std::to_string(verdict.depth) + " scans")
+    case prove::Verdict::Why::DepthReached:
         return ProofRun::tr("no counterexample within %n scans", nullptr, verdict.depth);
+    case prove::Verdict::Why::NotRepeated:
+    case prove::Verdict::Why::None:
+        break;
+    }
     return QString::fromStdString(verdict.reason);
 }
 
