@@ -10,7 +10,6 @@ namespace rs::gateway {
 namespace {
 
 constexpr int kAdditionalDataFirst = 67;
-constexpr int kWriteMultipleRegisters = 16;
 constexpr int kValidBits = 1; // unit 1: the areas' valid bits
 
 } // namespace

@@ -13,9 +13,6 @@ namespace {
 
 using target::UnitType;
 
-constexpr int kReadHoldingRegisters = 3;
-constexpr int kWriteMultipleRegisters = 16;
-
 enum DataType : std::uint16_t { GlobalData = 0, LocalMemory = 1, LocalRegister = 2, Parameter = 3 };
 
 template <std::size_t N>

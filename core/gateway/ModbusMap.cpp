@@ -9,9 +9,6 @@ namespace rs::gateway {
 
 namespace {
 
-constexpr int kReadHoldingRegisters = 3;
-constexpr int kWriteMultipleRegisters = 16;
-
 void put(DataFromPluto& table, int address, std::uint32_t value) {
     table[static_cast<std::size_t>(address)] = static_cast<std::uint16_t>(value >> 16);
     table[static_cast<std::size_t>(address) + 1] = static_cast<std::uint16_t>(value & 0xFFFF);

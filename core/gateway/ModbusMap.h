@@ -20,6 +20,10 @@ struct ModbusRequest {
     std::vector<std::uint16_t> values; // function 16
 };
 
+// The two Modbus functions the gateway's tables answer.
+inline constexpr int kReadHoldingRegisters = 3;
+inline constexpr int kWriteMultipleRegisters = 16;
+
 // Standard Modbus exception codes.
 enum class ModbusException : std::uint8_t {
     None = 0,

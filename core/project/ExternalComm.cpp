@@ -8,7 +8,7 @@ namespace rs::project {
 
 namespace {
 
-int numberAttribute(const Annotation& record, std::string_view key, int fallback) {
+int extCommNumber(const Annotation& record, std::string_view key, int fallback) {
     const std::string text = record.value(key);
     if (text.empty())
         return fallback;
@@ -55,9 +55,9 @@ void readExternalCommRecord(const Annotation& record, std::map<int, ExternalComm
         throw ExternalCommRecordError{"@ext_comm needs a station 0-31 and an External Comm "
                                       "Block 0-3, as in ;@ext_comm 01 0 gateway=\"0\" "
                                       "packet=\"0\""};
-    ExternalCommBlock setting{numberAttribute(record, "gateway", -1),
-                              numberAttribute(record, "packet", -1),
-                              numberAttribute(record, "timeout_ms", kDefaultExternalTimeoutMs)};
+    ExternalCommBlock setting{extCommNumber(record, "gateway", -1),
+                              extCommNumber(record, "packet", -1),
+                              extCommNumber(record, "timeout_ms", kDefaultExternalTimeoutMs)};
     if (auto problem = externalCommProblem(setting))
         throw ExternalCommRecordError{"@ext_comm " + stationText(*station) + " " +
                                       std::to_string(*block) + ": " + *problem};

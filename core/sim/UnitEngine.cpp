@@ -47,8 +47,12 @@ bool flashing(int memory, std::int64_t t) {
     }
 }
 
+} // namespace
+
+namespace scan_replay {
+
 // Everything the steps of a scan read and write besides the code: what a
-// replay of the scan starts from.
+// replay of the scan starts from. Not file-local: UnitEngine::Tiers holds one.
 struct ScanState {
     UnitMemory memory;
     std::vector<engine::EdgeState> edges;
@@ -58,7 +62,7 @@ struct ScanState {
     int cycleMs = 0;
 };
 
-void save(const engine::UnitState& unit, ScanState& state) {
+static void save(const engine::UnitState& unit, ScanState& state) {
     state.memory = unit.memory;
     state.edges = unit.edges;
     state.timers = unit.timers;
@@ -67,7 +71,7 @@ void save(const engine::UnitState& unit, ScanState& state) {
     state.scan = unit.scan;
 }
 
-void restore(engine::UnitState& unit, const ScanState& state) {
+static void restore(engine::UnitState& unit, const ScanState& state) {
     unit.memory = state.memory;
     unit.edges = state.edges;
     unit.timers = state.timers;
@@ -76,7 +80,9 @@ void restore(engine::UnitState& unit, const ScanState& state) {
     unit.scan = state.scan;
 }
 
-} // namespace
+} // namespace scan_replay
+
+using scan_replay::ScanState;
 
 // The scan state and the three ways to run a step: the machine code where
 // there is some, else the fast interpreter, and the marking interpreter when

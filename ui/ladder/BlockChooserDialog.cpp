@@ -16,14 +16,6 @@
 
 namespace rs::ui {
 
-namespace {
-
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
-
 BlockChooserDialog::BlockChooserDialog(const blocks::LibrarySet& libraries, QWidget* parent)
     : QDialog(parent), m_filter(new QLineEdit(this)), m_list(new QListWidget(this)),
       m_description(new QTextBrowser(this)) {
@@ -97,12 +89,13 @@ void BlockChooserDialog::filter() {
     m_list->clear();
     for (std::size_t i = 0; i < m_blocks.size(); ++i) {
         const auto& [library, block] = m_blocks[i];
-        const QString name = fromUtf8(block->name);
+        const QString name = QString::fromStdString(block->name);
         if (!wanted.isEmpty() && !name.contains(wanted, Qt::CaseInsensitive) &&
             !BlockText::description(*block).contains(wanted, Qt::CaseInsensitive))
             continue;
         auto* item = new QListWidgetItem(
-            QStringLiteral("%1    (%2)").arg(name, fromUtf8(library->library.name)), m_list);
+            QStringLiteral("%1    (%2)").arg(name, QString::fromStdString(library->library.name)),
+            m_list);
         item->setData(Qt::UserRole, static_cast<uint>(i));
         item->setToolTip(BlockText::description(*block));
     }

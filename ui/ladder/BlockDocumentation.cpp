@@ -10,12 +10,8 @@ namespace rs::ui {
 
 namespace {
 
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
 QString escaped(const std::string& text) {
-    return fromUtf8(text).toHtmlEscaped();
+    return QString::fromStdString(text).toHtmlEscaped();
 }
 
 QString code(const std::string& text) {
@@ -57,14 +53,15 @@ QString BlockDocumentation::html(const blocks::LoadedLibrary& library,
     QString text = QStringLiteral("<h2>%1</h2>").arg(escaped(block.name));
     text += QStringLiteral("<p>%1</p>")
                 .arg(tr("Library %1, version %2. Block version %3.")
-                         .arg(fromUtf8(library.library.name), fromUtf8(library.library.version),
-                              fromUtf8(block.version))
+                         .arg(QString::fromStdString(library.library.name),
+                              QString::fromStdString(library.library.version),
+                              QString::fromStdString(block.version))
                          .toHtmlEscaped());
     if (block.kind == blocks::BlockKind::System)
         text += QStringLiteral("<p><i>%1</i></p>")
                     .arg(tr("A system block: the simulator carries out its instruction %1, which "
                             "the language cannot say.")
-                             .arg(fromUtf8(block.systemInstruction))
+                             .arg(QString::fromStdString(block.systemInstruction))
                              .toHtmlEscaped());
     text += paragraphs(BlockText::description(block));
     text += pinsTable(block);
@@ -86,7 +83,7 @@ QString BlockDocumentation::pinsTable(const blocks::BlockDefinition& block) {
         const bool input = pin.direction == blocks::PinDirection::In;
         QString open;
         if (input && pin.defaultValue)
-            open = tr("default %1").arg(fromUtf8(*pin.defaultValue));
+            open = tr("default %1").arg(QString::fromStdString(*pin.defaultValue));
         else if (input)
             open = tr("must be bound");
         else if (pin.role == blocks::PinRole::Secondary)
@@ -109,9 +106,10 @@ QString BlockDocumentation::timingSection(const blocks::LoadedLibrary& library,
     QString text = heading(tr("Timing diagram"));
     const blockdoc::TimingExampleFiles files = blockdoc::timingExampleFiles(library, block);
     if (!example.ran()) {
-        text +=
-            QStringLiteral("<p><i>%1</i></p>")
-                .arg(tr("No timing diagram: %1").arg(fromUtf8(example.problem)).toHtmlEscaped());
+        text += QStringLiteral("<p><i>%1</i></p>")
+                    .arg(tr("No timing diagram: %1")
+                             .arg(QString::fromStdString(example.problem))
+                             .toHtmlEscaped());
         return text;
     }
     text += QStringLiteral("<p><img src=\"%1\"></p>").arg(timingDiagramUrl().toString());
@@ -151,7 +149,7 @@ QString BlockDocumentation::statesTable(const blocks::BlockDefinition& block,
         QString meaning;
         for (const blocks::StateMeaning& m : block.states)
             if (m.code == state)
-                meaning = fromUtf8(m.meaning.in(language));
+                meaning = QString::fromStdString(m.meaning.in(language));
         text += QStringLiteral("<tr><td>%1</td><td>%2</td>")
                     .arg(code(blockdoc::stateCode(state)), meaning.toHtmlEscaped());
         for (std::size_t o = 0; o < table.outputs.size(); ++o)

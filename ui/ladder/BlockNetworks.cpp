@@ -29,14 +29,6 @@
 
 namespace rs::ui {
 
-namespace {
-
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
-
 const blocks::InstanceStatus* LadderPage::blockStatus(int step, int network) const {
     if (step < 0 || step >= stepCount() || network < 0 || network >= networkCount(step))
         return nullptr;
@@ -50,8 +42,9 @@ QString LadderPage::blockNote(const blocks::InstanceStatus& status) const {
     if (status.standing != blocks::Standing::OtherVersion || !status.block)
         return {};
     return tr("Made by %1 version %2; the library has version %3 (Update Block).")
-        .arg(fromUtf8(status.instance.type), fromUtf8(status.instance.version),
-             fromUtf8(status.block->version));
+        .arg(QString::fromStdString(status.instance.type),
+             QString::fromStdString(status.instance.version),
+             QString::fromStdString(status.block->version));
 }
 
 std::set<lang::Address> LadderPage::pinVariables() const {
@@ -98,7 +91,8 @@ void LadderPage::insertBlock() {
     ladder::Network network;
     network.block = ladder::unexpandedCall(*pins.instance());
     ladder.networks.insert(ladder.networks.begin() + index, std::move(network));
-    commitStep(tr("Insert Block %1").arg(fromUtf8(block.name)), step, std::move(ladder));
+    commitStep(tr("Insert Block %1").arg(QString::fromStdString(block.name)), step,
+               std::move(ladder));
     setCursor({step, index, std::nullopt, std::nullopt, -1});
 }
 
@@ -132,8 +126,8 @@ void LadderPage::updateBlock() {
     updateNetwork();
     blocks::BlockInstance instance = status->instance;
     instance.version.clear();
-    rewriteBlock(tr("Update Block %1").arg(fromUtf8(instance.type)), cursor.step, cursor.network,
-                 std::move(instance));
+    rewriteBlock(tr("Update Block %1").arg(QString::fromStdString(instance.type)), cursor.step,
+                 cursor.network, std::move(instance));
 }
 
 void LadderPage::showBlockDocumentation() {
@@ -229,14 +223,15 @@ void LadderPage::makeBlock() {
     const lang::StepAddress address = m_steps[step].address;
     const int station = m_station;
     m_drawing.marked.clear();
-    m_document->edit(tr("Make Block %1").arg(fromUtf8(draft.block.name)), [&](project::Project& p) {
-        p.libraries = entries;
-        ladder::setStepLadder(project::programOf(p, station), address, rest);
-        blocks::expandInstances(p.program, libraries);
-    });
+    m_document->edit(tr("Make Block %1").arg(QString::fromStdString(draft.block.name)),
+                     [&](project::Project& p) {
+                         p.libraries = entries;
+                         ladder::setStepLadder(project::programOf(p, station), address, rest);
+                         blocks::expandInstances(p.program, libraries);
+                     });
     setCursor({step, at, std::nullopt, std::nullopt, -1});
     setMessage(tr("Block %1 is in %2; the F list offers it.")
-                   .arg(fromUtf8(draft.block.name), QDir::toNativeSeparators(file)));
+                   .arg(QString::fromStdString(draft.block.name), QDir::toNativeSeparators(file)));
 }
 
 void LadderPage::rewriteBlock(const QString& name, int step, int network,

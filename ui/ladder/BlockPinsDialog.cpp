@@ -19,27 +19,19 @@
 
 namespace rs::ui {
 
-namespace {
-
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
-
 BlockPinsDialog::BlockPinsDialog(ProjectDocument* document, int station,
                                  const blocks::BlockDefinition& block,
                                  const blocks::BlockInstance& instance, QWidget* parent)
     : QDialog(parent), m_document(document), m_station(station), m_block(block),
       m_instance(instance), m_problem(new QLabel(this)) {
     setObjectName(QStringLiteral("blockPinsDialog"));
-    setWindowTitle(tr("%1 Pins").arg(fromUtf8(block.name)));
+    setWindowTitle(tr("%1 Pins").arg(QString::fromStdString(block.name)));
 
     QStringList names;
     if (document) {
         const project::Project& project = document->project();
         for (const lang::Address& address : project::namedAddresses(project, station))
-            names << fromUtf8(project::variableName(project, address));
+            names << QString::fromStdString(project::variableName(project, address));
         names.removeDuplicates();
         names.sort(Qt::CaseInsensitive);
     }
@@ -50,10 +42,10 @@ BlockPinsDialog::BlockPinsDialog(ProjectDocument* document, int station,
     auto* form = new QFormLayout;
     for (const auto& pin : block.pins) {
         auto* field = new QLineEdit(this);
-        field->setObjectName(QStringLiteral("pin_") + fromUtf8(pin.name));
+        field->setObjectName(QStringLiteral("pin_") + QString::fromStdString(pin.name));
         if (const blocks::Binding* bound = instance.findPin(pin.name))
-            field->setText(fromUtf8(bound->operand));
-        field->setPlaceholderText(pin.defaultValue ? fromUtf8(*pin.defaultValue)
+            field->setText(QString::fromStdString(bound->operand));
+        field->setPlaceholderText(pin.defaultValue ? QString::fromStdString(*pin.defaultValue)
                                                    : QStringLiteral("???"));
         field->setToolTip(BlockText::pinSummary(pin));
         auto* completer = new QCompleter(model, field);
@@ -62,7 +54,7 @@ BlockPinsDialog::BlockPinsDialog(ProjectDocument* document, int station,
         field->setCompleter(completer);
         finishCompletionInOneKey(completer);
         auto* label = new QLabel(QStringLiteral("%1 <small>(%2)</small>:")
-                                     .arg(fromUtf8(pin.name).toHtmlEscaped(),
+                                     .arg(QString::fromStdString(pin.name).toHtmlEscaped(),
                                           BlockText::pinSummary(pin).toHtmlEscaped()),
                                  this);
         label->setBuddy(field);
@@ -114,7 +106,7 @@ void BlockPinsDialog::accept() {
         if (lang::errorCount(problems) > 0) {
             QStringList lines;
             for (const auto& problem : problems)
-                lines << fromUtf8(problem.message);
+                lines << QString::fromStdString(problem.message);
             m_problem->setText(lines.join(u'\n'));
             return;
         }

@@ -5,14 +5,6 @@
 
 namespace rs::ui {
 
-namespace {
-
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
-
 std::string BlockText::descriptionLanguage() {
     switch (QLocale().language()) {
     case QLocale::Swedish:
@@ -25,7 +17,7 @@ std::string BlockText::descriptionLanguage() {
 }
 
 QString BlockText::description(const blocks::BlockDefinition& block) {
-    return fromUtf8(block.description.in(descriptionLanguage()));
+    return QString::fromStdString(block.description.in(descriptionLanguage()));
 }
 
 QString BlockText::pinSummary(const blocks::Pin& pin) {
@@ -51,7 +43,7 @@ QString BlockText::pinSummary(const blocks::Pin& pin) {
         break;
     }
     if (input && pin.defaultValue)
-        parts << tr("default %1").arg(fromUtf8(*pin.defaultValue));
+        parts << tr("default %1").arg(QString::fromStdString(*pin.defaultValue));
     else if (input)
         parts << tr("must be bound");
     else if (pin.role == blocks::PinRole::Secondary)
@@ -62,20 +54,22 @@ QString BlockText::pinSummary(const blocks::Pin& pin) {
 QString BlockText::html(const blocks::LoadedLibrary& library,
                         const blocks::BlockDefinition& block) {
     QString text = QStringLiteral("<p><b>%1</b> &nbsp; %2</p>")
-                       .arg(fromUtf8(block.name).toHtmlEscaped(),
+                       .arg(QString::fromStdString(block.name).toHtmlEscaped(),
                             tr("library %1, version %2")
-                                .arg(fromUtf8(library.library.name), fromUtf8(block.version))
+                                .arg(QString::fromStdString(library.library.name),
+                                     QString::fromStdString(block.version))
                                 .toHtmlEscaped());
     if (block.kind == blocks::BlockKind::System)
         text += QStringLiteral("<p><i>%1</i></p>")
                     .arg(tr("A system block: the simulator carries out its instruction %1.")
-                             .arg(fromUtf8(block.systemInstruction))
+                             .arg(QString::fromStdString(block.systemInstruction))
                              .toHtmlEscaped());
     text += QStringLiteral("<p>%1</p>").arg(description(block).toHtmlEscaped());
     text += QStringLiteral("<table cellspacing=\"0\" cellpadding=\"2\">");
     for (const auto& pin : block.pins)
         text += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
-                    .arg(fromUtf8(pin.name).toHtmlEscaped(), pinSummary(pin).toHtmlEscaped());
+                    .arg(QString::fromStdString(pin.name).toHtmlEscaped(),
+                         pinSummary(pin).toHtmlEscaped());
     text += QStringLiteral("</table>");
     return text;
 }

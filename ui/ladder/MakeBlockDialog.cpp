@@ -17,14 +17,6 @@
 
 namespace rs::ui {
 
-namespace {
-
-QString fromUtf8(const std::string& text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-} // namespace
-
 MakeBlockDialog::MakeBlockDialog(std::vector<lang::Line> lines,
                                  std::set<lang::Address> usedElsewhere,
                                  const QStringList& libraryFiles, QWidget* parent)
@@ -85,18 +77,19 @@ void MakeBlockDialog::fillPins() {
     m_pins->setRowCount(static_cast<int>(rows.size()));
     for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
         const auto& [name, what] = rows[static_cast<std::size_t>(row)];
-        m_pins->setItem(row, 0, new QTableWidgetItem(fromUtf8(name)));
+        m_pins->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(name)));
         auto* kind = new QTableWidgetItem(what);
         kind->setFlags(kind->flags() & ~Qt::ItemIsEditable);
         m_pins->setItem(row, 1, kind);
-        auto* address = new QTableWidgetItem(fromUtf8(lang::toString(m_draft.addresses.at(name))));
+        auto* address = new QTableWidgetItem(
+            QString::fromStdString(lang::toString(m_draft.addresses.at(name))));
         address->setFlags(address->flags() & ~Qt::ItemIsEditable);
         address->setData(Qt::UserRole, QString::fromStdString(name));
         m_pins->setItem(row, 2, address);
     }
     m_pins->resizeColumnsToContents();
     if (!m_draft.refusal.empty())
-        m_problem->setText(fromUtf8(m_draft.refusal));
+        m_problem->setText(QString::fromStdString(m_draft.refusal));
 }
 
 QString MakeBlockDialog::libraryFile() const {
@@ -127,7 +120,7 @@ void MakeBlockDialog::accept() {
                            "project's folder, such as My_Blocks.rslib.")
                             .toStdString();
     if (!draft.refusal.empty()) {
-        m_problem->setText(fromUtf8(draft.refusal));
+        m_problem->setText(QString::fromStdString(draft.refusal));
         return;
     }
     draft.block.version = "1.0";
