@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "Program.h"
+#include "lang/Diagnostic.h"
+
+#include <string>
+#include <string_view>
+
+// Rungsmith's text form of a PL110 program (docs/pl110.md): reading with an
+// error per bad line at its line and column, and the canonical printing.
+// Reading the printed text gives back the tree that printed it.
+namespace rs::pl110 {
+
+struct ProgramReading {
+    Program program;
+    lang::Diagnostics diagnostics; // errors drop their line; every other line is read
+};
+
+// Limits: 1 MB of text; a condition nests at most 64 groups deep.
+ProgramReading readProgram(std::string_view text);
+
+std::string printProgram(const Program& program);
+
+// Whether a file's text is a PL110 program: its first directive is "$target PL110".
+bool isPl110Text(std::string_view text);
+
+// The words a name may not be: the text form's keywords.
+bool isKeyword(std::string_view word);
+
+} // namespace rs::pl110

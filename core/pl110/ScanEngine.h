@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "Program.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+// Runs a checked PL110 program scan by scan on virtual time (docs/pl110.md,
+// "Scan"): INIT once before the first scan, then MAIN every scan, timers in
+// their time bases, counters' contacts at the end of the scan, the special
+// markers of the datasheet that matter for logic.
+namespace rs::pl110 {
+
+// The PL110's memory: every area's words, and the timers' and counters'
+// contacts, which live beside their values.
+struct Memory {
+    std::array<std::vector<std::uint16_t>, kAreaCount> words;
+    std::array<bool, 48> timerContacts{};
+    std::array<bool, 16> counterContacts{};
+
+    Memory();
+    bool bit(const Address& address) const;
+    void setBit(const Address& address, bool value);
+    // The signed value of a word or double word (VDn: VWn high, VWn+1 low).
+    std::int32_t value(const Address& address) const;
+    // Stores the low 16 bits (a word) or all 32 (a double word).
+    void setValue(const Address& address, std::int64_t value);
+};
+
+class ScanEngine {
+public:
+    // The program must have passed checkProgram.
+    explicit ScanEngine(Program program, int cycleMs = 10);
+
+    // Power on: memory cleared, the special markers' start values.
+    void reset();
+    // One scan cycle; the first also runs INIT.
+    void scan();
+
+    Memory& memory() { return m_memory; }
+    const Memory& memory() const { return m_memory; }
+    std::uint64_t scans() const { return m_scans; }
+    std::int64_t timeMs() const { return m_timeMs; }
+    int cycleMs() const { return m_cycleMs; }
+
+private:
+    struct TimerState {
+        int remainderMs = 0; // time not yet a whole unit of the base
+        bool wasOn = false;
+        bool counting = false; // TOFF: running down after the coil went off
+    };
+    struct RungState {
+        std::vector<std::uint8_t> edges; // by element number: the power last seen
+        bool coilWasOn = false;          // B coils and counter inputs count edges
+    };
+
+    void runLines(const std::vector<Line>& lines, std::vector<RungState>& states);
+    bool evaluate(const Circuit& circuit, bool power, RungState& state, int& node);
+    void output(const Output& out, bool power, RungState& state);
+    void timer(const Output& out, bool power);
+    void counter(const Output& out, bool power, RungState& state);
+    std::int32_t read(const Value& value) const;
+    void specialMarkersAtScanStart();
+    void countersAtScanEnd();
+
+    Program m_program;
+    int m_cycleMs;
+    Memory m_memory;
+    std::vector<RungState> m_init;
+    std::vector<RungState> m_main;
+    std::array<TimerState, 48> m_timers{};
+    std::array<std::optional<CounterType>, 16> m_counterTypes{}; // of the counters with coils
+    std::uint64_t m_scans = 0;
+    std::int64_t m_timeMs = 0;
+};
+
+} // namespace rs::pl110
