@@ -4,6 +4,12 @@
 #include "Verbs.h"
 #include "gateway/GatewayNode.h"
 #include "gateway/ModbusTcpServer.h"
+#include "pl110/ModbusRtuServer.h"
+#include "pl110/ModbusSlave.h"
+#include "pl110/ProgramCheck.h"
+#include "pl110/ProgramText.h"
+#include "pl110/ScanEngine.h"
+#include "project/ProjectFile.h"
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
 
@@ -14,6 +20,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -50,17 +57,18 @@ private:
     std::mutex m_mutex;
 };
 
-// The simulation on the wall clock, `speed` times real time.
+// A simulation on the wall clock, `speed` times real time: `virtualTimeMs`
+// tells how far it has run.
 class Pacer {
 public:
-    Pacer(const sim::Simulation& simulation, double speed)
-        : m_simulation(simulation), m_speed(speed), m_start(Clock::now()) {}
+    Pacer(std::function<std::int64_t()> virtualTimeMs, double speed)
+        : m_virtualTimeMs(std::move(virtualTimeMs)), m_speed(speed), m_start(Clock::now()) {}
 
     // Sleeps until the next scan is due; false when asked to stop.
     bool waitForScan() const {
         const auto due = m_start + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double, std::milli>(
-                                           static_cast<double>(m_simulation.timeMs()) / m_speed));
+                                           static_cast<double>(m_virtualTimeMs()) / m_speed));
         while (!g_stop && Clock::now() < due)
             std::this_thread::sleep_for(
                 std::min<Clock::duration>(due - Clock::now(), std::chrono::milliseconds(50)));
@@ -68,10 +76,51 @@ public:
     }
 
 private:
-    const sim::Simulation& m_simulation;
+    std::function<std::int64_t()> m_virtualTimeMs;
     double m_speed;
     Clock::time_point m_start;
 };
+
+// serve PL110.sps --modbus-rtu: the program scanned in real time, its
+// Modbus RTU slave map on a pseudo-terminal (docs/pl110.md, "Modbus").
+int servePl110(const QString& path, const std::string& text, int slave, double speed) {
+    pl110::ProgramReading reading = pl110::readProgram(text);
+    lang::Diagnostics diagnostics = reading.diagnostics;
+    if (diagnostics.empty())
+        diagnostics = pl110::checkProgram(reading.program);
+    if (!diagnostics.empty()) {
+        printDiagnostics(path, diagnostics);
+        std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", lang::errorCount(diagnostics));
+        return Failed;
+    }
+    std::string error;
+    auto server = pl110::ModbusRtuServer::open(slave, error);
+    if (!server) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", error.c_str());
+        return UsageOrIo;
+    }
+    onStopSignals();
+    Output output;
+    output.line("serving Modbus RTU on " + server->devicePath() + " as slave " +
+                std::to_string(slave));
+    pl110::ScanEngine engine(std::move(reading.program));
+    std::mutex memoryMutex; // the scan and a request's answer take turns
+    std::thread modbus([&] {
+        while (!g_stop)
+            server->serve(100, [&](std::span<const std::uint8_t> request) {
+                std::lock_guard lock(memoryMutex);
+                return pl110::answerRequest(engine.memory(), request);
+            });
+    });
+    const Pacer pacer([&] { return engine.timeMs(); }, speed);
+    while (pacer.waitForScan()) {
+        std::lock_guard lock(memoryMutex);
+        engine.scan();
+    }
+    modbus.join();
+    output.line("stopped");
+    return Ok;
+}
 
 } // namespace
 
@@ -79,6 +128,31 @@ int runServe(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("serve takes exactly one FILE.sps"));
     const QString path = invocation.arguments[0];
+    double speed = 1.0;
+    if (invocation.options.isSet(QStringLiteral("speed"))) {
+        bool ok = false;
+        speed = invocation.options.value(QStringLiteral("speed")).toDouble(&ok);
+        if (!ok || speed < 0.01 || speed > 1000)
+            return usage(QStringLiteral("--speed takes a factor of real time, 0.01 to 1000"));
+    }
+    if (invocation.options.isSet(QStringLiteral("modbus-rtu"))) {
+        int slave = 1;
+        if (invocation.options.isSet(QStringLiteral("slave"))) {
+            bool ok = false;
+            slave = invocation.options.value(QStringLiteral("slave")).toInt(&ok);
+            if (!ok || slave < 1 || slave > 247)
+                return usage(QStringLiteral("--slave takes a Modbus slave address, 1 to 247"));
+        }
+        const project::FileText text = project::readTextFile(path);
+        if (!text.error.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(text.error));
+            return UsageOrIo;
+        }
+        if (!pl110::isPl110Text(text.text))
+            return usage(QStringLiteral("--modbus-rtu serves a PL110 program ($target PL110); "
+                                        "a Pluto project is served over Modbus TCP (--modbus)"));
+        return servePl110(path, text.text, slave, speed);
+    }
     QString host = QStringLiteral("127.0.0.1");
     int port = 1502;
     if (invocation.options.isSet(QStringLiteral("modbus"))) {
@@ -90,14 +164,6 @@ int runServe(const Invocation& invocation) {
             return usage(QStringLiteral("--modbus takes HOST:PORT, as 127.0.0.1:1502"));
         host = address.left(colon);
     }
-    double speed = 1.0;
-    if (invocation.options.isSet(QStringLiteral("speed"))) {
-        bool ok = false;
-        speed = invocation.options.value(QStringLiteral("speed")).toDouble(&ok);
-        if (!ok || speed < 0.01 || speed > 1000)
-            return usage(QStringLiteral("--speed takes a factor of real time, 0.01 to 1000"));
-    }
-
     const LoadedProject loaded = loadProject(path, libraryFiles(invocation));
     if (loaded.status != Ok)
         return loaded.status;
@@ -169,7 +235,7 @@ int runServe(const Invocation& invocation) {
         std::lock_guard lock(nodeMutex);
         node.exchange(simulation);
     };
-    const Pacer pacer(simulation, speed);
+    const Pacer pacer([&] { return simulation.timeMs(); }, speed);
     // The scenario runs as `test` runs it, each scan waiting for the wall clock.
     const sim::ScenarioReport report = sim::runScenario(
         scenarioPath.toStdString(), scenario, simulation, nullptr,

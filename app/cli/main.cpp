@@ -3,6 +3,7 @@
 #include "Invocation.h"
 #include "LadderVerbs.h"
 #include "MergeVerb.h"
+#include "Pl110Verbs.h"
 #include "ProtectVerb.h"
 #include "ProveVerb.h"
 #include "ReviewVerbs.h"
@@ -44,6 +45,8 @@ rs::compiler::CheckOptions checkOptions(const Invocation& invocation) {
 int check(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("check takes exactly one FILE.sps"));
+    if (const auto text = rs::cli::pl110Text(invocation.arguments[0]))
+        return rs::cli::checkPl110(invocation.arguments[0], *text);
     return rs::cli::runCheck(invocation.arguments[0], rs::cli::libraryFiles(invocation),
                              checkOptions(invocation), {});
 }
@@ -59,6 +62,8 @@ int compile(const Invocation& invocation) {
 int format(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("format takes exactly one FILE.sps"));
+    if (const auto text = rs::cli::pl110Text(invocation.arguments[0]))
+        return rs::cli::formatPl110(invocation.arguments[0], *text);
     return rs::cli::runFormat(invocation.arguments[0], rs::cli::libraryFiles(invocation), {});
 }
 
@@ -217,6 +222,13 @@ int run(int argc, char* argv[]) {
                       QStringLiteral("serve: where to answer Modbus TCP (default "
                                      "127.0.0.1:1502)."),
                       QStringLiteral("HOST:PORT")});
+    parser.addOption({QStringLiteral("modbus-rtu"),
+                      QStringLiteral("serve: a PL110 program's Modbus RTU slave map on a "
+                                     "pseudo-terminal; the device path is printed.")});
+    parser.addOption({QStringLiteral("slave"),
+                      QStringLiteral("serve --modbus-rtu: the slave address to answer as "
+                                     "(1-247, default 1)."),
+                      QStringLiteral("ADDRESS")});
     parser.addOption({QStringLiteral("speed"),
                       QStringLiteral("serve: run the simulation FACTOR times real time."),
                       QStringLiteral("FACTOR")});

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+
+#include <optional>
+#include <string>
+
+// check and format for a PL110 program (docs/pl110.md): the same verbs, the
+// same output contract as for a Pluto project.
+namespace rs::cli {
+
+// The file's text when it is a PL110 program ($target PL110); nothing for a
+// Pluto project or a file that cannot be read (the Pluto path reports that).
+std::optional<std::string> pl110Text(const QString& path);
+
+int checkPl110(const QString& path, const std::string& text);
+int formatPl110(const QString& path, const std::string& text);
+
+} // namespace rs::cli

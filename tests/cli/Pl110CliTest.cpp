@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// rungsmith-cli with a PL110 program: check, format, and serve --modbus-rtu
+// against the real Modbus client mbpoll on a pseudo-terminal (docs/pl110.md).
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QThread>
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+
+namespace {
+
+// Q1 shows RUN; Q2 comes on when a master writes 1234 into VW10.
+const QByteArray kProgram = "$target PL110\n"
+                            "$name Filling station\n"
+                            "! VW10=Setpoint\n"
+                            "MAIN\n"
+                            "Q1 = SM0.0\n"
+                            "Q2 = (Setpoint=1234)\n";
+
+struct CliRun {
+    int exitCode = -1;
+    QString out;
+};
+
+class Pl110CliTest : public ::testing::Test {
+protected:
+    void SetUp() override { ASSERT_TRUE(directory.isValid()); }
+
+    void TearDown() override {
+        if (server.state() != QProcess::NotRunning) {
+            server.kill();
+            server.waitForFinished(5000);
+        }
+    }
+
+    QString write(const QString& name, const QByteArray& bytes) {
+        QFile file(directory.filePath(name));
+        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(bytes);
+        return file.fileName();
+    }
+
+    static CliRun cli(const QStringList& arguments) {
+        QProcess process;
+        process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
+        EXPECT_TRUE(process.waitForFinished(30000));
+        return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput() +
+                                                      process.readAllStandardError())};
+    }
+
+    // mbpoll once over RTU: -0 makes -r the datasheet's address; values after
+    // the device are written.
+    static QString poll(const QString& device, const QStringList& arguments,
+                        const QStringList& values = {}) {
+        QProcess mbpoll;
+        mbpoll.start(QStringLiteral("mbpoll"),
+                     QStringList{QStringLiteral("-m"), QStringLiteral("rtu"), QStringLiteral("-b"),
+                                 QStringLiteral("19200"), QStringLiteral("-P"),
+                                 QStringLiteral("none"), QStringLiteral("-a"), QStringLiteral("1"),
+                                 QStringLiteral("-0"), QStringLiteral("-1"), QStringLiteral("-o"),
+                                 QStringLiteral("2")} +
+                         arguments + QStringList{device} + values);
+        EXPECT_TRUE(mbpoll.waitForFinished(10000));
+        return QString::fromUtf8(mbpoll.readAllStandardOutput() + mbpoll.readAllStandardError());
+    }
+
+    QTemporaryDir directory;
+    QProcess server;
+};
+
+TEST_F(Pl110CliTest, CheckAndFormatReadThePl110TextForm) {
+    const QString good =
+        write(QStringLiteral("good.sps"), "$target pl110\nmain\nq1 = i1*/i2 ; run\n");
+    CliRun run = cli({QStringLiteral("check"), good});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    EXPECT_EQ(run.out, QStringLiteral("0 Error(s) detected Result=OK\n"));
+    run = cli({QStringLiteral("format"), good});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_EQ(run.out,
+              QStringLiteral("$target PL110\nINIT\nMAIN\nQ1 = I1 * /I2                  ; run\n"));
+
+    const QString bad =
+        write(QStringLiteral("bad.sps"), "$target PL110\nMAIN\nI1 = Q1\nQ2 = I300\n");
+    run = cli({QStringLiteral("check"), bad});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(
+        run.out.contains(bad + QStringLiteral(":3:1: error: a coil writes Q, M or B, not I1")))
+        << run.out.toStdString();
+    EXPECT_TRUE(
+        run.out.contains(bad + QStringLiteral(":4:6: error: I300 is out of range: I1-I256")))
+        << run.out.toStdString();
+    EXPECT_TRUE(run.out.contains(QStringLiteral("2 Error(s) detected Result=FAILED\n")));
+    run = cli({QStringLiteral("format"), bad});
+    EXPECT_EQ(run.exitCode, 1); // printing would drop the bad line
+}
+
+TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
+    if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
+    server.start(QStringLiteral(RUNGSMITH_CLI),
+                 {QStringLiteral("serve"), write(QStringLiteral("station.sps"), kProgram),
+                  QStringLiteral("--modbus-rtu")});
+    ASSERT_TRUE(server.waitForStarted(5000));
+    QElapsedTimer waited;
+    waited.start();
+    while (!server.canReadLine() && waited.elapsed() < 10000)
+        server.waitForReadyRead(200);
+    const QString first = QString::fromUtf8(server.readLine());
+    const auto match =
+        QRegularExpression(QStringLiteral("^serving Modbus RTU on (/dev/\\S+) as slave 1$"))
+            .match(first.trimmed());
+    ASSERT_TRUE(match.hasMatch()) << first.toStdString();
+    const QString device = match.captured(1);
+
+    const QStringList outputs = {QStringLiteral("-t"),   QStringLiteral("0"),  QStringLiteral("-r"),
+                                 QStringLiteral("2400"), QStringLiteral("-c"), QStringLiteral("2")};
+    QString answer = poll(device, outputs);
+    EXPECT_TRUE(answer.contains(QStringLiteral("[2400]: \t1"))) << answer.toStdString();
+    EXPECT_TRUE(answer.contains(QStringLiteral("[2401]: \t0"))) << answer.toStdString();
+
+    const QString written = poll(
+        device,
+        {QStringLiteral("-t"), QStringLiteral("4"), QStringLiteral("-r"), QStringLiteral("2010")},
+        {QStringLiteral("1234")});
+    EXPECT_TRUE(written.contains(QStringLiteral("Written 1 references"))) << written.toStdString();
+    waited.restart();
+    while (waited.elapsed() < 5000) {
+        answer = poll(device, outputs);
+        if (answer.contains(QStringLiteral("[2401]: \t1")))
+            break;
+        QThread::msleep(50);
+    }
+    EXPECT_TRUE(answer.contains(QStringLiteral("[2401]: \t1"))) << answer.toStdString();
+    const QString back = poll(device, {QStringLiteral("-t"), QStringLiteral("4"),
+                                       QStringLiteral("-r"), QStringLiteral("2010")});
+    EXPECT_TRUE(back.contains(QStringLiteral("[2010]: \t1234"))) << back.toStdString();
+    // What the map does not allow is a Modbus exception, and the server goes on.
+    const QString refused = poll(device, {QStringLiteral("-t"), QStringLiteral("4"),
+                                          QStringLiteral("-r"), QStringLiteral("6")});
+    EXPECT_TRUE(refused.contains(QStringLiteral("Illegal data address"))) << refused.toStdString();
+
+    ::kill(static_cast<pid_t>(server.processId()), SIGTERM);
+    ASSERT_TRUE(server.waitForFinished(10000));
+    EXPECT_EQ(server.exitCode(), 0);
+    EXPECT_TRUE(server.readAll().contains("stopped"));
+}
+
+} // namespace
