@@ -5,6 +5,7 @@
 #include "Verbs.h"
 #include "pl110/ProgramCheck.h"
 #include "pl110/ProgramText.h"
+#include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 
 namespace rs::cli {
@@ -38,6 +39,44 @@ int formatPl110(const QString& path, const std::string& text) {
     const std::string printed = pl110::printProgram(reading.program);
     std::fwrite(printed.data(), 1, printed.size(), stdout);
     return Ok;
+}
+
+int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
+              const QString& vcd) {
+    if (!vcd.isEmpty())
+        return usage(
+            QStringLiteral("--vcd traces Pluto projects; a PL110 program has no trace yet"));
+    pl110::ProgramReading reading = pl110::readProgram(text);
+    lang::Diagnostics diagnostics = reading.diagnostics;
+    if (diagnostics.empty())
+        diagnostics = pl110::checkProgram(reading.program);
+    if (!diagnostics.empty()) {
+        printDiagnostics(path, diagnostics);
+        std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", lang::errorCount(diagnostics));
+        return Failed;
+    }
+    const pl110::ScenarioNames names(reading.program);
+    pl110::ScanEngine engine(std::move(reading.program));
+    int passed = 0;
+    int failed = 0;
+    for (const QString& scenarioPath : scenarios) {
+        const project::FileText file = project::readTextFile(scenarioPath);
+        if (!file.error.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+            return UsageOrIo;
+        }
+        const pl110::Scenario scenario = pl110::parseScenario(file.text, names);
+        const sim::ScenarioReport report =
+            pl110::runScenario(scenarioPath.toStdString(), scenario, engine);
+        for (const auto& line : report.diagnostics)
+            std::fprintf(stderr, "%s\n", line.c_str());
+        for (const auto& line : report.failures)
+            std::fprintf(stdout, "%s\n", line.c_str());
+        passed += report.passed;
+        failed += report.failed;
+    }
+    std::fprintf(stdout, "%d passed, %d failed\n", passed, failed);
+    return failed ? Failed : Ok;
 }
 
 } // namespace rs::cli

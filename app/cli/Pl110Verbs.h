@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 #include <string>
@@ -16,5 +17,8 @@ std::optional<std::string> pl110Text(const QString& path);
 
 int checkPl110(const QString& path, const std::string& text);
 int formatPl110(const QString& path, const std::string& text);
+// test: each scenario from power on, the failures and the count as for Pluto.
+int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
+              const QString& vcd);
 
 } // namespace rs::cli

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "TestVerb.h"
 
+#include "Pl110Verbs.h"
 #include "Verbs.h"
 #include "compiler/Compiler.h"
 #include "project/ProjectFile.h"
@@ -26,6 +27,8 @@ QString tracePath(const QString& vcd, const QString& scenario, bool several) {
 
 int runTest(const QString& projectPath, const QStringList& scenarios, const QString& vcd,
             const QStringList& libraryFiles, const compiler::CheckOptions& options) {
+    if (const auto text = pl110Text(projectPath))
+        return testPl110(projectPath, *text, scenarios, vcd);
     const LoadedProject loaded = loadProject(projectPath, libraryFiles);
     if (loaded.status != Ok)
         return loaded.status;

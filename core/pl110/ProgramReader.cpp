@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramText.h"
 
+#include "lang/TextCase.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -18,13 +20,6 @@ constexpr int kMaxDepth = 64;
 constexpr std::array<std::string_view, 21> kKeywords{
     "INIT",  "MAIN", "NOT",  "P",     "N",  "SBIT", "RBIT", "TON", "TOFF", "TONR", "MUP",
     "MDOWN", "UP",   "DOWN", "RESET", "MS", "S",    "BIT",  "MOV", "FM",   "IF"};
-
-std::string upper(std::string_view text) {
-    std::string result(text);
-    for (char& c : result)
-        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return result;
-}
 
 bool isNameStart(unsigned char c) {
     return std::isalpha(c) || c >= 0x80;
@@ -148,7 +143,7 @@ private:
         return peek(ahead).kind == TokenKind::Symbol && peek(ahead).text == text;
     }
     bool word(std::string_view keyword, std::size_t ahead = 0) const {
-        return peek(ahead).kind == TokenKind::Word && upper(peek(ahead).text) == keyword;
+        return peek(ahead).kind == TokenKind::Word && lang::toUpper(peek(ahead).text) == keyword;
     }
     void expect(std::string_view text) {
         if (!symbol(text))
@@ -184,7 +179,7 @@ private:
                 fail(token, "'" + token.text + "' cannot stand here");
             // Names are case-insensitive, as the rest of the text; the tree
             // keeps the declared spelling, which the canonical text prints.
-            const auto found = m_names.find(upper(token.text));
+            const auto found = m_names.find(lang::toUpper(token.text));
             if (found == m_names.end())
                 fail(token, "'" + token.text + "' is neither an address nor a declared name");
             operand.name = found->second.name;
@@ -260,7 +255,7 @@ private:
             return out;
         }
         const Token& head = peek();
-        const std::string keyword = upper(head.text);
+        const std::string keyword = lang::toUpper(head.text);
         if (head.kind == TokenKind::Word && symbol("(", 1)) {
             if (keyword == "SBIT" || keyword == "RBIT") {
                 m_at += 2;
@@ -278,7 +273,7 @@ private:
                 out.target = operand(false);
                 expect(",");
                 const Token& base = take();
-                const std::string text = upper(base.text);
+                const std::string text = lang::toUpper(base.text);
                 if (text == "10MS")
                     out.base = TimeBase::Ms10;
                 else if (text == "100MS")
@@ -299,7 +294,7 @@ private:
                 out.target = operand(false);
                 expect(",");
                 const Token& input = take();
-                const std::string text = upper(input.text);
+                const std::string text = lang::toUpper(input.text);
                 if (text == "UP")
                     out.input = CounterInput::Up;
                 else if (text == "DOWN")
@@ -401,7 +396,7 @@ private:
             return group;
         }
         if (token.kind == TokenKind::Word) {
-            const std::string keyword = upper(token.text);
+            const std::string keyword = lang::toUpper(token.text);
             if (keyword == "NOT" || keyword == "P" || keyword == "N") {
                 ++m_at;
                 Element flow;
@@ -459,15 +454,15 @@ struct Directive {
 Directive readDirective(std::string_view code) {
     const std::string_view directive = code.substr(1);
     const std::size_t space = directive.find_first_of(" \t");
-    return {upper(directive.substr(0, space)), space == std::string_view::npos
-                                                   ? std::string_view{}
-                                                   : trimmed(directive.substr(space))};
+    return {lang::toUpper(directive.substr(0, space)), space == std::string_view::npos
+                                                           ? std::string_view{}
+                                                           : trimmed(directive.substr(space))};
 }
 
 } // namespace
 
 bool isKeyword(std::string_view word) {
-    const std::string text = upper(word);
+    const std::string text = lang::toUpper(word);
     return std::find(kKeywords.begin(), kKeywords.end(), text) != kKeywords.end();
 }
 
@@ -482,7 +477,7 @@ bool isPl110Text(std::string_view text) {
             if (line.front() != '$')
                 return false;
             const Directive directive = readDirective(line);
-            return directive.keyword == "TARGET" && upper(directive.argument) == "PL110";
+            return directive.keyword == "TARGET" && lang::toUpper(directive.argument) == "PL110";
         }
         start = end + 1;
     }
@@ -536,7 +531,7 @@ ProgramReading readProgram(std::string_view text) {
             if (part != Part::Declarations) {
                 error(number, column, "directives come before INIT");
             } else if (directive.keyword == "TARGET") {
-                if (upper(directive.argument) != "PL110")
+                if (lang::toUpper(directive.argument) != "PL110")
                     error(number, column,
                           "this file's target is PL110, not '" + std::string(directive.argument) +
                               "'");
@@ -550,7 +545,7 @@ ProgramReading readProgram(std::string_view text) {
             }
             continue;
         }
-        const std::string word = upper(code);
+        const std::string word = lang::toUpper(code);
         if (word == "INIT" || word == "MAIN") {
             const Part next = word == "INIT" ? Part::Init : Part::Main;
             if (next == Part::Init && part != Part::Declarations)
@@ -567,7 +562,7 @@ ProgramReading readProgram(std::string_view text) {
                     throw LineError{column, "declarations come before INIT"};
                 LineReader reader(tokenize(code.substr(1), column + 1), number, names);
                 NameDeclaration declaration = reader.declaration();
-                const std::string key = upper(declaration.name);
+                const std::string key = lang::toUpper(declaration.name);
                 if (names.contains(key))
                     throw LineError{declaration.nameLocation.column,
                                     "'" + declaration.name + "' is declared twice"};

@@ -127,6 +127,7 @@ void ScanEngine::reset() {
             std::fill(state.edges.begin(), state.edges.end(), 0);
             state.coilWasOn = false;
         }
+    m_forces.clear();
     m_scans = 0;
     m_timeMs = 0;
     // Start values the datasheet gives (docs/pl110.md, "Power on").
@@ -160,10 +161,12 @@ void ScanEngine::specialMarkersAtScanStart() {
 
 void ScanEngine::scan() {
     specialMarkersAtScanStart();
+    applyForces();
     if (m_scans == 0)
         runLines(m_program.init, m_init);
     runLines(m_program.main, m_main);
     countersAtScanEnd();
+    applyForces();
     ++m_scans;
     m_timeMs += m_cycleMs;
 }
@@ -175,7 +178,47 @@ void ScanEngine::runLines(const std::vector<Line>& lines, std::vector<RungState>
         int node = 0;
         const bool power = rung.condition ? evaluate(*rung.condition, true, state, node) : true;
         output(rung.output, power, state);
+        if (!m_forces.empty())
+            applyForces();
     });
+}
+
+void ScanEngine::setCycleMs(int cycleMs) {
+    m_cycleMs = std::max(1, cycleMs);
+}
+
+std::int64_t ScanEngine::value(const Address& address) const {
+    return address.width == Width::Bit ? std::int64_t{m_memory.bit(address)}
+                                       : m_memory.value(address);
+}
+
+void ScanEngine::set(const Address& address, std::int64_t value) {
+    if (address.area == Area::Input || address.area == Area::AnalogInput) {
+        if (address.width == Width::Bit)
+            m_memory.setBit(address, value != 0);
+        else
+            m_memory.setValue(address, value);
+        return;
+    }
+    force(address, value);
+}
+
+void ScanEngine::force(const Address& address, std::int64_t value) {
+    m_forces[address] = value;
+    applyForces();
+}
+
+void ScanEngine::release(const Address& address) {
+    m_forces.erase(address);
+}
+
+void ScanEngine::applyForces() {
+    for (const auto& [address, value] : m_forces) {
+        if (address.width == Width::Bit)
+            m_memory.setBit(address, value != 0);
+        else
+            m_memory.setValue(address, value);
+    }
 }
 
 // The power leaving a circuit that `power` reaches. Every element is

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -35,10 +36,21 @@ public:
     // The program must have passed checkProgram.
     explicit ScanEngine(Program program, int cycleMs = 10);
 
-    // Power on: memory cleared, the special markers' start values.
+    // Power on: memory cleared, the special markers' start values, no forces.
     void reset();
     // One scan cycle; the first also runs INIT.
     void scan();
+    void setCycleMs(int cycleMs);
+
+    // Any variable: a bit as 0 or 1, a word or double word as its signed value.
+    std::int64_t value(const Address& address) const;
+    // Inputs (I, AI) take the value, as from the terminals; any other
+    // variable is forced.
+    void set(const Address& address, std::int64_t value);
+    // A forced variable holds its value: the program reads it and its writes
+    // are undone as soon as the output that made them is done.
+    void force(const Address& address, std::int64_t value);
+    void release(const Address& address);
 
     Memory& memory() { return m_memory; }
     const Memory& memory() const { return m_memory; }
@@ -65,6 +77,7 @@ private:
     std::int32_t read(const Value& value) const;
     void specialMarkersAtScanStart();
     void countersAtScanEnd();
+    void applyForces();
 
     Program m_program;
     int m_cycleMs;
@@ -73,6 +86,7 @@ private:
     std::vector<RungState> m_main;
     std::array<TimerState, 48> m_timers{};
     std::array<std::optional<CounterType>, 16> m_counterTypes{}; // of the counters with coils
+    std::map<Address, std::int64_t> m_forces;
     std::uint64_t m_scans = 0;
     std::int64_t m_timeMs = 0;
 };

@@ -14,7 +14,9 @@
 // ../shared/spec/scenario.md defines them.
 namespace rs::sim {
 
-struct ScenarioStep {
+// One line of a scenario. `OperandType` is the target's address: Pluto's
+// lang::Address, the PL110's pl110::Address; the rest is every target's.
+template <class OperandType> struct BasicScenarioStep {
     // Disconnect and Connect take unit `value` off the bus and put it back.
     enum class Kind {
         Set,
@@ -26,7 +28,7 @@ struct ScenarioStep {
         Disconnect,
         Connect
     } kind = Kind::Run;
-    lang::Address operand;
+    OperandType operand;
     std::int64_t value = 0;
     std::int64_t durationMs = 0; // Run, Cycle; Expect with `within` (0 without)
     std::int64_t count = 0;      // Scans
@@ -35,21 +37,37 @@ struct ScenarioStep {
     std::string text; // the line as written, without its comment
 };
 
+template <class OperandType> struct BasicScenario {
+    std::vector<BasicScenarioStep<OperandType>> steps;
+    lang::Diagnostics diagnostics; // syntax errors: the scenario does not run
+};
+
+using ScenarioStep = BasicScenarioStep<lang::Address>;
+using Scenario = BasicScenario<lang::Address>;
+
 // What a scenario may ask for: longer cycles or runs cannot be meant, and
 // would keep the simulator busy for days of real time.
 inline constexpr std::int64_t kMinCycleMs = 1;
 inline constexpr std::int64_t kMaxCycleMs = 10'000;
 inline constexpr std::int64_t kMaxVirtualMs = 30LL * 24 * 60 * 60 * 1000; // 30 days
 
-struct Scenario {
-    std::vector<ScenarioStep> steps;
-    lang::Diagnostics diagnostics; // syntax errors: the scenario does not run
+// What an operand can hold, which a `set` or `expect` must stay within: a
+// value outside would be cut to fit, and the scenario would test something
+// other than what it says.
+struct ValueRange {
+    std::int64_t low;
+    std::int64_t high;
+    const char* what; // "a bit", "a register", ...
 };
+ValueRange valueRange(const lang::Address& address);
 
 // Names a scenario may use: the project's symbolic names, and the system
-// names when the project has one unit.
+// names when the project has one unit. The scenario reader's vocabulary for
+// Pluto (ScenarioReader.h).
 class OperandNames {
 public:
+    using Operand = lang::Address;
+
     explicit OperandNames(const project::Project& project);
     // The address of a name or address word; an error message otherwise.
     bool resolve(std::string_view word, lang::Address& address, std::string& error) const;
@@ -63,6 +81,8 @@ public:
     // input slave the AS-i Options page defines: `channel` is 1 or 2, else 0.
     bool resolveChannel(std::string_view word, lang::Address& address, int& channel,
                         std::string& error) const;
+    ValueRange range(const lang::Address& address) const { return valueRange(address); }
+    std::string spelling(const lang::Address& address) const { return lang::toString(address); }
 
 private:
     struct Entry {
@@ -82,16 +102,6 @@ private:
 // the scenario's in total), text that is not UTF-8, and a scenario that
 // expects nothing.
 Scenario parseScenario(std::string_view text, const OperandNames& names);
-
-// What an operand can hold, which a `set` or `expect` must stay within: a
-// value outside would be cut to fit, and the scenario would test something
-// other than what it says.
-struct ValueRange {
-    std::int64_t low;
-    std::int64_t high;
-    const char* what; // "a bit", "a register", ...
-};
-ValueRange valueRange(const lang::Address& address);
 
 // "10ms", "2.5s", "2s50" (the language's notation), "1min"; false when malformed.
 bool parseDuration(std::string_view text, std::int64_t& ms);

@@ -100,6 +100,24 @@ TEST_F(Pl110CliTest, CheckAndFormatReadThePl110TextForm) {
     EXPECT_EQ(run.exitCode, 1); // printing would drop the bad line
 }
 
+TEST_F(Pl110CliTest, TestRunsTheExampleScenariosAndReportsAFailureByLine) {
+    const QString example = QStringLiteral(RUNGSMITH_EXAMPLES "/pl110/filling-station");
+    CliRun run =
+        cli({QStringLiteral("test"), example + ".sps", example + ".scn", example + "-overrun.scn"});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    EXPECT_EQ(run.out, QStringLiteral("13 passed, 0 failed\n"));
+    const QString wrong =
+        write(QStringLiteral("wrong.scn"), "set Start 1\nscans 1\nexpect Pump 1\n");
+    run = cli({QStringLiteral("test"), example + ".sps", wrong});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.out,
+              wrong + QStringLiteral(
+                          ":3: expect Pump 1 failed: got 0 at t=0.010s\n0 passed, 1 failed\n"));
+    run = cli({QStringLiteral("test"), example + ".sps", wrong, QStringLiteral("--vcd"),
+               directory.filePath(QStringLiteral("t.vcd"))});
+    EXPECT_EQ(run.exitCode, 2);
+}
+
 TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
     if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
         GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
