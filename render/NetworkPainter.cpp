@@ -15,9 +15,7 @@ namespace rs::render {
 namespace {
 
 using ladder::ElementKind;
-using ladder::ElementKindInfo;
 using ladder::ElementLayout;
-using ladder::infoOf;
 using ladder::Shape;
 
 constexpr qreal kBubbleRadius = 4; // the circle that negates a box's output
@@ -88,10 +86,9 @@ private:
                            : m_style.body.isValid() ? QBrush(m_style.body)
                                                     : QBrush(m_style.background));
         const QRectF& r = e.symbolRect;
-        const ElementKindInfo& info = infoOf(e.kind);
-        const QString mark = QString::fromUtf8(info.mark.data(), qsizetype(info.mark.size()));
+        const QString& mark = e.mark;
         const QColor& ink = closed ? m_style.closedInk : m_style.ink;
-        switch (info.shape) {
+        switch (e.shape) {
         case Shape::Contact:
             // An inverted edge is written as the text writes it, "/P": a slash
             // through the letter would hide it.

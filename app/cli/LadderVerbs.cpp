@@ -3,6 +3,7 @@
 
 #include "LivePower.h"
 #include "NetworkPicture.h"
+#include "Pl110Verbs.h"
 #include "Verbs.h"
 #include "compiler/Compiler.h"
 #include "ladder/LadderToText.h"
@@ -104,6 +105,18 @@ int firstDifferingLine(const std::string& a, const std::string& b) {
 int runLadder(const Invocation& invocation) {
     if (invocation.arguments.size() != 1)
         return usage(QStringLiteral("ladder takes exactly one FILE.sps"));
+    if (const auto text = pl110Text(invocation.arguments[0])) {
+        const auto rung = number(invocation, "network", 1, 1 << 30);
+        if (!rung)
+            return usage(QStringLiteral("ladder needs --network K, a rung number from 1"));
+        if (invocation.options.isSet(QStringLiteral("scenario")))
+            return usage(QStringLiteral("--scenario draws Pluto networks live; a PL110 rung is "
+                                        "drawn without power"));
+        if (!render::isPictureFileName(invocation.options.value(QStringLiteral("output"))))
+            return usage(QStringLiteral("ladder needs -o OUT.svg or -o OUT.png"));
+        return ladderPl110(invocation.arguments[0], *text, *rung,
+                           invocation.options.value(QStringLiteral("output")));
+    }
     const auto unit = number(invocation, "unit", 0, 31);
     if (!unit)
         return usage(QStringLiteral("ladder needs --unit U, a station number 0-31"));

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Pl110Verbs.h"
 
+#include "NetworkPicture.h"
 #include "ProjectLoading.h"
 #include "Verbs.h"
 #include "pl110/ProgramCheck.h"
 #include "pl110/ProgramText.h"
+#include "pl110/RungLayout.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 
@@ -39,6 +41,50 @@ int formatPl110(const QString& path, const std::string& text) {
     const std::string printed = pl110::printProgram(reading.program);
     std::fwrite(printed.data(), 1, printed.size(), stdout);
     return Ok;
+}
+
+int ladderPl110(const QString& path, const std::string& text, int network, const QString& output) {
+    const pl110::ProgramReading reading = pl110::readProgram(text);
+    if (!reading.diagnostics.empty()) {
+        printDiagnostics(path, reading.diagnostics);
+        return Failed;
+    }
+    // The rungs in the order the file has them, each with the comment lines
+    // right above it.
+    int number = 0;
+    for (const auto* part : {&reading.program.init, &reading.program.main}) {
+        QStringList comment;
+        for (const pl110::Line& line : *part) {
+            if (const auto* note = std::get_if<pl110::CommentLine>(&line.body)) {
+                comment << QString::fromStdString(note->text).trimmed();
+                continue;
+            }
+            const auto* rung = std::get_if<pl110::Rung>(&line.body);
+            if (!rung) {
+                comment.clear();
+                continue;
+            }
+            if (++number != network) {
+                comment.clear();
+                continue;
+            }
+            pl110::RungLayoutContext context;
+            context.title = QStringLiteral("Rung %1").arg(number);
+            context.comment = comment.join(u'\n');
+            context.statement = static_cast<std::uint32_t>(number);
+            const QString error =
+                render::writeNetworkPicture(output, pl110::layoutRung(*rung, context), {}, nullptr,
+                                            QStringLiteral("%1 rung %2").arg(path).arg(number));
+            if (!error.isEmpty()) {
+                std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+                return UsageOrIo;
+            }
+            return Ok;
+        }
+    }
+    std::fprintf(stderr, "rungsmith-cli: %s: the program has %d rung(s), not %d\n",
+                 qPrintable(path), number, network);
+    return Failed;
 }
 
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,

@@ -17,6 +17,9 @@ std::optional<std::string> pl110Text(const QString& path);
 
 int checkPl110(const QString& path, const std::string& text);
 int formatPl110(const QString& path, const std::string& text);
+// ladder --network K -o OUT.svg|png: rung K (INIT's rungs, then MAIN's) drawn
+// as the IDE draws a network.
+int ladderPl110(const QString& path, const std::string& text, int network, const QString& output);
 // test: each scenario from power on, the failures and the count as for Pluto.
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
               const QString& vcd);

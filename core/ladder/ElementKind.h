@@ -28,4 +28,7 @@ enum class ElementKind : std::uint8_t {
     Arithmetic,      // (R0.1 += 2)
 };
 
+// How an element is drawn, whatever the target.
+enum class Shape : std::uint8_t { Contact, Box, Coil };
+
 } // namespace rs::ladder

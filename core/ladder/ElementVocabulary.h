@@ -37,8 +37,6 @@ struct ElementParts {
     friend bool operator==(const ElementParts&, const ElementParts&) = default;
 };
 
-enum class Shape : std::uint8_t { Contact, Box, Coil };
-
 // What an element's operand is, for an editor to ask for.
 enum class OperandRole : std::uint8_t {
     Variable,

@@ -3,6 +3,7 @@
 
 #include "BlockLayout.h"
 #include "ElementVocabulary.h"
+#include "RungGeometry.h"
 
 #include "lang/ElementNumbering.h"
 #include "lang/Keywords.h"
@@ -17,11 +18,6 @@ namespace rs::ladder {
 
 namespace {
 
-constexpr qreal kSymbolWidth = 24; // a contact or coil
-constexpr qreal kSymbolHeight = 26;
-constexpr qreal kBoxInset = 12; // between a box and its cell's sides
-constexpr qreal kBoxHeight = 28;
-constexpr qreal kLabelInset = 3;
 constexpr qreal kTitleWidth = 96; // "Network 999" before the comment
 constexpr qreal kCommentGap = 12; // between the right rail and output comments
 
@@ -49,14 +45,15 @@ QString valueText(const lang::Value& value) {
     return text(lang::printValue(value));
 }
 
-// The labels of an element before it has a place.
-struct Labels {
-    ElementKind kind = ElementKind::NormallyOpen;
-    bool negated = false;
-    QString name;
-    QString address;
-    QString text;
-};
+// How Pluto draws a kind: its vocabulary's shape and mark.
+ElementLabels drawn(ElementKind kind) {
+    ElementLabels l;
+    l.kind = kind;
+    const ElementKindInfo& info = infoOf(kind);
+    l.shape = info.shape;
+    l.mark = QString::fromUtf8(info.mark.data(), static_cast<qsizetype>(info.mark.size()));
+    return l;
+}
 
 class Layouter {
 public:
@@ -106,9 +103,14 @@ private:
         return operand.address.valid() ? text(lang::toString(operand.address)) : QString();
     }
 
-    Labels labels(const Element& element) const {
-        Labels l;
-        l.kind = kindOf(element);
+    auto labelsOf() const {
+        return [this](const Element& element) {
+            return labels(element);
+        };
+    }
+
+    ElementLabels labels(const Element& element) const {
+        ElementLabels l = drawn(kindOf(element));
         if (const auto* contact = std::get_if<Contact>(&element)) {
             l.name = nameOf(contact->operand);
             l.address = addressOf(contact->operand);
@@ -137,9 +139,8 @@ private:
         return l;
     }
 
-    Labels labels(const Output& output) const {
-        Labels l;
-        l.kind = kindOf(output);
+    ElementLabels labels(const Output& output) const {
+        ElementLabels l = drawn(kindOf(output));
         switch (output.kind) {
         case lang::StatementKind::Jump:
             // The window's translations hold it (ui/CMakeLists.txt scans this file).
@@ -161,35 +162,6 @@ private:
         return l;
     }
 
-    // A box whose text does not fit one column takes two.
-    int span(const Labels& l) const {
-        if (!isBox(l.kind))
-            return 1;
-        return l.text.size() * m_metrics.charWidth > m_metrics.cellWidth - 2 * kBoxInset ? 2 : 1;
-    }
-
-    struct Extent {
-        int columns = 0;
-        int rows = 0;
-    };
-
-    Extent extent(const Circuit& circuit) const {
-        if (circuit.isElement())
-            return {span(labels(circuit.element)), 1};
-        Extent total;
-        for (const auto& part : circuit.parts) {
-            Extent e = extent(part);
-            if (circuit.kind == Circuit::Kind::Series) {
-                total.columns += e.columns;
-                total.rows = std::max(total.rows, e.rows);
-            } else {
-                total.columns = std::max(total.columns, e.columns);
-                total.rows += e.rows;
-            }
-        }
-        return total;
-    }
-
     void measureColumns() {
         int condition = m_metrics.minimumConditionColumns;
         int outputs = 1;
@@ -198,166 +170,50 @@ private:
             if (!rung)
                 continue;
             if (rung->condition)
-                condition = std::max(condition, extent(*rung->condition).columns);
+                condition =
+                    std::max(condition, m_geometry.extent(*rung->condition, labelsOf()).columns);
             for (const auto& output : rung->outputs)
-                outputs = std::max(outputs, span(labels(output)));
+                outputs = std::max(outputs, m_geometry.span(labels(output)));
         }
         m_layout.conditionColumns = condition;
         m_layout.outputColumns = outputs;
     }
 
-    // ----- geometry
-
-    qreal wireY(qreal rungTop, int row) const {
-        return rungTop + row * m_metrics.cellHeight + m_metrics.cellHeight / 2;
-    }
-
-    void wire(qreal x1, qreal y1, qreal x2, qreal y2, PowerFeed feed) {
-        if (x1 != x2 || y1 != y2)
-            m_layout.wires.push_back({QLineF(x1, y1, x2, y2), std::move(feed), false});
-    }
-
-    PowerFeed fedBy(std::vector<std::uint16_t> elements) const {
-        return {PowerFeed::Kind::Elements, m_statement, std::move(elements)};
-    }
-
-    ElementLayout& place(const Labels& l, qreal left, qreal top, int column, int row, int columns) {
-        ElementLayout e;
-        e.kind = l.kind;
-        e.negated = l.negated;
-        e.column = column;
-        e.row = row;
-        e.columnSpan = columns;
-        e.cell = QRectF(left, top, columns * m_metrics.cellWidth, m_metrics.cellHeight);
-        const qreal middle = e.cell.center().y();
-        if (isBox(l.kind))
-            e.symbolRect = QRectF(e.cell.left() + kBoxInset, middle - kBoxHeight / 2,
-                                  e.cell.width() - 2 * kBoxInset, kBoxHeight);
-        else
-            e.symbolRect = QRectF(e.cell.center().x() - kSymbolWidth / 2,
-                                  middle - kSymbolHeight / 2, kSymbolWidth, kSymbolHeight);
-        e.name = l.name;
-        e.address = l.address;
-        e.text = l.text;
-        e.nameRect = QRectF(e.cell.left() + kLabelInset, e.cell.top() + kLabelInset,
-                            e.cell.width() - 2 * kLabelInset, m_metrics.labelHeight);
-        e.addressRect = QRectF(e.cell.left() + kLabelInset,
-                               e.cell.bottom() - kLabelInset - m_metrics.labelHeight,
-                               e.cell.width() - 2 * kLabelInset, m_metrics.labelHeight);
-        m_layout.elements.push_back(std::move(e));
-        return m_layout.elements.back();
-    }
-
-    struct Placed {
-        Extent extent;
-        PowerFeed output;
-    };
-
-    // Places a condition node with its top-left grid cell at (column, row),
-    // numbered by the one rule (lang/ElementNumbering.h).
-    Placed placeCircuit(const Circuit& circuit, std::vector<std::size_t>& path, int column, int row,
-                        const PowerFeed& input) {
-        const std::uint16_t id = m_numbering->number(circuit);
-        const qreal left = m_railX + column * m_metrics.cellWidth;
-        const qreal y = wireY(m_rungTop, row);
-        if (circuit.isElement()) {
-            const Labels l = labels(circuit.element);
-            const int columns = span(l);
-            ElementLayout& e =
-                place(l, left, m_rungTop + row * m_metrics.cellHeight, column, row, columns);
-            e.statement = m_statement;
-            e.element = id;
-            e.path = {m_item, path};
-            const qreal symbolLeft = e.symbolRect.left();
-            const qreal symbolRight = e.symbolRect.right();
-            const qreal right = e.cell.right();
-            wire(left, y, symbolLeft, y, input);
-            wire(symbolRight, y, right, y, fedBy({id}));
-            return {{columns, 1}, fedBy({id})};
-        }
-        Placed placed;
-        std::vector<Placed> branches;
-        int offset = 0;
-        PowerFeed feed = input;
-        for (std::size_t i = 0; i < circuit.parts.size(); ++i) {
-            path.push_back(i);
-            if (circuit.kind == Circuit::Kind::Series) {
-                Placed part = placeCircuit(circuit.parts[i], path, column + offset, row, feed);
-                offset += part.extent.columns;
-                placed.extent.columns = offset;
-                placed.extent.rows = std::max(placed.extent.rows, part.extent.rows);
-                feed = std::move(part.output);
-            } else {
-                branches.push_back(
-                    placeCircuit(circuit.parts[i], path, column, row + offset, input));
-                placed.extent.columns =
-                    std::max(placed.extent.columns, branches.back().extent.columns);
-                placed.extent.rows += branches.back().extent.rows;
-                offset += branches.back().extent.rows;
-            }
-            path.pop_back();
-        }
-        if (circuit.kind == Circuit::Kind::Series) {
-            placed.output = std::move(feed);
-            return placed;
-        }
-        // Parallel: bars down the left and right, and short branches drawn out to the right.
-        const qreal right = left + placed.extent.columns * m_metrics.cellWidth;
-        std::vector<std::uint16_t> joined;
-        int branchRow = row;
-        for (const auto& branch : branches) {
-            const qreal branchY = wireY(m_rungTop, branchRow);
-            wire(left + branch.extent.columns * m_metrics.cellWidth, branchY, right, branchY,
-                 branch.output);
-            joined.insert(joined.end(), branch.output.elements.begin(),
-                          branch.output.elements.end());
-            branchRow += branch.extent.rows;
-        }
-        const qreal lastY = wireY(m_rungTop, branchRow - branches.back().extent.rows);
-        wire(left, y, left, lastY, input);
-        placed.output = fedBy(std::move(joined));
-        wire(right, y, right, lastY, placed.output);
-        return placed;
-    }
-
     qreal placeRung(const Rung& rung, std::size_t item, std::uint32_t firstStatement, qreal top) {
-        m_rungTop = top;
-        m_item = item;
-        m_statement = firstStatement;
-        const qreal y = wireY(top, 0);
+        const qreal y = m_geometry.wireY(top, 0);
         PowerFeed power{PowerFeed::Kind::Rail, firstStatement, {}};
-        Extent condition;
+        RungGeometry::Extent condition;
         if (rung.condition) {
             lang::PreOrderNumbering<Circuit> numbering(
                 *rung.condition, [](const Circuit& c) -> const auto& { return c.parts; });
-            m_numbering = &numbering;
-            std::vector<std::size_t> path;
-            Placed placed = placeCircuit(*rung.condition, path, 0, 0, power);
-            m_numbering = nullptr;
+            RungGeometry::Placed placed =
+                m_geometry.placeCircuit(*rung.condition, numbering, labelsOf(), {item, {}},
+                                        firstStatement, top, 0, 0, power);
             condition = placed.extent;
             power = std::move(placed.output);
         }
-        wire(m_railX + condition.columns * m_metrics.cellWidth, y, m_outputX, y, power);
+        m_geometry.wire(m_railX + condition.columns * m_metrics.cellWidth, y, m_outputX, y, power);
 
         const int outputs = static_cast<int>(rung.outputs.size());
-        const qreal lastY = wireY(top, outputs - 1);
-        wire(m_outputX, y, m_outputX, lastY, power);
+        const qreal lastY = m_geometry.wireY(top, outputs - 1);
+        m_geometry.wire(m_outputX, y, m_outputX, lastY, power);
         for (int i = 0; i < outputs; ++i) {
             const Output& output = rung.outputs[static_cast<std::size_t>(i)];
-            const Labels l = labels(output);
-            const int columns = span(l);
+            const ElementLabels l = labels(output);
+            const int columns = m_geometry.span(l);
             const int column = m_layout.conditionColumns + m_layout.outputColumns - columns;
             const qreal left = m_railX + column * m_metrics.cellWidth;
-            ElementLayout& e = place(l, left, top + i * m_metrics.cellHeight, column, i, columns);
+            ElementLayout& e =
+                m_geometry.place(l, left, top + i * m_metrics.cellHeight, column, i, columns);
             e.statement = firstStatement + static_cast<std::uint32_t>(i);
             e.element = lang::kOutputElement;
             e.path = {item, {}};
             e.output = i;
-            const qreal outY = wireY(top, i);
+            const qreal outY = m_geometry.wireY(top, i);
             const qreal symbolLeft = e.symbolRect.left();
             const qreal symbolRight = e.symbolRect.right();
-            wire(m_outputX, outY, symbolLeft, outY, power);
-            wire(symbolRight, outY, m_rightRailX, outY, {});
+            m_geometry.wire(m_outputX, outY, symbolLeft, outY, power);
+            m_geometry.wire(symbolRight, outY, m_rightRailX, outY, {});
             if (output.comment)
                 outputComment(*output.comment, outY);
         }
@@ -440,10 +296,7 @@ private:
     qreal m_commentX = 0;
     qreal m_commentWidth = 0;
     qreal m_width = 0;
-    qreal m_rungTop = 0;
-    std::size_t m_item = 0;
-    std::uint32_t m_statement = 0;
-    lang::PreOrderNumbering<Circuit>* m_numbering = nullptr;
+    RungGeometry m_geometry{m_layout, m_metrics, m_metrics.margin};
 };
 
 } // namespace

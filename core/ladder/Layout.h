@@ -34,7 +34,9 @@ struct LayoutMetrics {
 };
 
 struct ElementLayout {
-    ElementKind kind = ElementKind::NormallyOpen;
+    ElementKind kind = ElementKind::NormallyOpen; // Pluto's kind, which its editor acts on
+    Shape shape = Shape::Contact;                 // how it is drawn, for every target
+    QString mark;         // inside a contact or coil: "P", "S"; "/" a normally closed slash
     bool negated = false; // a timer or comparison box that passes power when it is false
     // The compiler's numbering: the statement's number in the unit and the
     // element in it (0 the output, 1.. the condition's nodes in pre-order).

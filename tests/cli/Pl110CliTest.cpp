@@ -118,6 +118,22 @@ TEST_F(Pl110CliTest, TestRunsTheExampleScenariosAndReportsAFailureByLine) {
     EXPECT_EQ(run.exitCode, 2);
 }
 
+TEST_F(Pl110CliTest, LadderDrawsARungAsAPicture) {
+    const QString example = QStringLiteral(RUNGSMITH_EXAMPLES "/pl110/filling-station.sps");
+    const QString png = directory.filePath(QStringLiteral("rung.png"));
+    CliRun run = cli({QStringLiteral("ladder"), example, QStringLiteral("--network"),
+                      QStringLiteral("2"), QStringLiteral("-o"), png});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    QFile picture(png);
+    ASSERT_TRUE(picture.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(picture.read(4) == "\x89PNG");
+    run = cli({QStringLiteral("ladder"), example, QStringLiteral("--network"), QStringLiteral("99"),
+               QStringLiteral("-o"), png});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(run.out.contains(QStringLiteral("the program has 9 rung(s), not 99")))
+        << run.out.toStdString();
+}
+
 TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
     if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
         GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";

@@ -23,6 +23,9 @@ ladder::NetworkLayout layoutOf(ElementKind kind, const QString& boxText) {
     const qreal symbolHeight = box ? 28 : 26;
     ladder::ElementLayout element;
     element.kind = kind;
+    const ladder::ElementKindInfo& info = ladder::infoOf(kind);
+    element.shape = info.shape;
+    element.mark = QString::fromUtf8(info.mark.data(), static_cast<qsizetype>(info.mark.size()));
     element.text = boxText;
     element.symbolRect =
         QRectF((kWidth - symbolWidth) / 2, middle - symbolHeight / 2, symbolWidth, symbolHeight);
