@@ -109,13 +109,11 @@ int runLadder(const Invocation& invocation) {
         const auto rung = number(invocation, "network", 1, 1 << 30);
         if (!rung)
             return usage(QStringLiteral("ladder needs --network K, a rung number from 1"));
-        if (invocation.options.isSet(QStringLiteral("scenario")))
-            return usage(QStringLiteral("--scenario draws Pluto networks live; a PL110 rung is "
-                                        "drawn without power"));
         if (!render::isPictureFileName(invocation.options.value(QStringLiteral("output"))))
             return usage(QStringLiteral("ladder needs -o OUT.svg or -o OUT.png"));
         return ladderPl110(invocation.arguments[0], *text, *rung,
-                           invocation.options.value(QStringLiteral("output")));
+                           invocation.options.value(QStringLiteral("output")),
+                           invocation.options.value(QStringLiteral("scenario")));
     }
     const auto unit = number(invocation, "unit", 0, 31);
     if (!unit)

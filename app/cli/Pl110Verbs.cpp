@@ -2,6 +2,7 @@
 #include "Pl110Verbs.h"
 
 #include "NetworkPicture.h"
+#include "PowerSnapshot.h"
 #include "ProjectLoading.h"
 #include "Verbs.h"
 #include "pl110/ProgramCheck.h"
@@ -9,6 +10,11 @@
 #include "pl110/RungLayout.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
+
+#include <QStringList>
+
+#include <optional>
+#include <utility>
 
 namespace rs::cli {
 
@@ -43,10 +49,54 @@ int formatPl110(const QString& path, const std::string& text) {
     return Ok;
 }
 
-int ladderPl110(const QString& path, const std::string& text, int network, const QString& output) {
+namespace {
+
+// The power picture of the engine's last scan, by rung number.
+render::PowerSnapshot powerOf(const pl110::ScanEngine& engine) {
+    render::PowerSnapshot snapshot;
+    for (std::size_t rung = 0; rung < engine.marks().size(); ++rung) {
+        const pl110::RungMarks& marks = engine.marks()[rung];
+        if (!marks.ran)
+            continue;
+        render::StatementPower& power = snapshot.statements[static_cast<std::uint32_t>(rung + 1)];
+        power.energised = marks.energised;
+        power.states = marks.states;
+        for (std::size_t element = 1; element < marks.power.size(); ++element)
+            if (marks.power[element])
+                power.conducting.insert(static_cast<std::uint16_t>(element));
+    }
+    return snapshot;
+}
+
+// Runs the scenario to its end; its status, and false when it could not run.
+std::pair<int, bool> runToEnd(const QString& path, const pl110::Program& program,
+                              pl110::ScanEngine& engine) {
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(file.error));
+        return {UsageOrIo, false};
+    }
+    const pl110::Scenario scenario = pl110::parseScenario(file.text, pl110::ScenarioNames(program));
+    const sim::ScenarioReport report = pl110::runScenario(path.toStdString(), scenario, engine);
+    for (const auto& line : report.diagnostics)
+        std::fprintf(stderr, "%s\n", line.c_str());
+    if (!report.diagnostics.empty())
+        return {Failed, false};
+    for (const auto& line : report.failures)
+        std::fprintf(stdout, "%s\n", line.c_str());
+    return {report.failed ? Failed : Ok, true};
+}
+
+} // namespace
+
+int ladderPl110(const QString& path, const std::string& text, int network, const QString& output,
+                const QString& scenario) {
     const pl110::ProgramReading reading = pl110::readProgram(text);
-    if (!reading.diagnostics.empty()) {
-        printDiagnostics(path, reading.diagnostics);
+    lang::Diagnostics diagnostics = reading.diagnostics;
+    if (diagnostics.empty() && !scenario.isEmpty())
+        diagnostics = pl110::checkProgram(reading.program); // only a checked program runs
+    if (!diagnostics.empty()) {
+        printDiagnostics(path, diagnostics);
         return Failed;
     }
     // The rungs in the order the file has them, each with the comment lines
@@ -72,14 +122,24 @@ int ladderPl110(const QString& path, const std::string& text, int network, const
             context.title = QStringLiteral("Rung %1").arg(number);
             context.comment = comment.join(u'\n');
             context.statement = static_cast<std::uint32_t>(number);
-            const QString error =
-                render::writeNetworkPicture(output, pl110::layoutRung(*rung, context), {}, nullptr,
-                                            QStringLiteral("%1 rung %2").arg(path).arg(number));
+            int status = Ok;
+            std::optional<render::PowerSnapshot> power;
+            if (!scenario.isEmpty()) {
+                pl110::ScanEngine engine(reading.program);
+                const auto [ran, drawable] = runToEnd(scenario, reading.program, engine);
+                if (!drawable)
+                    return ran;
+                status = ran;
+                power = powerOf(engine);
+            }
+            const QString error = render::writeNetworkPicture(
+                output, pl110::layoutRung(*rung, context), {}, power ? &*power : nullptr,
+                QStringLiteral("%1 rung %2").arg(path).arg(number));
             if (!error.isEmpty()) {
                 std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
                 return UsageOrIo;
             }
-            return Ok;
+            return status;
         }
     }
     std::fprintf(stderr, "rungsmith-cli: %s: the program has %d rung(s), not %d\n",

@@ -17,9 +17,11 @@ std::optional<std::string> pl110Text(const QString& path);
 
 int checkPl110(const QString& path, const std::string& text);
 int formatPl110(const QString& path, const std::string& text);
-// ladder --network K -o OUT.svg|png: rung K (INIT's rungs, then MAIN's) drawn
-// as the IDE draws a network.
-int ladderPl110(const QString& path, const std::string& text, int network, const QString& output);
+// ladder --network K -o OUT.svg|png [--scenario SCN]: rung K (INIT's rungs,
+// then MAIN's) drawn as the IDE draws a network; with a scenario, live as
+// the scenario leaves it (its failures printed as `test` prints them).
+int ladderPl110(const QString& path, const std::string& text, int network, const QString& output,
+                const QString& scenario);
 // test: each scenario from power on, the failures and the count as for Pluto.
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
               const QString& vcd);

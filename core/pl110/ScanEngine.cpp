@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ScanEngine.h"
 
+#include "sim/Conduction.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -109,6 +111,15 @@ ScanEngine::ScanEngine(Program program, int cycleMs)
     };
     m_init = sized(m_program.init);
     m_main = sized(m_program.main);
+    const auto mark = [&](const Rung& rung) {
+        const std::size_t elements =
+            1 +
+            (rung.condition ? static_cast<std::size_t>(ladder::nodeCount(*rung.condition)) : 0U);
+        m_marks.push_back({false, false, std::vector<std::uint8_t>(elements, 0),
+                           std::vector<std::uint8_t>(elements, 0)});
+    };
+    forEachRung(m_program.init, mark);
+    forEachRung(m_program.main, mark);
     const auto counters = [&](const Rung& rung) {
         if (rung.output.kind == OutputKind::Counter)
             m_counterTypes[static_cast<std::size_t>(rung.output.target.address.number - 1)] =
@@ -162,24 +173,33 @@ void ScanEngine::specialMarkersAtScanStart() {
 void ScanEngine::scan() {
     specialMarkersAtScanStart();
     applyForces();
+    for (RungMarks& marks : m_marks)
+        marks.ran = false;
     if (m_scans == 0)
-        runLines(m_program.init, m_init);
-    runLines(m_program.main, m_main);
+        runLines(m_program.init, m_init, 0);
+    runLines(m_program.main, m_main, m_init.size());
     countersAtScanEnd();
     applyForces();
     ++m_scans;
     m_timeMs += m_cycleMs;
 }
 
-void ScanEngine::runLines(const std::vector<Line>& lines, std::vector<RungState>& states) {
+void ScanEngine::runLines(const std::vector<Line>& lines, std::vector<RungState>& states,
+                          std::size_t firstMark) {
     std::size_t index = 0;
     forEachRung(lines, [&](const Rung& rung) {
+        RungMarks& marks = m_marks[firstMark + index];
         RungState& state = states[index++];
         int node = 0;
-        const bool power = rung.condition ? evaluate(*rung.condition, true, state, node) : true;
+        const bool power =
+            rung.condition ? evaluate(*rung.condition, true, state, node, marks) : true;
         output(rung.output, power, state);
         if (!m_forces.empty())
             applyForces();
+        marks.ran = true;
+        marks.energised = power;
+        marks.power[0] = power ? 1 : 0;
+        marks.states[0] = outputState(rung.output, power);
     });
 }
 
@@ -223,28 +243,39 @@ void ScanEngine::applyForces() {
 
 // The power leaving a circuit that `power` reaches. Every element is
 // evaluated every scan, so edges see every change of what reaches them.
-bool ScanEngine::evaluate(const Circuit& circuit, bool power, RungState& state, int& node) {
+bool ScanEngine::evaluate(const Circuit& circuit, bool power, RungState& state, int& node,
+                          RungMarks& marks) {
     const auto self = static_cast<std::size_t>(node++);
+    // The ladder numbers elements from 1; 0 is the output.
+    const auto mark = [&](bool out, bool closed) {
+        marks.power[self + 1] = out ? 1 : 0;
+        marks.states[self + 1] = closed ? sim::ElementState::Closed : 0;
+        return out;
+    };
     switch (circuit.kind) {
     case Circuit::Kind::Series:
         for (const Circuit& part : circuit.parts)
-            power = evaluate(part, power, state, node);
-        return power;
+            power = evaluate(part, power, state, node, marks);
+        return mark(power, power);
     case Circuit::Kind::Parallel: {
         bool any = false;
         for (const Circuit& part : circuit.parts)
-            any = evaluate(part, power, state, node) || any;
-        return any;
+            any = evaluate(part, power, state, node, marks) || any;
+        return mark(any, any);
     }
     case Circuit::Kind::Element:
         break;
     }
     const Element& element = circuit.element;
     switch (element.kind) {
-    case ElementKind::NormallyOpen:
-        return power && m_memory.bit(element.operand.address);
-    case ElementKind::NormallyClosed:
-        return power && !m_memory.bit(element.operand.address);
+    case ElementKind::NormallyOpen: {
+        const bool closed = m_memory.bit(element.operand.address);
+        return mark(power && closed, closed);
+    }
+    case ElementKind::NormallyClosed: {
+        const bool closed = !m_memory.bit(element.operand.address);
+        return mark(power && closed, closed);
+    }
     case ElementKind::Compare: {
         const std::int32_t a = read(element.left);
         const std::int32_t b = read(element.right);
@@ -269,15 +300,17 @@ bool ScanEngine::evaluate(const Circuit& circuit, bool power, RungState& state, 
             holds = a <= b;
             break;
         }
-        return power && holds;
+        return mark(power && holds, holds);
     }
     case ElementKind::Not:
-        return !power;
+        return mark(!power, !power);
     case ElementKind::RisingEdge:
     case ElementKind::FallingEdge: {
         const bool before = state.edges[self] != 0;
         state.edges[self] = power ? 1 : 0;
-        return element.kind == ElementKind::RisingEdge ? power && !before : !power && before;
+        const bool out =
+            element.kind == ElementKind::RisingEdge ? power && !before : !power && before;
+        return mark(out, out);
     }
     }
     return false;
@@ -306,7 +339,7 @@ void ScanEngine::output(const Output& out, bool power, RungState& state) {
             m_memory.setBit(target, out.kind == OutputKind::SetBit);
         return;
     case OutputKind::Timer:
-        timer(out, power);
+        m_timerRunning = timer(out, power).second;
         return;
     case OutputKind::Counter:
         counter(out, power, state);
@@ -363,7 +396,7 @@ void ScanEngine::output(const Output& out, bool power, RungState& state) {
     m_memory.setValue(target, result);
 }
 
-void ScanEngine::timer(const Output& out, bool power) {
+std::pair<bool, bool> ScanEngine::timer(const Output& out, bool power) {
     const int number = out.target.address.number;
     const Address value{Area::Timer, Width::Word, number, -1};
     const Address preset{Area::TimerPreset, Width::Word, number, -1};
@@ -413,6 +446,8 @@ void ScanEngine::timer(const Output& out, bool power) {
     }
     t.wasOn = power;
     m_memory.setBit({Area::Timer, Width::Bit, number, -1}, contact);
+    const bool running = out.timer == TimerType::OffDelay ? t.counting : power && !contact;
+    return {contact, running};
 }
 
 void ScanEngine::counter(const Output& out, bool power, RungState& state) {
@@ -443,6 +478,25 @@ void ScanEngine::counter(const Output& out, bool power, RungState& state) {
         }
         break;
     }
+}
+
+std::uint8_t ScanEngine::outputState(const Output& out, bool power) const {
+    switch (out.kind) {
+    case OutputKind::Coil:
+    case OutputKind::SetBit:
+    case OutputKind::ResetBit:
+        return m_memory.bit(out.target.address) ? sim::ElementState::Closed : 0;
+    case OutputKind::Timer:
+        return static_cast<std::uint8_t>(
+            (m_memory.bit(out.target.address) ? sim::ElementState::Closed : 0) |
+            (m_timerRunning ? sim::ElementState::Running : 0));
+    case OutputKind::Counter:
+        return m_memory.bit(out.target.address) ? sim::ElementState::Closed : 0;
+    case OutputKind::Move:
+    case OutputKind::Formula:
+        break;
+    }
+    return power ? sim::ElementState::Closed : 0;
 }
 
 // Counters compare with their presets once, at the end of the scan.

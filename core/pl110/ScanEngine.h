@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
 // Runs a checked PL110 program scan by scan on virtual time (docs/pl110.md,
@@ -29,6 +30,15 @@ struct Memory {
     std::int32_t value(const Address& address) const;
     // Stores the low 16 bits (a word) or all 32 (a double word).
     void setValue(const Address& address, std::int64_t value);
+};
+
+// What one rung did in the last scan, for live colouring: numbered as the
+// ladder numbers its elements (0 the output, 1.. the condition in pre-order).
+struct RungMarks {
+    bool ran = false;
+    bool energised = false;           // power reached the output
+    std::vector<std::uint8_t> power;  // by element: power at its right side
+    std::vector<std::uint8_t> states; // by element: sim::ElementState bits
 };
 
 class ScanEngine {
@@ -55,6 +65,8 @@ public:
     Memory& memory() { return m_memory; }
     const Memory& memory() const { return m_memory; }
     std::uint64_t scans() const { return m_scans; }
+    // By rung, INIT's then MAIN's in file order: rung n (from 1) is marks()[n - 1].
+    const std::vector<RungMarks>& marks() const { return m_marks; }
     std::int64_t timeMs() const { return m_timeMs; }
     int cycleMs() const { return m_cycleMs; }
 
@@ -69,14 +81,19 @@ private:
         bool coilWasOn = false;          // B coils and counter inputs count edges
     };
 
-    void runLines(const std::vector<Line>& lines, std::vector<RungState>& states);
-    bool evaluate(const Circuit& circuit, bool power, RungState& state, int& node);
+    void runLines(const std::vector<Line>& lines, std::vector<RungState>& states,
+                  std::size_t firstMark);
+    bool evaluate(const Circuit& circuit, bool power, RungState& state, int& node,
+                  RungMarks& marks);
     void output(const Output& out, bool power, RungState& state);
-    void timer(const Output& out, bool power);
+    // The timer's contact, and whether it is counting.
+    std::pair<bool, bool> timer(const Output& out, bool power);
     void counter(const Output& out, bool power, RungState& state);
     std::int32_t read(const Value& value) const;
     void specialMarkersAtScanStart();
     void countersAtScanEnd();
+    // The output's own state after its rung: its variable 1, a timer counting.
+    std::uint8_t outputState(const Output& out, bool power) const;
     void applyForces();
 
     Program m_program;
@@ -87,6 +104,8 @@ private:
     std::array<TimerState, 48> m_timers{};
     std::array<std::optional<CounterType>, 16> m_counterTypes{}; // of the counters with coils
     std::map<Address, std::int64_t> m_forces;
+    std::vector<RungMarks> m_marks;
+    bool m_timerRunning = false; // of the timer coil that ran last
     std::uint64_t m_scans = 0;
     std::int64_t m_timeMs = 0;
 };

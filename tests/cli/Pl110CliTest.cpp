@@ -132,6 +132,14 @@ TEST_F(Pl110CliTest, LadderDrawsARungAsAPicture) {
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_TRUE(run.out.contains(QStringLiteral("the program has 9 rung(s), not 99")))
         << run.out.toStdString();
+    // Live, as a scenario leaves it; its failures are printed as `test` prints them.
+    const QString wrong =
+        write(QStringLiteral("wrong.scn"), "set Start 1\nscans 1\nexpect Pump 1\n");
+    run = cli({QStringLiteral("ladder"), example, QStringLiteral("--network"), QStringLiteral("2"),
+               QStringLiteral("--scenario"), wrong, QStringLiteral("-o"), png});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_TRUE(run.out.contains(QStringLiteral(":3: expect Pump 1 failed: got 0 at t=0.010s")))
+        << run.out.toStdString();
 }
 
 TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {

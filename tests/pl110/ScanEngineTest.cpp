@@ -4,6 +4,7 @@
 #include "pl110/ProgramCheck.h"
 #include "pl110/ProgramText.h"
 #include "pl110/ScanEngine.h"
+#include "sim/Conduction.h"
 
 #include <gtest/gtest.h>
 
@@ -239,6 +240,27 @@ TEST(Pl110Scan, ClocksAndTestModeFollowTheSpecialMarkers) {
     plant.engine.memory().setBit(at("SM0.5"), true);
     plant.scans(1);
     EXPECT_TRUE(plant.bit("Q3"));
+}
+
+TEST(Pl110Scan, MarksWhatEachElementOfEachRungDid) {
+    Plant plant("INIT\n(VW1 = 1)\nMAIN\nQ1 = I1 * /I2 + NOT\nTON(T1, 10ms, 5) = I3\n");
+    plant.set("I1", true);
+    plant.scans(1);
+    ASSERT_EQ(plant.engine.marks().size(), 3U);
+    EXPECT_TRUE(plant.engine.marks()[0].ran); // INIT's rung in the first scan
+    const RungMarks& coil = plant.engine.marks()[1];
+    // 0 the output, 1 the OR, 2 the AND, 3 I1, 4 /I2, 5 NOT.
+    EXPECT_EQ(coil.power, (std::vector<std::uint8_t>{1, 1, 1, 1, 1, 0}));
+    EXPECT_EQ(coil.states[3], sim::ElementState::Closed);
+    EXPECT_EQ(coil.states[0], sim::ElementState::Closed); // Q1 is 1
+    plant.set("I2", true);
+    plant.set("I3", true);
+    plant.scans(1);
+    EXPECT_FALSE(plant.engine.marks()[0].ran); // INIT runs once
+    EXPECT_EQ(plant.engine.marks()[1].power, (std::vector<std::uint8_t>{0, 0, 0, 1, 0, 0}));
+    EXPECT_EQ(plant.engine.marks()[2].states[0], sim::ElementState::Running);
+    plant.scans(5);
+    EXPECT_EQ(plant.engine.marks()[2].states[0], sim::ElementState::Closed);
 }
 
 TEST(Pl110Scan, RandomCheckedProgramsRunDeterministically) {
