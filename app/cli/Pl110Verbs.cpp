@@ -5,6 +5,7 @@
 #include "PowerSnapshot.h"
 #include "ProjectLoading.h"
 #include "Verbs.h"
+#include "pl110/NameCsv.h"
 #include "pl110/ProgramCheck.h"
 #include "pl110/ProgramText.h"
 #include "pl110/RungLayout.h"
@@ -145,6 +146,51 @@ int ladderPl110(const QString& path, const std::string& text, int network, const
     std::fprintf(stderr, "rungsmith-cli: %s: the program has %d rung(s), not %d\n",
                  qPrintable(path), number, network);
     return Failed;
+}
+
+namespace {
+
+// The program, its reading errors printed; nothing when it has some.
+std::optional<pl110::Program> readOrReport(const std::string& text, const QString& path) {
+    pl110::ProgramReading reading = pl110::readProgram(text);
+    if (reading.diagnostics.empty())
+        return std::move(reading.program);
+    printDiagnostics(path, reading.diagnostics);
+    return std::nullopt;
+}
+
+int written(const QString& out, std::string_view text) {
+    const QString error = project::writeTextFile(out, text);
+    if (error.isEmpty())
+        return Ok;
+    std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+    return UsageOrIo;
+}
+
+} // namespace
+
+int exportPl110Names(const std::string& text, const QString& path, const QString& out) {
+    const auto program = readOrReport(text, path);
+    return program ? written(out, pl110::exportNamesCsv(*program)) : Failed;
+}
+
+int importPl110Names(const std::string& text, const QString& path, const QString& csvPath,
+                     const QString& out) {
+    const auto program = readOrReport(text, path);
+    if (!program)
+        return Failed;
+    const project::FileText csv = project::readTextFile(csvPath);
+    if (!csv.error.isEmpty()) {
+        std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(csv.error));
+        return UsageOrIo;
+    }
+    const pl110::NameCsvImport imported = pl110::importNamesCsv(*program, csv.text);
+    for (const auto& problem : imported.problems)
+        std::fprintf(stderr, "%s:%d:%d: error: %s\n", qPrintable(csvPath), problem.line,
+                     problem.column, lang::visibleText(problem.message).c_str());
+    if (!imported.problems.empty())
+        return Failed;
+    return written(out, pl110::printProgram(imported.program));
 }
 
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,

@@ -22,6 +22,10 @@ int formatPl110(const QString& path, const std::string& text);
 // the scenario leaves it (its failures printed as `test` prints them).
 int ladderPl110(const QString& path, const std::string& text, int network, const QString& output,
                 const QString& scenario);
+// vars export / import: the names and descriptions as CSV (pl110/NameCsv.h).
+int exportPl110Names(const std::string& text, const QString& path, const QString& out);
+int importPl110Names(const std::string& text, const QString& path, const QString& csvPath,
+                     const QString& out);
 // test: each scenario from power on, the failures and the count as for Pluto.
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
               const QString& vcd);

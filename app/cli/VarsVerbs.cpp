@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "VarsVerbs.h"
 
+#include "Pl110Verbs.h"
 #include "ProtectedWriting.h"
 #include "Verbs.h"
 #include "lang/Diagnostic.h"
@@ -81,11 +82,15 @@ int runVars(const Invocation& invocation) {
     if (action == QLatin1String("export")) {
         if (arguments.size() != 2 || out.isEmpty())
             return usage("vars export takes FILE.sps and -o OUT.csv");
+        if (const auto text = pl110Text(arguments[1]))
+            return exportPl110Names(*text, arguments[1], out);
         return exportCsv(invocation, arguments[1], out);
     }
     if (action == QLatin1String("import")) {
         if (arguments.size() != 3 || out.isEmpty())
             return usage("vars import takes FILE.sps, IN.csv and -o OUT.sps");
+        if (const auto text = pl110Text(arguments[1]))
+            return importPl110Names(*text, arguments[1], arguments[2], out);
         return importCsv(invocation, arguments[1], arguments[2], out);
     }
     return usage(

@@ -3,10 +3,6 @@
 
 namespace rs::pl110 {
 
-namespace {
-
-constexpr std::size_t kCommentColumn = 31; // trailing comments line up here, as in Pluto files
-
 std::string operandText(const Operand& operand) {
     return operand.isName() ? operand.name : toString(operand.address);
 }
@@ -15,7 +11,7 @@ std::string valueText(const Value& value) {
     return value.isConstant() ? std::to_string(value.constant) : operandText(*value.operand);
 }
 
-std::string_view compareText(CompareOp op) {
+std::string_view compareWord(CompareOp op) {
     switch (op) {
     case CompareOp::Equal:
         return "=";
@@ -33,7 +29,7 @@ std::string_view compareText(CompareOp op) {
     return "=";
 }
 
-std::string_view formulaText(FormulaOp op) {
+std::string_view formulaWord(FormulaOp op) {
     switch (op) {
     case FormulaOp::Add:
         return "+";
@@ -57,6 +53,50 @@ std::string_view formulaText(FormulaOp op) {
     return "+";
 }
 
+std::string_view timeBaseWord(TimeBase base) {
+    switch (base) {
+    case TimeBase::Ms10:
+        return "10ms";
+    case TimeBase::Ms100:
+        return "100ms";
+    case TimeBase::S1:
+        return "1s";
+    }
+    return "100ms";
+}
+
+std::string_view timerWord(TimerType type) {
+    switch (type) {
+    case TimerType::OnDelay:
+        return "TON";
+    case TimerType::OffDelay:
+        return "TOFF";
+    case TimerType::Retentive:
+        return "TONR";
+    }
+    return "TON";
+}
+
+std::string_view counterWord(CounterType type) {
+    return type == CounterType::Up ? "MUP" : "MDOWN";
+}
+
+std::string_view inputWord(CounterInput input) {
+    switch (input) {
+    case CounterInput::Up:
+        return "UP";
+    case CounterInput::Down:
+        return "DOWN";
+    case CounterInput::Reset:
+        return "RESET";
+    }
+    return "UP";
+}
+
+namespace {
+
+constexpr std::size_t kCommentColumn = 31; // trailing comments line up here, as in Pluto files
+
 std::string elementText(const Element& element) {
     switch (element.kind) {
     case ElementKind::NormallyOpen:
@@ -64,7 +104,7 @@ std::string elementText(const Element& element) {
     case ElementKind::NormallyClosed:
         return "/" + operandText(element.operand);
     case ElementKind::Compare:
-        return "(" + valueText(element.left) + std::string(compareText(element.compare)) +
+        return "(" + valueText(element.left) + std::string(compareWord(element.compare)) +
                valueText(element.right) + ")";
     case ElementKind::Not:
         return "NOT";
@@ -90,18 +130,6 @@ std::string circuitText(const Circuit& circuit) {
     return text;
 }
 
-std::string_view timeBaseText(TimeBase base) {
-    switch (base) {
-    case TimeBase::Ms10:
-        return "10ms";
-    case TimeBase::Ms100:
-        return "100ms";
-    case TimeBase::S1:
-        return "1s";
-    }
-    return "100ms";
-}
-
 std::string outputText(const Output& output) {
     switch (output.kind) {
     case OutputKind::Coil:
@@ -111,25 +139,18 @@ std::string outputText(const Output& output) {
     case OutputKind::ResetBit:
         return "RBIT(" + operandText(output.target) + ")";
     case OutputKind::Timer: {
-        const std::string_view name = output.timer == TimerType::OnDelay    ? "TON"
-                                      : output.timer == TimerType::OffDelay ? "TOFF"
-                                                                            : "TONR";
-        return std::string(name) + "(" + operandText(output.target) + ", " +
-               std::string(timeBaseText(output.base)) + ", " + valueText(output.preset) + ")";
+        return std::string(timerWord(output.timer)) + "(" + operandText(output.target) + ", " +
+               std::string(timeBaseWord(output.base)) + ", " + valueText(output.preset) + ")";
     }
     case OutputKind::Counter: {
-        const std::string_view input = output.input == CounterInput::Up     ? "UP"
-                                       : output.input == CounterInput::Down ? "DOWN"
-                                                                            : "RESET";
-        return std::string(output.counter == CounterType::Up ? "MUP" : "MDOWN") + "(" +
-               operandText(output.target) + ", " + std::string(input) + ", " +
-               valueText(output.preset) + ")";
+        return std::string(counterWord(output.counter)) + "(" + operandText(output.target) + ", " +
+               std::string(inputWord(output.input)) + ", " + valueText(output.preset) + ")";
     }
     case OutputKind::Move:
         return "(" + operandText(output.target) + " = " + valueText(output.left) + ")";
     case OutputKind::Formula:
         return "(" + operandText(output.target) + " = " + valueText(output.left) + " " +
-               std::string(formulaText(output.formula)) + " " + valueText(output.right) + ")";
+               std::string(formulaWord(output.formula)) + " " + valueText(output.right) + ")";
     }
     return {};
 }

@@ -25,6 +25,17 @@ std::string printProgram(const Program& program);
 // Whether a file's text is a PL110 program: its first directive is "$target PL110".
 bool isPl110Text(std::string_view text);
 
+// The canonical spellings the printer uses, for whoever shows a program's
+// parts (the ladder's boxes, messages).
+std::string operandText(const Operand& operand); // the name, or the address
+std::string valueText(const Value& value);
+std::string_view compareWord(CompareOp op);     // "<>"
+std::string_view formulaWord(FormulaOp op);     // "<<"
+std::string_view timeBaseWord(TimeBase base);   // "100ms"
+std::string_view timerWord(TimerType type);     // "TONR"
+std::string_view counterWord(CounterType type); // "MDOWN"
+std::string_view inputWord(CounterInput input); // "RESET"
+
 // The words a name may not be: the text form's keywords.
 bool isKeyword(std::string_view word);
 

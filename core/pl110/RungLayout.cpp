@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "RungLayout.h"
 
+#include "ProgramText.h"
+
 #include "ladder/RungGeometry.h"
 
 #include <QStringList>
@@ -16,19 +18,16 @@ using ladder::Shape;
 
 constexpr qreal kTitleWidth = 96;
 
-QString utf8(const std::string& text) {
-    return QString::fromStdString(text);
+QString utf8(std::string_view text) {
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 
 QString operandName(const Operand& operand) {
     return utf8(operand.name);
 }
 
-QString valueText(const Value& value) {
-    if (value.isConstant())
-        return QString::number(value.constant);
-    return value.operand->isName() ? utf8(value.operand->name)
-                                   : utf8(toString(value.operand->address));
+QString shownValue(const Value& value) {
+    return utf8(valueText(value));
 }
 
 ElementLabels labelsOf(const Element& element) {
@@ -41,10 +40,8 @@ ElementLabels labelsOf(const Element& element) {
         l.address = utf8(toString(element.operand.address));
         break;
     case ElementKind::Compare: {
-        static const char* const kOps[] = {"=", "<>", ">", "<", ">=", "<="};
         l.shape = Shape::Box;
-        l.text = QString::fromLatin1(kOps[static_cast<int>(element.compare)]) + u' ' +
-                 valueText(element.right);
+        l.text = utf8(compareWord(element.compare)) + u' ' + shownValue(element.right);
         if (element.left.isConstant()) {
             l.address = QString::number(element.left.constant);
         } else {
@@ -67,12 +64,6 @@ ElementLabels labelsOf(const Element& element) {
     return l;
 }
 
-QString timeBaseText(TimeBase base) {
-    return base == TimeBase::Ms10    ? QStringLiteral("10ms")
-           : base == TimeBase::Ms100 ? QStringLiteral("100ms")
-                                     : QStringLiteral("1s");
-}
-
 ElementLabels labelsOf(const Output& output) {
     ElementLabels l;
     l.shape = Shape::Coil;
@@ -90,31 +81,25 @@ ElementLabels labelsOf(const Output& output) {
         l.mark = QStringLiteral("R");
         break;
     case OutputKind::Timer: {
-        static const char* const kTypes[] = {"TON", "TOFF", "TONR"};
         l.shape = Shape::Box;
-        l.text = QString::fromLatin1(kTypes[static_cast<int>(output.timer)]) + u' ' +
-                 timeBaseText(output.base);
-        l.address += QStringLiteral(" PT ") + valueText(output.preset);
+        l.text = utf8(timerWord(output.timer)) + u' ' + utf8(timeBaseWord(output.base));
+        l.address += QStringLiteral(" PT ") + shownValue(output.preset);
         break;
     }
     case OutputKind::Counter: {
-        static const char* const kInputs[] = {"UP", "DOWN", "RESET"};
         l.shape = Shape::Box;
-        l.text = QString::fromLatin1(output.counter == CounterType::Up ? "MUP " : "MDOWN ") +
-                 QString::fromLatin1(kInputs[static_cast<int>(output.input)]);
-        l.address += QStringLiteral(" PV ") + valueText(output.preset);
+        l.text = utf8(counterWord(output.counter)) + u' ' + utf8(inputWord(output.input));
+        l.address += QStringLiteral(" PV ") + shownValue(output.preset);
         break;
     }
     case OutputKind::Move:
         l.shape = Shape::Box;
-        l.text = QStringLiteral("= ") + valueText(output.left);
+        l.text = QStringLiteral("= ") + shownValue(output.left);
         break;
     case OutputKind::Formula: {
-        static const char* const kOps[] = {"+", "-", "*", "/", "|", "&", "^", "<<", ">>"};
         l.shape = Shape::Box;
-        l.text = QStringLiteral("= ") + valueText(output.left) + u' ' +
-                 QString::fromLatin1(kOps[static_cast<int>(output.formula)]) + u' ' +
-                 valueText(output.right);
+        l.text = QStringLiteral("= ") + shownValue(output.left) + u' ' +
+                 utf8(formulaWord(output.formula)) + u' ' + shownValue(output.right);
         break;
     }
     }

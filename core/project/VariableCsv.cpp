@@ -25,21 +25,6 @@ std::string_view withoutByteOrderMark(std::string_view csv) {
     return csv;
 }
 
-std::string quoted(const std::string& field, char separator) {
-    const bool needsQuotes =
-        field.find_first_of(std::string{separator, '"', '\r', '\n'}) != std::string::npos ||
-        (!field.empty() && (field.front() == ' ' || field.back() == ' '));
-    if (!needsQuotes)
-        return field;
-    std::string text = "\"";
-    for (char c : field) {
-        if (c == '"')
-            text += '"';
-        text += c;
-    }
-    return text + "\"";
-}
-
 std::string trimmed(std::string_view text) {
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
         text.remove_prefix(1);
@@ -231,7 +216,7 @@ std::string exportVariablesCsv(const Project& project, const CsvExportOptions& o
         for (std::size_t i = 0; i < fields.size(); ++i) {
             if (i)
                 text += separator;
-            text += quoted(fields[i], options.separator);
+            text += csvField(fields[i], options.separator);
         }
         return text + "\r\n";
     };
@@ -240,6 +225,21 @@ std::string exportVariablesCsv(const Project& project, const CsvExportOptions& o
     for (const auto& row : rows)
         csv += line({lang::toString(row.address), row.name, row.description});
     return csv;
+}
+
+std::string csvField(const std::string& field, char separator) {
+    const bool needsQuotes =
+        field.find_first_of(std::string{separator, '"', '\r', '\n'}) != std::string::npos ||
+        (!field.empty() && (field.front() == ' ' || field.back() == ' '));
+    if (!needsQuotes)
+        return field;
+    std::string text = "\"";
+    for (char c : field) {
+        if (c == '"')
+            text += '"';
+        text += c;
+    }
+    return text + "\"";
 }
 
 char detectCsvSeparator(std::string_view csv) {

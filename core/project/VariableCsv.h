@@ -69,6 +69,10 @@ struct CsvImport {
 CsvImport importVariablesCsv(const Project& project, std::string_view csv,
                              const CsvImportOptions& options);
 
+// A field as a spreadsheet reads it back: quoted when it holds the
+// separator, a quote, a line break or spaces at its ends.
+std::string csvField(const std::string& field, char separator);
+
 // The separator a CSV text uses: ';', ',' or a tab, whichever its first line
 // has most of outside quotes; ',' when it has none.
 char detectCsvSeparator(std::string_view csv);

@@ -142,6 +142,37 @@ TEST_F(Pl110CliTest, LadderDrawsARungAsAPicture) {
         << run.out.toStdString();
 }
 
+TEST_F(Pl110CliTest, VarsExportAndImportTheNamesAsCsv) {
+    const QString program =
+        write(QStringLiteral("p.sps"), "$target PL110\n! I1=Start ; green\nMAIN\nQ1 = Start\n");
+    const QString csv = directory.filePath(QStringLiteral("names.csv"));
+    CliRun run =
+        cli({QStringLiteral("vars"), QStringLiteral("export"), program, QStringLiteral("-o"), csv});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    QFile exported(csv);
+    ASSERT_TRUE(exported.open(QIODevice::ReadOnly));
+    EXPECT_EQ(exported.readAll(), QByteArray("\xEF\xBB\xBFVariable,Symbolic Name,Description\r\n"
+                                             "I1,Start,green\r\n"));
+    const QString in =
+        write(QStringLiteral("in.csv"), "I1,Go,\nQ1,Lamp,lit while running\nQ9,9x,\n");
+    const QString out = directory.filePath(QStringLiteral("out.sps"));
+    run = cli(
+        {QStringLiteral("vars"), QStringLiteral("import"), program, in, QStringLiteral("-o"), out});
+    EXPECT_EQ(run.exitCode, 1); // the bad row is reported and nothing is written
+    EXPECT_TRUE(run.out.contains(in + QStringLiteral(":3:4: error: '9x' is not a name")))
+        << run.out.toStdString();
+    EXPECT_FALSE(QFile::exists(out));
+    write(QStringLiteral("in.csv"), "I1,Go,\nQ1,Lamp,lit while running\n");
+    run = cli(
+        {QStringLiteral("vars"), QStringLiteral("import"), program, in, QStringLiteral("-o"), out});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    QFile result(out);
+    ASSERT_TRUE(result.open(QIODevice::ReadOnly));
+    EXPECT_EQ(result.readAll(),
+              QByteArray("$target PL110\n! I1=Go\n! Q1=Lamp                      ; lit "
+                         "while running\nINIT\nMAIN\nQ1 = Go\n"));
+}
+
 TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
     if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
         GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
