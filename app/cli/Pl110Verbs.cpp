@@ -4,6 +4,7 @@
 #include "NetworkPicture.h"
 #include "PowerSnapshot.h"
 #include "ProjectLoading.h"
+#include "TestVerb.h"
 #include "Verbs.h"
 #include "pl110/NameCsv.h"
 #include "pl110/ProgramCheck.h"
@@ -11,6 +12,9 @@
 #include "pl110/RungLayout.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
+#include "sim/VcdWriter.h"
+
+#include <QFileInfo>
 
 #include <QStringList>
 
@@ -36,6 +40,18 @@ int checkPl110(const QString& path, const std::string& text) {
     const int errors = lang::errorCount(diagnostics);
     std::fprintf(stdout, "%d Error(s) detected Result=%s\n", errors, errors ? "FAILED" : "OK");
     return errors ? Failed : Ok;
+}
+
+std::optional<pl110::Program> checkedPl110(const QString& path, const std::string& text) {
+    pl110::ProgramReading reading = pl110::readProgram(text);
+    lang::Diagnostics diagnostics = reading.diagnostics;
+    if (diagnostics.empty())
+        diagnostics = pl110::checkProgram(reading.program);
+    if (diagnostics.empty())
+        return std::move(reading.program);
+    printDiagnostics(path, diagnostics);
+    std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", lang::errorCount(diagnostics));
+    return std::nullopt;
 }
 
 int formatPl110(const QString& path, const std::string& text) {
@@ -79,12 +95,9 @@ std::pair<int, bool> runToEnd(const QString& path, const pl110::Program& program
     }
     const pl110::Scenario scenario = pl110::parseScenario(file.text, pl110::ScenarioNames(program));
     const sim::ScenarioReport report = pl110::runScenario(path.toStdString(), scenario, engine);
-    for (const auto& line : report.diagnostics)
-        std::fprintf(stderr, "%s\n", line.c_str());
+    printReport(report);
     if (!report.diagnostics.empty())
         return {Failed, false};
-    for (const auto& line : report.failures)
-        std::fprintf(stdout, "%s\n", line.c_str());
     return {report.failed ? Failed : Ok, true};
 }
 
@@ -195,20 +208,11 @@ int importPl110Names(const std::string& text, const QString& path, const QString
 
 int testPl110(const QString& path, const std::string& text, const QStringList& scenarios,
               const QString& vcd) {
-    if (!vcd.isEmpty())
-        return usage(
-            QStringLiteral("--vcd traces Pluto projects; a PL110 program has no trace yet"));
-    pl110::ProgramReading reading = pl110::readProgram(text);
-    lang::Diagnostics diagnostics = reading.diagnostics;
-    if (diagnostics.empty())
-        diagnostics = pl110::checkProgram(reading.program);
-    if (!diagnostics.empty()) {
-        printDiagnostics(path, diagnostics);
-        std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", lang::errorCount(diagnostics));
+    const auto program = checkedPl110(path, text);
+    if (!program)
         return Failed;
-    }
-    const pl110::ScenarioNames names(reading.program);
-    pl110::ScanEngine engine(std::move(reading.program));
+    const pl110::ScenarioNames names(*program);
+    pl110::ScanEngine engine(*program);
     int passed = 0;
     int failed = 0;
     for (const QString& scenarioPath : scenarios) {
@@ -218,14 +222,30 @@ int testPl110(const QString& path, const std::string& text, const QStringList& s
             return UsageOrIo;
         }
         const pl110::Scenario scenario = pl110::parseScenario(file.text, names);
-        const sim::ScenarioReport report =
-            pl110::runScenario(scenarioPath.toStdString(), scenario, engine);
-        for (const auto& line : report.diagnostics)
-            std::fprintf(stderr, "%s\n", line.c_str());
-        for (const auto& line : report.failures)
-            std::fprintf(stdout, "%s\n", line.c_str());
+        const std::vector<pl110::Address> traced =
+            pl110::traceSignals(*program, pl110::touchedBy(scenario));
+        sim::VcdWriter trace(pl110::vcdSignals(traced));
+        const sim::ScenarioReport report = pl110::runScenario(
+            scenarioPath.toStdString(), scenario, engine, [&](const pl110::ScanEngine& now) {
+                if (vcd.isEmpty())
+                    return;
+                std::vector<std::int64_t> values;
+                values.reserve(traced.size());
+                for (const pl110::Address& address : traced)
+                    values.push_back(now.value(address));
+                trace.sample(now.timeMs(), values);
+            });
+        printReport(report);
         passed += report.passed;
         failed += report.failed;
+        if (!vcd.isEmpty() && report.diagnostics.empty()) {
+            const QString out = tracePath(vcd, scenarioPath, scenarios.size() > 1);
+            if (const int status =
+                    written(out, trace.text("Rungsmith scenario " +
+                                            QFileInfo(scenarioPath).fileName().toStdString()));
+                status != Ok)
+                return status;
+        }
     }
     std::fprintf(stdout, "%d passed, %d failed\n", passed, failed);
     return failed ? Failed : Ok;

@@ -4,6 +4,8 @@
 #include <QString>
 #include <QStringList>
 
+#include "pl110/Program.h"
+
 #include <optional>
 #include <string>
 
@@ -16,6 +18,9 @@ namespace rs::cli {
 std::optional<std::string> pl110Text(const QString& path);
 
 int checkPl110(const QString& path, const std::string& text);
+// The program when it reads and checks without errors; else nothing, with
+// the diagnostics and the closing "N Error(s) detected Result=FAILED" printed.
+std::optional<pl110::Program> checkedPl110(const QString& path, const std::string& text);
 int formatPl110(const QString& path, const std::string& text);
 // ladder --network K -o OUT.svg|png [--scenario SCN]: rung K (INIT's rungs,
 // then MAIN's) drawn as the IDE draws a network; with a scenario, live as

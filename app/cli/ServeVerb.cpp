@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ServeVerb.h"
 
+#include "Pl110Verbs.h"
 #include "Verbs.h"
 #include "gateway/GatewayNode.h"
 #include "gateway/ModbusTcpServer.h"
 #include "pl110/ModbusRtuServer.h"
 #include "pl110/ModbusSlave.h"
-#include "pl110/ProgramCheck.h"
 #include "pl110/ProgramText.h"
 #include "pl110/ScanEngine.h"
 #include "project/ProjectFile.h"
@@ -84,15 +84,9 @@ private:
 // serve PL110.sps --modbus-rtu: the program scanned in real time, its
 // Modbus RTU slave map on a pseudo-terminal (docs/pl110.md, "Modbus").
 int servePl110(const QString& path, const std::string& text, int slave, double speed) {
-    pl110::ProgramReading reading = pl110::readProgram(text);
-    lang::Diagnostics diagnostics = reading.diagnostics;
-    if (diagnostics.empty())
-        diagnostics = pl110::checkProgram(reading.program);
-    if (!diagnostics.empty()) {
-        printDiagnostics(path, diagnostics);
-        std::fprintf(stdout, "%d Error(s) detected Result=FAILED\n", lang::errorCount(diagnostics));
+    auto program = checkedPl110(path, text);
+    if (!program)
         return Failed;
-    }
     std::string error;
     auto server = pl110::ModbusRtuServer::open(slave, error);
     if (!server) {
@@ -103,7 +97,7 @@ int servePl110(const QString& path, const std::string& text, int slave, double s
     Output output;
     output.line("serving Modbus RTU on " + server->devicePath() + " as slave " +
                 std::to_string(slave));
-    pl110::ScanEngine engine(std::move(reading.program));
+    pl110::ScanEngine engine(std::move(*program));
     std::mutex memoryMutex; // the scan and a request's answer take turns
     std::thread modbus([&] {
         while (!g_stop)

@@ -13,8 +13,6 @@
 
 namespace rs::cli {
 
-namespace {
-
 QString tracePath(const QString& vcd, const QString& scenario, bool several) {
     if (!several)
         return vcd;
@@ -23,7 +21,12 @@ QString tracePath(const QString& vcd, const QString& scenario, bool several) {
            QFileInfo(scenario).completeBaseName() + ".vcd";
 }
 
-} // namespace
+void printReport(const sim::ScenarioReport& report) {
+    for (const auto& line : report.diagnostics)
+        std::fprintf(stderr, "%s\n", line.c_str());
+    for (const auto& line : report.failures)
+        std::fprintf(stdout, "%s\n", line.c_str());
+}
 
 int runTest(const QString& projectPath, const QStringList& scenarios, const QString& vcd,
             const QStringList& libraryFiles, const compiler::CheckOptions& options) {
@@ -52,10 +55,7 @@ int runTest(const QString& projectPath, const QStringList& scenarios, const QStr
         sim::VcdTrace trace(sim::traceSignals(compiled.images, sim::touchedBy(scenario)));
         const sim::ScenarioReport report = sim::runScenario(
             path.toStdString(), scenario, simulation, vcd.isEmpty() ? nullptr : &trace);
-        for (const auto& line : report.diagnostics)
-            std::fprintf(stderr, "%s\n", line.c_str());
-        for (const auto& line : report.failures)
-            std::fprintf(stdout, "%s\n", line.c_str());
+        printReport(report);
         passed += report.passed;
         failed += report.failed;
         if (!vcd.isEmpty() && report.diagnostics.empty()) {

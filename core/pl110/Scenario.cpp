@@ -5,8 +5,9 @@
 #include "sim/ScenarioReader.h"
 #include "sim/ScenarioRun.h"
 
-#include <cctype>
+#include <algorithm>
 #include <limits>
+#include <set>
 
 namespace rs::pl110 {
 
@@ -90,6 +91,44 @@ sim::ScenarioReport runScenario(const std::string& fileName, const Scenario& sce
         if (sample)
             sample(now.engine());
     });
+}
+
+std::vector<Address> touchedBy(const Scenario& scenario) {
+    std::vector<Address> touched;
+    for (const auto& step : scenario.steps)
+        if (step.kind == Scenario::Step::Kind::Set || step.kind == Scenario::Step::Kind::Release ||
+            step.kind == Scenario::Step::Kind::Expect)
+            touched.push_back(step.operand);
+    return touched;
+}
+
+std::vector<Address> traceSignals(const Program& program, const std::vector<Address>& touched) {
+    std::set<Address> variables(touched.begin(), touched.end());
+    for (const auto* lines : {&program.init, &program.main})
+        for (const Line& line : *lines) {
+            const auto* rung = std::get_if<Rung>(&line.body);
+            if (!rung)
+                continue;
+            const Address& target = rung->output.target.address;
+            variables.insert(target);
+            if (rung->output.kind == OutputKind::Timer || rung->output.kind == OutputKind::Counter)
+                variables.insert(asWord(target)); // the value beside the contact
+        }
+    return {variables.begin(), variables.end()};
+}
+
+std::vector<sim::VcdSignal> vcdSignals(const std::vector<Address>& variables) {
+    std::vector<sim::VcdSignal> traced;
+    for (const Address& address : variables) {
+        std::string reference = toString(address);
+        std::replace(reference.begin(), reference.end(), '.', '_');
+        // T1 and C1 name a contact and a value: the value's signal says so.
+        if ((address.area == Area::Timer || address.area == Area::Counter) &&
+            address.width == Width::Word)
+            reference += "_value";
+        traced.push_back({"pl110", reference, address.width == Width::Bit});
+    }
+    return traced;
 }
 
 } // namespace rs::pl110

@@ -5,10 +5,12 @@
 #include "ScanEngine.h"
 #include "sim/Scenario.h"
 #include "sim/ScenarioRunner.h"
+#include "sim/VcdWriter.h"
 
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 // Scenarios (../shared/spec/scenario.md) for a PL110 program: the same file
 // format and runner as Pluto's, with the PL110's addresses and names
@@ -44,5 +46,16 @@ Scenario parseScenario(std::string_view text, const ScenarioNames& names);
 sim::ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario,
                                 ScanEngine& engine,
                                 const std::function<void(const ScanEngine&)>& sample = {});
+
+// The variables a scenario sets, releases or expects.
+std::vector<Address> touchedBy(const Scenario& scenario);
+
+// What a scenario run's trace shows: what the scenario touches and
+// everything the program writes (coils, bits, timers' and counters'
+// contacts and values, MOV and FM targets), in address order.
+std::vector<Address> traceSignals(const Program& program, const std::vector<Address>& touched);
+// As a VCD shows them: one scope, "pl110", named as the text form writes
+// them with '_' for '.'.
+std::vector<sim::VcdSignal> vcdSignals(const std::vector<Address>& variables);
 
 } // namespace rs::pl110

@@ -38,7 +38,8 @@ template <class OperandType> struct BasicScenarioStep {
 };
 
 template <class OperandType> struct BasicScenario {
-    std::vector<BasicScenarioStep<OperandType>> steps;
+    using Step = BasicScenarioStep<OperandType>;
+    std::vector<Step> steps;
     lang::Diagnostics diagnostics; // syntax errors: the scenario does not run
 };
 

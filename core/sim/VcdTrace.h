@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Simulation.h"
+#include "VcdWriter.h"
 
 #include <string>
 #include <vector>
@@ -25,10 +26,7 @@ public:
 
 private:
     std::vector<lang::Address> m_signals;
-    std::vector<std::string> m_ids;
-    std::vector<std::int64_t> m_last;
-    std::string m_changes;
-    bool m_sampled = false;
+    VcdWriter m_writer;
 };
 
 // The variables a scenario run should show: what the scenario touches and

@@ -113,9 +113,18 @@ TEST_F(Pl110CliTest, TestRunsTheExampleScenariosAndReportsAFailureByLine) {
     EXPECT_EQ(run.out,
               wrong + QStringLiteral(
                           ":3: expect Pump 1 failed: got 0 at t=0.010s\n0 passed, 1 failed\n"));
-    run = cli({QStringLiteral("test"), example + ".sps", wrong, QStringLiteral("--vcd"),
-               directory.filePath(QStringLiteral("t.vcd"))});
-    EXPECT_EQ(run.exitCode, 2);
+    // The trace: what the scenario touches and what the program writes.
+    const QString vcd = directory.filePath(QStringLiteral("t.vcd"));
+    run = cli(
+        {QStringLiteral("test"), example + ".sps", example + ".scn", QStringLiteral("--vcd"), vcd});
+    EXPECT_EQ(run.exitCode, 0) << run.out.toStdString();
+    QFile trace(vcd);
+    ASSERT_TRUE(trace.open(QIODevice::ReadOnly));
+    const QByteArray text = trace.readAll();
+    EXPECT_TRUE(text.contains("$scope module pl110 $end")) << text.toStdString();
+    EXPECT_TRUE(text.contains(" Q1 $end")) << text.toStdString();
+    EXPECT_TRUE(text.contains("$var integer 32 ")) << text.toStdString(); // VW10
+    EXPECT_TRUE(text.contains(" T1_value $end")) << text.toStdString();
 }
 
 TEST_F(Pl110CliTest, LadderDrawsARungAsAPicture) {
