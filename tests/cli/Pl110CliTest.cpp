@@ -9,6 +9,8 @@
 #include <QTemporaryDir>
 #include <QThread>
 
+#include "ProgramRun.h"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -40,18 +42,13 @@ protected:
     }
 
     QString write(const QString& name, const QByteArray& bytes) {
-        QFile file(directory.filePath(name));
-        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(bytes);
-        return file.fileName();
+        return rs::test::writeFile(directory, name, bytes);
     }
 
+    // Standard output and error together, as a user sees them.
     static CliRun cli(const QStringList& arguments) {
-        QProcess process;
-        process.start(QStringLiteral(RUNGSMITH_CLI), arguments);
-        EXPECT_TRUE(process.waitForFinished(30000));
-        return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput() +
-                                                      process.readAllStandardError())};
+        const rs::test::ProgramRun run = rs::test::runCli(arguments);
+        return {run.exitCode, run.outText() + run.errText()};
     }
 
     // mbpoll once over RTU: -0 makes -r the datasheet's address; values after
