@@ -3266,6 +3266,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>The project is open with permission to configure: only its Config Options can change.</source>
         <translation>Das Projekt ist mit Berechtigung zum Konfigurieren geöffnet: Nur seine Konfigurationsoptionen können sich ändern.</translation>
     </message>
+    <message>
+        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
+        <translation>Es ist ein Programm für die Pixsys PL110. Das Fenster bearbeitet Pluto-Projekte; PL110-Programme werden mit rungsmith-cli geprüft, getestet, gezeichnet und bereitgestellt (docs/pl110.md).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectPage</name>

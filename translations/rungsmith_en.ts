@@ -3265,6 +3265,10 @@ Its text page (F6) shows and edits it.</source>
         <source>The project is open with permission to configure: only its Config Options can change.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectPage</name>

@@ -3266,6 +3266,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>The project is open with permission to configure: only its Config Options can change.</source>
         <translation>Projektet är öppnat med behörighet att konfigurera: bara dess konfigurationsalternativ kan ändras.</translation>
     </message>
+    <message>
+        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
+        <translation>Det är ett program för Pixsys PL110. Fönstret redigerar Pluto-projekt; kontrollera, testa, rita och servera PL110-program med rungsmith-cli (docs/pl110.md).</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::ProjectPage</name>

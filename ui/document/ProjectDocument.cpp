@@ -3,6 +3,7 @@
 
 #include "blocks/ProjectInstances.h"
 #include "document/ProjectCommand.h"
+#include "pl110/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProtectedText.h"
 
@@ -52,6 +53,13 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
     const project::FileText file = project::readTextFile(path);
     if (!file.error.isEmpty()) {
         error = file.error;
+        return nullptr;
+    }
+    if (pl110::isPl110Text(file.text)) {
+        // Read as a Pluto project it would be a wall of wrong errors.
+        error = tr("It is a program for the Pixsys PL110. The window edits Pluto projects; "
+                   "check, test, draw and serve PL110 programs with rungsmith-cli "
+                   "(docs/pl110.md).");
         return nullptr;
     }
     ProjectDocument* document = fromText(QByteArray::fromStdString(file.text), parent);

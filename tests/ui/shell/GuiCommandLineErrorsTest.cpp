@@ -71,6 +71,16 @@ TEST_F(GuiCommandLineErrors, AProjectThatDoesNotReadIsAUsageError) {
     EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
 }
 
+TEST_F(GuiCommandLineErrors, APl110ProgramIsSaidToBeOneNotReadAsABrokenPlutoProject) {
+    const QString program = file(QStringLiteral("station.sps"), "$target PL110\nMAIN\nQ1 = I1\n");
+    const GuiRun run =
+        gui({program, QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
+    EXPECT_TRUE(run.err.contains(QStringLiteral("Pixsys PL110"))) << run.err.toStdString();
+    EXPECT_TRUE(run.err.contains(QStringLiteral("rungsmith-cli"))) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
+}
+
 TEST_F(GuiCommandLineErrors, APictureThatCannotBeWrittenIsSaidAndLeavesNoFile) {
     // The destination's folder does not exist.
     const QString nowhere = out(QStringLiteral("no/such/folder/shot.png"));
