@@ -12,7 +12,7 @@ namespace rs::ladder {
 // A rung's condition as a series/parallel circuit of some target's elements:
 // an element, elements and circuits in series (left to right), or circuits in
 // parallel (top to bottom). Every target draws its rungs with this shape;
-// what an element is, is the target's (Pluto: Element.h, PL110: pl110/Rung.h).
+// what an element is, is the target's (Pluto: Element.h, PL110: pl110/Program.h).
 //
 // Canonical form, which every function here keeps: a series or parallel
 // circuit has at least two parts, and none of its parts is of its own kind
