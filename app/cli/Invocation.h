@@ -14,10 +14,14 @@ struct Invocation {
 };
 
 // A verb of the command line: its name, its synopsis for --help, and what it does.
+// Which targets' files a verb reads (docs/pl110.md lists the PL110's verbs).
+enum class Targets { PlutoOnly, PlutoAndPl110 };
+
 struct Verb {
     const char* name;
     const char* synopsis;
     int (*run)(const Invocation&);
+    Targets targets = Targets::PlutoOnly;
 };
 
 } // namespace rs::cli

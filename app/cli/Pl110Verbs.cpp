@@ -14,6 +14,7 @@
 #include "project/ProjectFile.h"
 #include "sim/VcdWriter.h"
 
+#include <QFile>
 #include <QFileInfo>
 
 #include <QStringList>
@@ -28,6 +29,13 @@ std::optional<std::string> pl110Text(const QString& path) {
     if (!file.error.isEmpty() || !pl110::isPl110Text(file.text))
         return std::nullopt;
     return std::move(file.text);
+}
+
+bool isPl110File(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return false;
+    return pl110::isPl110Text(file.read(64 * 1024).toStdString());
 }
 
 int checkPl110(const QString& path, const std::string& text) {

@@ -77,22 +77,24 @@ int test(const Invocation& invocation) {
 
 // Every verb of the command line; --help lists them in this order.
 const rs::cli::Verb kVerbs[] = {
-    {"check", "check FILE.sps                 parse and check the whole project", check},
+    {"check", "check FILE.sps                 parse and check the whole project", check,
+     rs::cli::Targets::PlutoAndPl110},
     {"compile", "compile FILE.sps [-o OUT.hps]  check, then write the compiled image (Intel HEX)",
      compile},
-    {"format", "format FILE.sps                print the canonical text of the project", format},
+    {"format", "format FILE.sps                print the canonical text of the project", format,
+     rs::cli::Targets::PlutoAndPl110},
     {"test",
-     "test FILE.sps SCENARIO... [--vcd OUT.vcd]  run scenario files on the simulated project",
-     test},
+     "test FILE.sps SCENARIO... [--vcd OUT.vcd]  run scenario files on the simulated project", test,
+     rs::cli::Targets::PlutoAndPl110},
     {"vars",
      "vars export FILE.sps -o OUT.csv  variable names and descriptions to CSV\n"
      "  vars import FILE.sps IN.csv -o OUT.sps  names and descriptions from CSV into the project",
-     rs::cli::runVars},
+     rs::cli::runVars, rs::cli::Targets::PlutoAndPl110},
     {"ladder",
      "ladder FILE.sps --unit U [--sequence S --step N] --network K -o OUT.svg|.png\n"
      "                                 draw one network as the editor does\n"
      "  ladder FILE.sps ... --scenario SCN.scn  draw it in the state the scenario ends in",
-     rs::cli::runLadder},
+     rs::cli::runLadder, rs::cli::Targets::PlutoAndPl110},
     {"roundtrip",
      "roundtrip FILE.sps             every network to the ladder model and back; print the text",
      rs::cli::runRoundtrip},
@@ -130,7 +132,7 @@ const rs::cli::Verb kVerbs[] = {
      "serve FILE.sps [--modbus HOST:PORT] [--scenario SCN.scn] [--speed FACTOR]\n"
      "                                 simulate in real time and serve the project's Ethernet\n"
      "                                 gateway's Modbus TCP map (default 127.0.0.1:1502)",
-     rs::cli::runServe},
+     rs::cli::runServe, rs::cli::Targets::PlutoAndPl110},
     {"blocks",
      "blocks list [--lib NAME|FILE]...  one line per library block: library, name(inputs -> "
      "outputs)\n"
@@ -258,9 +260,18 @@ int run(int argc, char* argv[]) {
     if (arguments.isEmpty())
         return usage(QStringLiteral("missing verb"));
     const QString name = arguments.takeFirst();
-    for (const auto& verb : kVerbs)
-        if (name == QLatin1String(verb.name))
-            return finishOutput(verb.run({arguments, parser}));
+    for (const auto& verb : kVerbs) {
+        if (name != QLatin1String(verb.name))
+            continue;
+        // A PL110 program read as a Pluto project would be a wall of wrong errors.
+        if (verb.targets == rs::cli::Targets::PlutoOnly)
+            for (const QString& argument : arguments)
+                if (rs::cli::isPl110File(argument))
+                    return usage(QStringLiteral("%1 takes Pluto projects; %2 is a PL110 program "
+                                                "(docs/pl110.md lists the verbs for one)")
+                                     .arg(name, argument));
+        return finishOutput(verb.run({arguments, parser}));
+    }
     return usage(QStringLiteral("unknown verb '%1'").arg(name));
 }
 

@@ -179,6 +179,21 @@ TEST_F(Pl110CliTest, VarsExportAndImportTheNamesAsCsv) {
                          "while running\nINIT\nMAIN\nQ1 = Go\n"));
 }
 
+TEST_F(Pl110CliTest, VerbsForPlutoProjectsSayWhatTheFileIs) {
+    const QString example = QStringLiteral(RUNGSMITH_EXAMPLES "/pl110/filling-station.sps");
+    for (const QStringList& arguments :
+         {QStringList{QStringLiteral("compile"), example},
+          QStringList{QStringLiteral("prove"), example, QStringLiteral("station.prop")},
+          QStringList{QStringLiteral("diff"), QStringLiteral(RUNGSMITH_EXAMPLES "/estop.sps"),
+                      example}}) {
+        const CliRun run = cli(arguments);
+        EXPECT_EQ(run.exitCode, 2) << run.out.toStdString();
+        EXPECT_TRUE(run.out.contains(arguments.front() + QStringLiteral(" takes Pluto projects; ") +
+                                     example + QStringLiteral(" is a PL110 program")))
+            << run.out.toStdString();
+    }
+}
+
 TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
     if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
         GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
