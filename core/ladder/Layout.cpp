@@ -186,9 +186,9 @@ private:
         if (rung.condition) {
             lang::PreOrderNumbering<Circuit> numbering(
                 *rung.condition, [](const Circuit& c) -> const auto& { return c.parts; });
-            RungGeometry::Placed placed =
-                m_geometry.placeCircuit(*rung.condition, numbering, labelsOf(), {item, {}},
-                                        firstStatement, top, 0, 0, power);
+            ElementPath path{item, {}};
+            RungGeometry::Placed placed = m_geometry.placeCircuit(
+                *rung.condition, numbering, labelsOf(), path, firstStatement, top, 0, 0, power);
             condition = placed.extent;
             power = std::move(placed.output);
         }

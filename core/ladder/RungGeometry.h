@@ -118,11 +118,12 @@ public:
 
     // Places a condition node with its top-left grid cell at (column, row)
     // of the rung whose top is `rungTop`, numbered by the one rule
-    // (lang/ElementNumbering.h); `path` is the node's place in the circuit.
+    // (lang/ElementNumbering.h); `path` is the node's place in the circuit,
+    // grown and shrunk on the way down rather than copied.
     template <class E, class LabelsOf>
     Placed placeCircuit(const SeriesParallel<E>& circuit,
                         lang::PreOrderNumbering<SeriesParallel<E>>& numbering,
-                        const LabelsOf& labelsOf, ElementPath path, std::uint32_t statement,
+                        const LabelsOf& labelsOf, ElementPath& path, std::uint32_t statement,
                         qreal rungTop, int column, int row, const PowerFeed& input) {
         const std::uint16_t id = numbering.number(circuit);
         const qreal left = m_railX + column * m_metrics.cellWidth;
@@ -134,7 +135,7 @@ public:
                 place(l, left, rungTop + row * m_metrics.cellHeight, column, row, columns);
             e.statement = statement;
             e.element = id;
-            e.path = std::move(path);
+            e.path = path;
             const qreal symbolLeft = e.symbolRect.left();
             const qreal symbolRight = e.symbolRect.right();
             const qreal right = e.cell.right();
@@ -148,24 +149,23 @@ public:
         int offset = 0;
         PowerFeed feed = input;
         for (std::size_t i = 0; i < circuit.parts.size(); ++i) {
-            ElementPath inner = path;
-            inner.node.push_back(i);
+            path.node.push_back(i);
             if (series) {
-                Placed part = placeCircuit(circuit.parts[i], numbering, labelsOf, std::move(inner),
-                                           statement, rungTop, column + offset, row, feed);
+                Placed part = placeCircuit(circuit.parts[i], numbering, labelsOf, path, statement,
+                                           rungTop, column + offset, row, feed);
                 offset += part.extent.columns;
                 placed.extent.columns = offset;
                 placed.extent.rows = std::max(placed.extent.rows, part.extent.rows);
                 feed = std::move(part.output);
             } else {
-                branches.push_back(placeCircuit(circuit.parts[i], numbering, labelsOf,
-                                                std::move(inner), statement, rungTop, column,
-                                                row + offset, input));
+                branches.push_back(placeCircuit(circuit.parts[i], numbering, labelsOf, path,
+                                                statement, rungTop, column, row + offset, input));
                 placed.extent.columns =
                     std::max(placed.extent.columns, branches.back().extent.columns);
                 placed.extent.rows += branches.back().extent.rows;
                 offset += branches.back().extent.rows;
             }
+            path.node.pop_back();
         }
         if (series) {
             placed.output = std::move(feed);

@@ -150,10 +150,11 @@ ladder::NetworkLayout layoutRung(const Rung& rung, const RungLayoutContext& cont
     int rows = 1;
     int columns = 0;
     if (rung.condition) {
+        ladder::ElementPath path{0, {}};
         lang::PreOrderNumbering<Circuit> numbering(
             *rung.condition, [](const Circuit& c) -> const auto& { return c.parts; });
         ladder::RungGeometry::Placed placed = geometry.placeCircuit(
-            *rung.condition, numbering, labels, {0, {}}, context.statement, top, 0, 0, power);
+            *rung.condition, numbering, labels, path, context.statement, top, 0, 0, power);
         rows = placed.extent.rows;
         columns = placed.extent.columns;
         power = std::move(placed.output);
