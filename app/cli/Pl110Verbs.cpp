@@ -25,6 +25,10 @@
 namespace rs::cli {
 
 std::optional<std::string> pl110Text(const QString& path) {
+    // A Pluto project (the usual case, up to megabytes) is not read twice:
+    // the first 64 KB tell.
+    if (!isPl110File(path))
+        return std::nullopt;
     project::FileText file = project::readTextFile(path);
     if (!file.error.isEmpty() || !pl110::isPl110Text(file.text))
         return std::nullopt;
