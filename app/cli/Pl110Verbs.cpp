@@ -1,20 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Pl110Verbs.h"
 
+#include "MarksSnapshot.h"
 #include "NetworkPicture.h"
-#include "PowerSnapshot.h"
 #include "ProjectLoading.h"
 #include "TestVerb.h"
 #include "Verbs.h"
 #include "pl110/NameCsv.h"
 #include "pl110/ProgramCheck.h"
+#include "pl110/ProgramFile.h"
 #include "pl110/ProgramText.h"
 #include "pl110/RungLayout.h"
+#include "pl110/Rungs.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 #include "sim/VcdWriter.h"
 
-#include <QFile>
 #include <QFileInfo>
 
 #include <QStringList>
@@ -27,19 +28,12 @@ namespace rs::cli {
 std::optional<std::string> pl110Text(const QString& path) {
     // A Pluto project (the usual case, up to megabytes) is not read twice:
     // the first 64 KB tell.
-    if (!isPl110File(path))
+    if (!pl110::isPl110File(path))
         return std::nullopt;
     project::FileText file = project::readTextFile(path);
     if (!file.error.isEmpty() || !pl110::isPl110Text(file.text))
         return std::nullopt;
     return std::move(file.text);
-}
-
-bool isPl110File(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return false;
-    return pl110::isPl110Text(file.read(64 * 1024).toStdString());
 }
 
 int checkPl110(const QString& path, const std::string& text) {
@@ -80,23 +74,6 @@ int formatPl110(const QString& path, const std::string& text) {
 
 namespace {
 
-// The power picture of the engine's last scan, by rung number.
-render::PowerSnapshot powerOf(const pl110::ScanEngine& engine) {
-    render::PowerSnapshot snapshot;
-    for (std::size_t rung = 0; rung < engine.marks().size(); ++rung) {
-        const pl110::RungMarks& marks = engine.marks()[rung];
-        if (!marks.ran)
-            continue;
-        render::StatementPower& power = snapshot.statements[static_cast<std::uint32_t>(rung + 1)];
-        power.energised = marks.energised;
-        power.states = marks.states;
-        for (std::size_t element = 1; element < marks.power.size(); ++element)
-            if (marks.power[element])
-                power.conducting.insert(static_cast<std::uint16_t>(element));
-    }
-    return snapshot;
-}
-
 // Runs the scenario to its end; its status, and false when it could not run.
 std::pair<int, bool> runToEnd(const QString& path, const pl110::Program& program,
                               pl110::ScanEngine& engine) {
@@ -125,51 +102,34 @@ int ladderPl110(const QString& path, const std::string& text, int network, const
         printDiagnostics(path, diagnostics);
         return Failed;
     }
-    // The rungs in the order the file has them, each with the comment lines
-    // right above it.
-    int number = 0;
-    for (const auto* part : {&reading.program.init, &reading.program.main}) {
-        QStringList comment;
-        for (const pl110::Line& line : *part) {
-            if (const auto* note = std::get_if<pl110::CommentLine>(&line.body)) {
-                comment << QString::fromStdString(note->text).trimmed();
-                continue;
-            }
-            const auto* rung = std::get_if<pl110::Rung>(&line.body);
-            if (!rung) {
-                comment.clear();
-                continue;
-            }
-            if (++number != network) {
-                comment.clear();
-                continue;
-            }
-            pl110::RungLayoutContext context;
-            context.title = QStringLiteral("Rung %1").arg(number);
-            context.comment = comment.join(u'\n');
-            context.statement = static_cast<std::uint32_t>(number);
-            int status = Ok;
-            std::optional<render::PowerSnapshot> power;
-            if (!scenario.isEmpty()) {
-                pl110::ScanEngine engine(reading.program);
-                const auto [ran, drawable] = runToEnd(scenario, reading.program, engine);
-                if (!drawable)
-                    return ran;
-                status = ran;
-                power = powerOf(engine);
-            }
-            const QString error = render::writeNetworkPicture(
-                output, pl110::layoutRung(*rung, context), {}, power ? &*power : nullptr,
-                QStringLiteral("%1 rung %2").arg(path).arg(number));
-            if (!error.isEmpty()) {
-                std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
-                return UsageOrIo;
-            }
-            return status;
+    const std::vector<pl110::NumberedRung> rungs = pl110::numberedRungs(reading.program);
+    if (network >= 1 && network <= static_cast<int>(rungs.size())) {
+        const pl110::NumberedRung& rung = rungs[static_cast<std::size_t>(network - 1)];
+        pl110::RungLayoutContext context;
+        context.title = QStringLiteral("Rung %1").arg(network);
+        context.comment = QString::fromStdString(rung.comment);
+        context.statement = static_cast<std::uint32_t>(network);
+        int status = Ok;
+        std::optional<render::PowerSnapshot> power;
+        if (!scenario.isEmpty()) {
+            pl110::ScanEngine engine(reading.program);
+            const auto [ran, drawable] = runToEnd(scenario, reading.program, engine);
+            if (!drawable)
+                return ran;
+            status = ran;
+            power = render::snapshotOfMarks(engine.marks());
         }
+        const QString error = render::writeNetworkPicture(
+            output, pl110::layoutRung(*rung.rung, context), {}, power ? &*power : nullptr,
+            QStringLiteral("%1 rung %2").arg(path).arg(network));
+        if (!error.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+            return UsageOrIo;
+        }
+        return status;
     }
     std::fprintf(stderr, "rungsmith-cli: %s: the program has %d rung(s), not %d\n",
-                 qPrintable(path), number, network);
+                 qPrintable(path), static_cast<int>(rungs.size()), network);
     return Failed;
 }
 

@@ -17,10 +17,6 @@ namespace rs::cli {
 // Pluto project or a file that cannot be read (the Pluto path reports that).
 std::optional<std::string> pl110Text(const QString& path);
 
-// Whether the file is a PL110 program, from its first 64 KB: what a verb
-// that reads only Pluto projects asks before it reads a file.
-bool isPl110File(const QString& path);
-
 int checkPl110(const QString& path, const std::string& text);
 // The program when it reads and checks without errors; else nothing, with
 // the diagnostics and the closing "N Error(s) detected Result=FAILED" printed.

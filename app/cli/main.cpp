@@ -13,6 +13,7 @@
 #include "VarsVerbs.h"
 #include "Verbs.h"
 #include "lang/Diagnostic.h"
+#include "pl110/ProgramFile.h"
 
 #include <QCoreApplication>
 
@@ -266,7 +267,7 @@ int run(int argc, char* argv[]) {
         // A PL110 program read as a Pluto project would be a wall of wrong errors.
         if (verb.targets == rs::cli::Targets::PlutoOnly)
             for (const QString& argument : arguments)
-                if (rs::cli::isPl110File(argument))
+                if (rs::pl110::isPl110File(argument))
                     return usage(QStringLiteral("%1 takes Pluto projects; %2 is a PL110 program "
                                                 "(docs/pl110.md lists the verbs for one)")
                                      .arg(name, argument));

@@ -3,6 +3,9 @@
 #include "document/ProjectDocument.h"
 #include "lang/Diagnostic.h"
 #include "output/SettledCompile.h"
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110Window.h"
+#include "pl110/ProgramFile.h"
 #include "project/SaveFileCommit.h"
 #include "prove/PropertiesPage.h"
 #include "shell/MainWindow.h"
@@ -17,6 +20,7 @@
 #include <QDeadlineTimer>
 #include <QIcon>
 #include <QImageWriter>
+#include <QPointer>
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <QTextStream>
@@ -138,6 +142,56 @@ void awaitProof(rs::ui::MainWindow& window) {
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
 }
 
+// A PL110 program opens in its own window (docs/pl110.md, "The window"):
+// ladder:N shows rung N, text:N its text, variables:N its names; the rest of
+// the pages are a Pluto project's.
+struct Pl110Request {
+    QString path;
+    std::optional<Page> page;
+    QString scenario;
+    QString screenshot;
+};
+
+int openPl110(const Pl110Request& request) {
+    using Kind = rs::ui::PageRef::Kind;
+    if (request.page && request.page->kind != Kind::Ladder && request.page->kind != Kind::Code &&
+        request.page->kind != Kind::Variables)
+        return usageError(CommandLine::tr("%1 is a PL110 program: its pages are ladder:N (from "
+                                          "rung N), text:N and variables:N")
+                              .arg(request.path));
+    QString error;
+    rs::ui::Pl110Document* document = rs::ui::Pl110Document::open(request.path, error);
+    if (!document)
+        return usageError(error);
+    // The window deletes itself when the user closes it (several may be open).
+    const QPointer<rs::ui::Pl110Window> window = new rs::ui::Pl110Window(document);
+    const auto status = [&window](int code) {
+        delete window.data();
+        return code;
+    };
+    window->show();
+    settle();
+    if (request.page) {
+        if (request.page->kind == Kind::Code)
+            window->showPage(rs::ui::Pl110Window::Page::Program);
+        else if (request.page->kind == Kind::Variables)
+            window->showPage(rs::ui::Pl110Window::Page::Names);
+        else if (!window->showRung(std::max(request.page->station, 1)))
+            return status(usageError(
+                CommandLine::tr("%1 has no rung %2").arg(request.path).arg(request.page->station)));
+    }
+    if (!request.scenario.isEmpty())
+        if (const QString failed = window->runScenario(request.scenario); !failed.isEmpty())
+            return status(usageError(failed));
+    if (request.screenshot.isEmpty())
+        return status(QApplication::exec());
+    settle();
+    if (const QString failed = writePicture(window->grab().toImage(), request.screenshot);
+        !failed.isEmpty())
+        return status(usageError(failed));
+    return status(0);
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -230,6 +284,15 @@ int main(int argc, char* argv[]) {
         : page && page->kind == rs::ui::PageRef::Kind::Properties
             ? CommandLine::tr("%1 does not read, so it has no properties page").arg(shownFile)
             : CommandLine::tr("%1 has no unit %2").arg(shownFile).arg(page ? page->station : 0);
+
+    if (!files.isEmpty() && rs::pl110::isPl110File(files.first())) {
+        if (parser.isSet(proveOption))
+            return usageError(
+                CommandLine::tr("%1 is a PL110 program; proofs are for Pluto projects")
+                    .arg(files.first()));
+        return openPl110(
+            {files.first(), page, parser.value(simulateOption), parser.value(screenshotOption)});
+    }
 
     rs::ui::MainWindow window;
     if (parser.isSet(screenshotOption)) {

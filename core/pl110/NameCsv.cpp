@@ -82,6 +82,60 @@ Line* declarationOf(Program& program, const Address& address) {
 
 } // namespace
 
+std::optional<NamingProblem> nameAddress(Program& program, const Address& address,
+                                         const std::string& name, const std::string& description,
+                                         bool& changed) {
+    changed = false;
+    if (description.find_first_of("\r\n") != std::string::npos)
+        return NamingProblem{2, "a description is one line"};
+    Line* declaredLine = declarationOf(program, address);
+    NameDeclaration* declared =
+        declaredLine ? &std::get<NameDeclaration>(declaredLine->body) : nullptr;
+    if (name.empty()) {
+        if (!description.empty())
+            return NamingProblem{
+                1, "a description needs a name: the text form keeps it on the name's line"};
+        if (declared) {
+            respell(program, declared->name, {});
+            program.declarations.erase(program.declarations.begin() +
+                                       (declaredLine - program.declarations.data()));
+            changed = true;
+        }
+        return std::nullopt;
+    }
+    if (std::string why = nameProblem(name); !why.empty())
+        return NamingProblem{1, std::move(why)};
+    // The same name on another address would make the text ambiguous.
+    const bool taken = std::any_of(program.declarations.begin(), program.declarations.end(),
+                                   [&](const Line& line) {
+                                       const auto* d = std::get_if<NameDeclaration>(&line.body);
+                                       return d && lang::toUpper(d->name) == lang::toUpper(name) &&
+                                              !(d->variable.address == address);
+                                   });
+    if (taken)
+        return NamingProblem{1, "'" + name + "' already names another address"};
+    std::optional<std::string> comment;
+    if (!description.empty())
+        comment = " " + description;
+    if (declared) {
+        if (declared->name == name && declaredLine->comment == comment)
+            return std::nullopt;
+        respell(program, declared->name, name);
+        declared->name = name;
+        declaredLine->comment = comment;
+    } else {
+        Line line;
+        NameDeclaration declaration;
+        declaration.variable.address = address;
+        declaration.name = name;
+        line.body = declaration;
+        line.comment = comment;
+        program.declarations.push_back(std::move(line));
+    }
+    changed = true;
+    return std::nullopt;
+}
+
 std::string exportNamesCsv(const Program& program, char separator) {
     const std::string sep(1, separator);
     std::string csv = "\xEF\xBB\xBFVariable" + sep + "Symbolic Name" + sep + "Description\r\n";
@@ -96,7 +150,6 @@ std::string exportNamesCsv(const Program& program, char separator) {
 NameCsvImport importNamesCsv(const Program& program, std::string_view csv) {
     NameCsvImport result;
     result.program = program;
-    Program& out = result.program;
     std::vector<project::CsvRecord> records;
     try {
         records = project::readCsv(csv, project::detectCsvSeparator(csv));
@@ -129,60 +182,14 @@ NameCsvImport importNamesCsv(const Program& program, std::string_view csv) {
                            : "'" + variable + "' is not a PL110 address");
             continue;
         }
-        if (description.find_first_of("\r\n") != std::string::npos) {
-            problem(2, "a description is one line");
+        bool changed = false;
+        if (const auto why =
+                nameAddress(result.program, reading.address, name, description, changed)) {
+            problem(static_cast<std::size_t>(why->field), why->message);
             continue;
         }
-        Line* declaredLine = declarationOf(out, reading.address);
-        NameDeclaration* declared =
-            declaredLine ? &std::get<NameDeclaration>(declaredLine->body) : nullptr;
-        if (name.empty()) {
-            if (!description.empty()) {
-                problem(1, "a description needs a name: the text form keeps it on the name's line");
-                continue;
-            }
-            if (declared) {
-                respell(out, declared->name, {});
-                out.declarations.erase(out.declarations.begin() +
-                                       (declaredLine - out.declarations.data()));
-                ++result.changed;
-            }
-            continue;
-        }
-        if (const std::string why = nameProblem(name); !why.empty()) {
-            problem(1, why);
-            continue;
-        }
-        // The same name on another address would make the text ambiguous.
-        const bool taken =
-            std::any_of(out.declarations.begin(), out.declarations.end(), [&](const Line& line) {
-                const auto* d = std::get_if<NameDeclaration>(&line.body);
-                return d && lang::toUpper(d->name) == lang::toUpper(name) &&
-                       !(d->variable.address == reading.address);
-            });
-        if (taken) {
-            problem(1, "'" + name + "' already names another address");
-            continue;
-        }
-        std::optional<std::string> comment;
-        if (!description.empty())
-            comment = " " + description;
-        if (declared) {
-            if (declared->name == name && declaredLine->comment == comment)
-                continue;
-            respell(out, declared->name, name);
-            declared->name = name;
-            declaredLine->comment = comment;
-        } else {
-            Line line;
-            NameDeclaration declaration;
-            declaration.variable.address = reading.address;
-            declaration.name = name;
-            line.body = declaration;
-            line.comment = comment;
-            out.declarations.push_back(std::move(line));
-        }
-        ++result.changed;
+        if (changed)
+            ++result.changed;
     }
     return result;
 }

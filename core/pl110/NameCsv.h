@@ -3,6 +3,7 @@
 
 #include "Program.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,8 +30,19 @@ struct NameCsvImport {
     std::vector<NameCsvProblem> problems; // bad rows, left out
 };
 
-// Rows name or rename an address (its rungs follow), set its description, or
-// with an empty name take the name off (the rungs then write the address).
+// Names an address or renames it (the rungs follow), sets its description,
+// or with an empty name takes the name off (the rungs then write the
+// address). A refusal says which field it concerns: 1 the name, 2 the
+// description; `changed` says whether the program changed.
+struct NamingProblem {
+    int field = 1;
+    std::string message;
+};
+std::optional<NamingProblem> nameAddress(Program& program, const Address& address,
+                                         const std::string& name, const std::string& description,
+                                         bool& changed);
+
+// Each row as nameAddress does; bad rows are left out and reported.
 NameCsvImport importNamesCsv(const Program& program, std::string_view csv);
 
 } // namespace rs::pl110

@@ -7,6 +7,8 @@
 #include "document/ProjectPaths.h"
 #include "document/ProtectedOpenDialog.h"
 #include "pages/NewProjectDialog.h"
+#include "pl110/Pl110Window.h"
+#include "pl110/ProgramFile.h"
 #include "project/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectProperties.h"
@@ -173,8 +175,10 @@ QString OpenProjects::loadFile(const QString& path) {
 }
 
 bool OpenProjects::openFile(const QString& path) {
+    // A PL110 program opens in a window of its own (docs/pl110.md, "The window").
+    const bool pl110 = pl110::isPl110File(path);
     const std::size_t before = m_documents.size();
-    const QString error = loadFile(path);
+    const QString error = pl110 ? Pl110Window::openWindow(path) : loadFile(path);
     if (error.isEmpty() && m_documents.size() > before && !askPermission(m_documents.back())) {
         remove(m_documents.back());
         return false;
@@ -183,7 +187,8 @@ bool OpenProjects::openFile(const QString& path) {
         m_recentFiles.add(QFileInfo(path).absoluteFilePath());
         rememberDirectory(path);
         ProjectDocument* document = m_current();
-        emit message(document && document->isDamaged()
+        emit message(pl110 ? tr("Opened %1 in a PL110 window").arg(QDir::toNativeSeparators(path))
+                     : document && document->isDamaged()
                          ? tr("Opened %1. It has errors: fix them in its text.")
                                .arg(QDir::toNativeSeparators(path))
                          : tr("Opened %1").arg(QDir::toNativeSeparators(path)));
@@ -270,6 +275,10 @@ void OpenProjects::newProject() {
     NewProjectDialog dialog(m_window);
     if (dialog.exec() != QDialog::Accepted)
         return;
+    if (dialog.target() == NewProjectDialog::Target::Pl110) {
+        Pl110Window::newWindow(dialog.name());
+        return;
+    }
     ProjectDocument* document =
         createProject(dialog.name(), dialog.description(), dialog.includeSource());
     emit unitWanted(document);

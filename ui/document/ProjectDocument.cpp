@@ -57,9 +57,8 @@ ProjectDocument* ProjectDocument::open(const QString& path, QString& error, QObj
     }
     if (pl110::isPl110Text(file.text)) {
         // Read as a Pluto project it would be a wall of wrong errors.
-        error = tr("It is a program for the Pixsys PL110. The window edits Pluto projects; "
-                   "check, test, draw and serve PL110 programs with rungsmith-cli "
-                   "(docs/pl110.md).");
+        error = tr("It is a program for the Pixsys PL110, not a Pluto project: File > Open "
+                   "opens it in a PL110 window.");
         return nullptr;
     }
     ProjectDocument* document = fromText(QByteArray::fromStdString(file.text), parent);

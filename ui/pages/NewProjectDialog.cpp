@@ -5,6 +5,7 @@
 #include "shell/StatusColors.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -16,13 +17,16 @@
 namespace rs::ui {
 
 NewProjectDialog::NewProjectDialog(QWidget* parent)
-    : QDialog(parent), m_name(new QLineEdit(tr("New project"), this)),
-      m_description(new QPlainTextEdit(this)),
+    : QDialog(parent), m_target(new QComboBox(this)),
+      m_name(new QLineEdit(tr("New project"), this)), m_description(new QPlainTextEdit(this)),
       m_includeSource(new QCheckBox(tr("&Include source code in compiled file"), this)),
       m_problem(new QLabel(this)),
       m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
     setObjectName(QStringLiteral("newProjectDialog"));
     setWindowTitle(tr("New Project"));
+    m_target->setObjectName(QStringLiteral("projectTargetCombo"));
+    m_target->addItem(tr("Pluto safety PLCs (1 to 32 units on one bus)"));
+    m_target->addItem(tr("Pixsys PL110 (one ladder PLC)"));
     m_name->setObjectName(QStringLiteral("projectNameEdit"));
     m_name->selectAll();
     m_description->setObjectName(QStringLiteral("projectDescriptionEdit"));
@@ -41,6 +45,7 @@ NewProjectDialog::NewProjectDialog(QWidget* parent)
     m_problem->hide();
 
     auto* form = new QFormLayout;
+    form->addRow(tr("&Target:"), m_target);
     form->addRow(tr("Project &name:"), m_name);
     form->addRow(QString(), m_problem);
     form->addRow(tr("Project &description:"), m_description);
@@ -52,7 +57,17 @@ NewProjectDialog::NewProjectDialog(QWidget* parent)
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_name, &QLineEdit::textChanged, this, &NewProjectDialog::validate);
+    connect(m_target, &QComboBox::currentIndexChanged, this, [this, note] {
+        const bool pluto = target() == Target::Pluto;
+        m_description->setEnabled(pluto);
+        m_includeSource->setEnabled(pluto);
+        note->setVisible(pluto);
+    });
     resize(520, 340);
+}
+
+NewProjectDialog::Target NewProjectDialog::target() const {
+    return m_target->currentIndex() == 1 ? Target::Pl110 : Target::Pluto;
 }
 
 QString NewProjectDialog::name() const {

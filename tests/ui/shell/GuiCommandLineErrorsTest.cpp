@@ -71,14 +71,25 @@ TEST_F(GuiCommandLineErrors, AProjectThatDoesNotReadIsAUsageError) {
     EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
 }
 
-TEST_F(GuiCommandLineErrors, APl110ProgramIsSaidToBeOneNotReadAsABrokenPlutoProject) {
+TEST_F(GuiCommandLineErrors, APl110ProgramOpensInItsOwnWindowAndRefusesAPlutoPage) {
     const QString program = file(QStringLiteral("station.sps"), "$target PL110\nMAIN\nQ1 = I1\n");
-    const GuiRun run =
-        gui({program, QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    GuiRun run = gui({program, QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
+    EXPECT_TRUE(QFile::exists(out(QStringLiteral("shot.png"))));
+    // Not read as a broken Pluto project: no wall of Pluto errors.
+    EXPECT_FALSE(run.err.contains(QStringLiteral("error"))) << run.err.toStdString();
+
+    run = gui({program, QStringLiteral("--page"), QStringLiteral("io:1"),
+               QStringLiteral("--screenshot"), out(QStringLiteral("io.png"))});
     EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
-    EXPECT_TRUE(run.err.contains(QStringLiteral("Pixsys PL110"))) << run.err.toStdString();
-    EXPECT_TRUE(run.err.contains(QStringLiteral("rungsmith-cli"))) << run.err.toStdString();
-    EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
+    EXPECT_TRUE(run.err.contains(QStringLiteral("PL110 program"))) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(out(QStringLiteral("io.png"))));
+
+    run = gui({program, QStringLiteral("--page"), QStringLiteral("ladder:7"),
+               QStringLiteral("--screenshot"), out(QStringLiteral("rung.png"))});
+    EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
+    EXPECT_TRUE(run.err.contains(QStringLiteral("has no rung 7"))) << run.err.toStdString();
+    EXPECT_FALSE(QFile::exists(out(QStringLiteral("rung.png"))));
 }
 
 TEST_F(GuiCommandLineErrors, APictureThatCannotBeWrittenIsSaidAndLeavesNoFile) {

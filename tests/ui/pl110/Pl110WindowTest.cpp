@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pl110/Pl110Window.h"
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110LadderView.h"
+#include "pl110/Pl110NamesPage.h"
+#include "pl110/Pl110Simulation.h"
+#include "text/ProgramEditor.h"
+
+#include <QAction>
+#include <QFile>
+#include <QLabel>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPointer>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include "QtPrinting.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+// The PL110 window as a user drives it: the example opens on its ladder,
+// typing, naming and CSV change the one text with one undo history, the
+// simulator runs what is shown and is driven from the ladder, scenarios and
+// saving work, and nothing is lost when a change cannot be made.
+
+namespace {
+
+using rs::ui::Pl110Document;
+using rs::ui::Pl110Window;
+
+const QString kFillingStation =
+    QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/pl110/filling-station.sps");
+const QString kFillingScenario =
+    QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/pl110/filling-station.scn");
+
+rs::pl110::Address pl110Address(const char* text) {
+    return rs::pl110::readAddress(text).address;
+}
+
+class Pl110WindowTest : public ::testing::Test {
+protected:
+    void SetUp() override { open(kFillingStation); }
+
+    void open(const QString& path) {
+        QString error;
+        Pl110Document* document = Pl110Document::open(path, error);
+        ASSERT_NE(document, nullptr) << error.toStdString();
+        window = std::make_unique<Pl110Window>(document);
+        window->setAttribute(Qt::WA_DeleteOnClose, false);
+    }
+    Pl110Document* document() const { return window->document(); }
+    QAction* action(const char* name) const {
+        auto* found = window->findChild<QAction*>(QString::fromLatin1(name));
+        EXPECT_NE(found, nullptr) << name;
+        return found;
+    }
+    rs::ui::ProgramEditor* editor() const {
+        return window->findChild<rs::ui::ProgramEditor*>(QStringLiteral("pl110Editor"));
+    }
+    rs::ui::Pl110LadderView* ladder() const {
+        return window->findChild<rs::ui::Pl110LadderView*>(QStringLiteral("pl110LadderView"));
+    }
+    QTableWidget* names() const {
+        return window->findChild<QTableWidget*>(QStringLiteral("pl110NamesTable"));
+    }
+    QListWidget* problems() const {
+        return window->findChild<QListWidget*>(QStringLiteral("pl110Problems"));
+    }
+    // Types a whole new text, as a burst of typing the window takes in after a pause.
+    void type(const QByteArray& text) {
+        editor()->setText(QString::fromUtf8(text));
+        window->applyTyping();
+    }
+    int namesRow(const QString& address) const {
+        for (int row = 0; row < names()->rowCount(); ++row)
+            if (names()->item(row, 0)->text() == address)
+                return row;
+        return -1;
+    }
+    QString writeFile(const QString& name, const QByteArray& bytes) {
+        QFile file(directory.filePath(name));
+        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(bytes);
+        return file.fileName();
+    }
+
+    QTemporaryDir directory;
+    std::unique_ptr<Pl110Window> window;
+};
+
+TEST_F(Pl110WindowTest, TheExampleOpensOnItsLadderWithEveryRungAndNoProblems) {
+    const auto* pages = window->findChild<QTabWidget*>(QStringLiteral("pl110Pages"));
+    EXPECT_EQ(pages->currentWidget(), ladder());
+    EXPECT_EQ(ladder()->rungCount(), 9);
+    EXPECT_EQ(problems()->count(), 0);
+    EXPECT_TRUE(action("pl110StartAction")->isEnabled());
+    EXPECT_FALSE(window->isWindowModified());
+    EXPECT_TRUE(window->windowTitle().contains(QStringLiteral("filling-station.sps")));
+}
+
+TEST_F(Pl110WindowTest, TypingChangesTheLadderAndUndoesAsOneStepOfTheOneHistory) {
+    const QByteArray before = document()->text();
+    type(before + "Q4 = I6\n");
+    EXPECT_EQ(ladder()->rungCount(), 10);
+    EXPECT_TRUE(window->isWindowModified());
+    action("pl110UndoAction")->trigger();
+    EXPECT_EQ(document()->text(), before);
+    EXPECT_EQ(editor()->textBytes(), before);
+    EXPECT_EQ(ladder()->rungCount(), 9);
+    EXPECT_FALSE(window->isWindowModified());
+    action("pl110RedoAction")->trigger();
+    EXPECT_EQ(ladder()->rungCount(), 10);
+}
+
+TEST_F(Pl110WindowTest, ErrorsAreListedAtTheirLineAndColumnAndStopTheSimulator) {
+    type(document()->text() + "Q4 = I0\n");
+    ASSERT_EQ(problems()->count(), 1);
+    const QString problem = problems()->item(0)->text();
+    EXPECT_TRUE(problem.startsWith(QStringLiteral("30:6: "))) << problem.toStdString();
+    EXPECT_TRUE(problem.contains(QStringLiteral("I0 is out of range"))) << problem.toStdString();
+    EXPECT_FALSE(action("pl110StartAction")->isEnabled());
+    // The ladder still shows every line that reads.
+    EXPECT_EQ(ladder()->rungCount(), 9);
+}
+
+TEST_F(Pl110WindowTest, RenamingOnTheNamesPageFollowsIntoTheRungsAndUndoes) {
+    const QByteArray before = document()->text();
+    const int row = namesRow(QStringLiteral("I1"));
+    ASSERT_GE(row, 0);
+    names()->item(row, 1)->setText(QStringLiteral("StartButton"));
+    const QString text = QString::fromUtf8(document()->text());
+    EXPECT_TRUE(text.contains(QStringLiteral("! I1=StartButton"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Running = StartButton * Stop")))
+        << text.toStdString();
+    EXPECT_EQ(editor()->textBytes(), document()->text());
+    action("pl110UndoAction")->trigger();
+    EXPECT_EQ(document()->text(), before);
+}
+
+TEST_F(Pl110WindowTest, TheLastRowNamesAnotherAddressAndABadNameIsRefusedWithItsReason) {
+    const int last = names()->rowCount() - 1;
+    names()->item(last, 0)->setText(QStringLiteral("I6"));
+    names()->item(last, 1)->setText(QStringLiteral("Door"));
+    EXPECT_TRUE(QString::fromUtf8(document()->text()).contains(QStringLiteral("! I6=Door")));
+
+    const QByteArray before = document()->text();
+    names()->item(namesRow(QStringLiteral("Q1")), 1)->setText(QStringLiteral("Stop"));
+    EXPECT_EQ(document()->text(), before);
+    const auto* problem = window->findChild<QLabel*>(QStringLiteral("pl110NamesProblem"));
+    EXPECT_FALSE(problem->isHidden());
+    EXPECT_TRUE(problem->text().contains(QStringLiteral("already names another address")))
+        << problem->text().toStdString();
+}
+
+TEST_F(Pl110WindowTest, NamesAreNotRewrittenWhileALineDoesNotRead) {
+    type(document()->text() + "Q4 = = I1\n");
+    const QByteArray before = document()->text();
+    names()->item(namesRow(QStringLiteral("I1")), 1)->setText(QStringLiteral("Go"));
+    // Printing the program would drop the line that does not read.
+    EXPECT_EQ(document()->text(), before);
+}
+
+TEST_F(Pl110WindowTest, NamesGoOutAndComeBackAsCsvAndABadFileChangesNothing) {
+    auto* page = window->findChild<rs::ui::Pl110NamesPage*>(QStringLiteral("pl110NamesPage"));
+    const QString csv = directory.filePath(QStringLiteral("names.csv"));
+    ASSERT_TRUE(page->exportCsv(csv, ';').isEmpty());
+    QFile file(csv);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray exported = file.readAll();
+    EXPECT_TRUE(exported.contains("I1;Start;green button, N.O.")) << exported.toStdString();
+
+    page->importCsv(writeFile(QStringLiteral("renamed.csv"), "Variable,Symbolic Name\nI1,Go\n"));
+    EXPECT_TRUE(QString::fromUtf8(document()->text()).contains(QStringLiteral("Running = Go *")));
+
+    const QByteArray before = document()->text();
+    page->importCsv(writeFile(QStringLiteral("bad.csv"), "I2,Halt\nX9,Nothing\n"));
+    EXPECT_EQ(document()->text(), before);
+    const auto* problem = window->findChild<QLabel*>(QStringLiteral("pl110NamesProblem"));
+    EXPECT_TRUE(problem->text().contains(QStringLiteral("bad.csv:2:1:")))
+        << problem->text().toStdString();
+}
+
+TEST_F(Pl110WindowTest, ClickingAnInputsContactSwitchesItAndTheRungRunsOnIt) {
+    rs::ui::Pl110Simulation* simulation = window->simulation();
+    ladder()->resize(1000, 800);
+    simulation->set(pl110Address("I2"), 1); // Stop is N.C.: 1 while not pressed
+    ASSERT_TRUE(simulation->singleScan().isEmpty());
+    EXPECT_EQ(simulation->engine()->value(pl110Address("M1")), 0);
+    // The ladder's contact of Start, as a click on it reports it.
+    Q_EMIT ladder()->operandClicked(QStringLiteral("I1"));
+    EXPECT_EQ(simulation->engine()->value(pl110Address("I1")), 1);
+    ASSERT_TRUE(simulation->singleScan().isEmpty());
+    EXPECT_EQ(simulation->engine()->value(pl110Address("M1")), 1);
+    Q_EMIT ladder()->operandClicked(QStringLiteral("I1"));
+    ASSERT_TRUE(simulation->singleScan().isEmpty());
+    EXPECT_EQ(simulation->engine()->value(pl110Address("M1")), 1) << "Running holds itself";
+    // A marker is forced, and stays so against the program.
+    Q_EMIT ladder()->operandClicked(QStringLiteral("M1"));
+    EXPECT_TRUE(simulation->isForced(pl110Address("M1")));
+    ASSERT_TRUE(simulation->singleScan().isEmpty());
+    EXPECT_EQ(simulation->engine()->value(pl110Address("M1")), 0);
+}
+
+TEST_F(Pl110WindowTest, AChangedProgramStopsTheSimulationItRan) {
+    rs::ui::Pl110Simulation* simulation = window->simulation();
+    ASSERT_TRUE(simulation->start().isEmpty());
+    EXPECT_TRUE(simulation->isRunning());
+    EXPECT_FALSE(action("pl110StartAction")->isEnabled());
+    type(document()->text() + "Q4 = I6\n");
+    EXPECT_FALSE(simulation->isRunning());
+    EXPECT_EQ(simulation->engine(), nullptr);
+    EXPECT_TRUE(action("pl110StartAction")->isEnabled());
+}
+
+TEST_F(Pl110WindowTest, AScenarioRunsToItsEndAndItsResultsAreShown) {
+    ASSERT_TRUE(window->runScenario(kFillingScenario).isEmpty());
+    const auto* output = window->findChild<QPlainTextEdit*>(QStringLiteral("pl110ScenarioOutput"));
+    EXPECT_TRUE(output->toPlainText().contains(QStringLiteral("7 passed, 0 failed")))
+        << output->toPlainText().toStdString();
+    ASSERT_NE(window->simulation()->engine(), nullptr);
+    EXPECT_EQ(window->simulation()->engine()->value(pl110Address("VW10")), 2);
+
+    const QString failing = writeFile(QStringLiteral("wrong.scn"), "expect Pump 1\n");
+    ASSERT_TRUE(window->runScenario(failing).isEmpty());
+    EXPECT_TRUE(output->toPlainText().contains(QStringLiteral("wrong.scn:1: expect Pump 1 failed")))
+        << output->toPlainText().toStdString();
+}
+
+TEST_F(Pl110WindowTest, SavingWritesTheTextAndAFailedSaveKeepsTheFileAndTheChanges) {
+    const QString path = directory.filePath(QStringLiteral("station.sps"));
+    ASSERT_TRUE(document()->saveAs(path).isEmpty());
+    type(document()->text() + "Q4 = I6\n");
+    EXPECT_TRUE(window->isWindowModified());
+    action("pl110SaveAction")->trigger();
+    EXPECT_FALSE(window->isWindowModified());
+    QFile saved(path);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    EXPECT_EQ(saved.readAll(), document()->text());
+
+    EXPECT_FALSE(
+        document()->saveAs(directory.filePath(QStringLiteral("no/such/dir.sps"))).isEmpty());
+    EXPECT_EQ(document()->path(), path);
+}
+
+TEST(Pl110NewProgram, ANewProgramRunsAsItStands) {
+    const QPointer<Pl110Window> window = Pl110Window::newWindow(QStringLiteral("Press"));
+    ASSERT_TRUE(window);
+    EXPECT_TRUE(window->document()->isRunnable());
+    EXPECT_TRUE(window->document()->text().contains("$name Press"));
+    EXPECT_TRUE(window->windowTitle().startsWith(QStringLiteral("Press")));
+    window->document()->undoStack()->setClean();
+    delete window.data();
+}
+
+TEST(Pl110Document, AFileThatIsNotAPl110ProgramIsRefusedWithTheReason) {
+    QString error;
+    EXPECT_EQ(
+        Pl110Document::open(QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps"), error),
+        nullptr);
+    EXPECT_TRUE(error.contains(QStringLiteral("$target PL110"))) << error.toStdString();
+}
+
+} // namespace

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QTableWidget;
+class QTableWidgetItem;
+
+namespace rs::pl110 {
+class ScanEngine;
+}
+
+namespace rs::ui {
+
+class Pl110Document;
+
+// The PL110's names and memory areas: every declared name with its address
+// and description, editable in place (renaming follows into the rungs), a
+// last row to name another address, CSV import and export, the live value
+// of each named variable while simulating, and the datasheet's areas with
+// their addresses, access and Modbus addresses for reference.
+class Pl110NamesPage : public QWidget {
+    Q_OBJECT
+public:
+    explicit Pl110NamesPage(Pl110Document* document, QWidget* parent = nullptr);
+
+    // The values of the named variables from the engine, or none.
+    void showValues(const pl110::ScanEngine* engine);
+    void importCsv(const QString& path);
+    QString exportCsv(const QString& path, char separator) const;
+
+Q_SIGNALS:
+    void message(const QString& text);
+
+private:
+    enum Column { AddressColumn, NameColumn, DescriptionColumn, ValueColumn };
+    void fillNames();
+    void fillAreas();
+    void edited(QTableWidgetItem* item);
+    void chooseImport();
+    void chooseExport();
+    bool canRewrite(const QString& what);
+
+    Pl110Document* m_document;
+    QTableWidget* m_names;
+    QTableWidget* m_areas;
+    QLabel* m_problem;
+    bool m_filling = false;
+};
+
+} // namespace rs::ui

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pl110/Pl110Simulation.h"
+
+#include "pl110/Pl110Document.h"
+#include "pl110/Scenario.h"
+#include "project/ProjectFile.h"
+
+#include <QFileInfo>
+
+namespace rs::ui {
+
+namespace {
+
+// At most this many scans per tick catch up with the wall clock: a machine
+// too slow for real time runs slower instead of freezing the window.
+constexpr int kMaxScansPerTick = 50;
+
+bool isInput(const pl110::Address& address) {
+    return address.area == pl110::Area::Input || address.area == pl110::Area::AnalogInput;
+}
+
+} // namespace
+
+Pl110Simulation::Pl110Simulation(Pl110Document* document, QObject* parent)
+    : QObject(parent), m_document(document) {
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &Pl110Simulation::tick);
+    connect(document, &Pl110Document::changed, this, [this] {
+        const bool wasRunning = isRunning();
+        m_timer.stop();
+        if (!m_engine)
+            return;
+        m_engine.reset();
+        if (wasRunning)
+            Q_EMIT stopped(tr("The program changed: the simulation stopped. Start it again to "
+                              "run the new program."));
+        Q_EMIT discarded();
+    });
+}
+
+Pl110Simulation::~Pl110Simulation() = default;
+
+QString Pl110Simulation::prepare(bool powerOn) {
+    if (m_engine && !powerOn)
+        return {};
+    if (!m_document->isRunnable())
+        return tr("The program has errors; fix them to simulate it.");
+    m_engine = std::make_unique<pl110::ScanEngine>(m_document->program());
+    m_engine->reset();
+    // What the user held or forced before stays held: the same switches.
+    for (const auto& [address, value] : m_forced) {
+        if (isInput(address))
+            m_engine->set(address, value);
+        else
+            m_engine->force(address, value);
+    }
+    return {};
+}
+
+QString Pl110Simulation::start() {
+    if (isRunning())
+        return {};
+    if (QString error = prepare(false); !error.isEmpty())
+        return error;
+    m_clock.start();
+    m_clockOffsetMs = m_engine->timeMs();
+    m_timer.start(m_engine->cycleMs());
+    Q_EMIT started();
+    Q_EMIT scanned();
+    return {};
+}
+
+void Pl110Simulation::stop() {
+    if (!isRunning())
+        return;
+    m_timer.stop();
+    Q_EMIT stopped({});
+}
+
+QString Pl110Simulation::singleScan() {
+    stop();
+    if (QString error = prepare(false); !error.isEmpty())
+        return error;
+    m_engine->scan();
+    Q_EMIT scanned();
+    return {};
+}
+
+QString Pl110Simulation::reset() {
+    const bool wasRunning = isRunning();
+    m_timer.stop();
+    if (QString error = prepare(true); !error.isEmpty())
+        return error;
+    Q_EMIT scanned();
+    if (wasRunning) {
+        m_clock.start();
+        m_clockOffsetMs = 0;
+        m_timer.start(m_engine->cycleMs());
+    }
+    return {};
+}
+
+void Pl110Simulation::tick() {
+    const std::int64_t due = m_clock.elapsed() + m_clockOffsetMs;
+    int scans = 0;
+    while (m_engine->timeMs() + m_engine->cycleMs() <= due && scans < kMaxScansPerTick) {
+        m_engine->scan();
+        ++scans;
+    }
+    if (scans == kMaxScansPerTick) // fell behind: virtual time goes on from now
+        m_clockOffsetMs = m_engine->timeMs() - m_clock.elapsed();
+    if (scans > 0)
+        Q_EMIT scanned();
+}
+
+void Pl110Simulation::set(const pl110::Address& address, std::int64_t value) {
+    m_forced[address] = value;
+    if (!m_engine)
+        return;
+    if (isInput(address))
+        m_engine->set(address, value);
+    else
+        m_engine->force(address, value);
+    Q_EMIT scanned();
+}
+
+void Pl110Simulation::release(const pl110::Address& address) {
+    m_forced.erase(address);
+    if (!m_engine)
+        return;
+    if (isInput(address))
+        m_engine->set(address, 0);
+    else
+        m_engine->release(address);
+    Q_EMIT scanned();
+}
+
+Pl110Simulation::ScenarioRun Pl110Simulation::runScenario(const QString& path) {
+    ScenarioRun run;
+    stop();
+    const project::FileText file = project::readTextFile(path);
+    if (!file.error.isEmpty()) {
+        run.error = file.error;
+        return run;
+    }
+    // A scenario starts from power on with nothing set by hand.
+    m_forced.clear();
+    if (run.error = prepare(true); !run.error.isEmpty())
+        return run;
+    const pl110::Scenario scenario =
+        pl110::parseScenario(file.text, pl110::ScenarioNames(m_document->program()));
+    run.report = pl110::runScenario(QFileInfo(path).fileName().toStdString(), scenario, *m_engine);
+    Q_EMIT scanned();
+    return run;
+}
+
+} // namespace rs::ui

@@ -1,0 +1,501 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pl110/Pl110Window.h"
+
+#include "MarksSnapshot.h"
+#include "pl110/Address.h"
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110LadderView.h"
+#include "pl110/Pl110Lexer.h"
+#include "pl110/Pl110NamesPage.h"
+#include "pl110/Pl110Simulation.h"
+#include "shell/NamedIcon.h"
+#include "text/ProgramEditor.h"
+
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QListWidget>
+#include <QLocale>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QToolBar>
+
+namespace rs::ui {
+
+namespace {
+
+// Typing is taken into the document after this pause, as one undo step per burst.
+constexpr int kTypingPauseMs = 400;
+// The live pages redraw at most this often, whatever the scan rate.
+constexpr int kLiveRefreshMs = 50;
+
+bool isBitAddress(const pl110::Address& address) {
+    return address.width == pl110::Width::Bit;
+}
+
+QString diagnosticText(const lang::Diagnostic& d) {
+    return QStringLiteral("%1:%2: %3: %4")
+        .arg(d.line)
+        .arg(d.column)
+        .arg(d.severity == lang::Severity::Error ? Pl110Window::tr("error")
+                                                 : Pl110Window::tr("warning"))
+        .arg(QString::fromStdString(d.message));
+}
+
+} // namespace
+
+Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
+    : QMainWindow(parent), m_document(document), m_simulation(new Pl110Simulation(document, this)),
+      m_pages(new QTabWidget(this)), m_ladder(new Pl110LadderView(this)),
+      m_editor(new ProgramEditor(new Pl110Lexer, this)),
+      m_names(new Pl110NamesPage(document, this)), m_problems(new QListWidget(this)),
+      m_scenarioOutput(new QPlainTextEdit(this)) {
+    setObjectName(QStringLiteral("pl110Window"));
+    setAttribute(Qt::WA_DeleteOnClose);
+    document->setParent(this);
+
+    m_editor->setObjectName(QStringLiteral("pl110Editor"));
+    m_editor->setProjectUndo(true);
+    m_pages->setObjectName(QStringLiteral("pl110Pages"));
+    m_pages->setDocumentMode(true);
+    m_pages->addTab(m_ladder, tr("&Ladder"));
+    m_pages->addTab(m_editor, tr("&Program"));
+    m_pages->addTab(m_names, tr("&Names and Areas"));
+    setCentralWidget(m_pages);
+
+    m_problems->setObjectName(QStringLiteral("pl110Problems"));
+    auto* problemsDock = new QDockWidget(tr("Problems"), this);
+    problemsDock->setObjectName(QStringLiteral("pl110ProblemsDock"));
+    problemsDock->setWidget(m_problems);
+    addDockWidget(Qt::BottomDockWidgetArea, problemsDock);
+    m_scenarioOutput->setObjectName(QStringLiteral("pl110ScenarioOutput"));
+    m_scenarioOutput->setReadOnly(true);
+    auto* scenarioDock = new QDockWidget(tr("Scenario Results"), this);
+    scenarioDock->setObjectName(QStringLiteral("pl110ScenarioDock"));
+    scenarioDock->setWidget(m_scenarioOutput);
+    addDockWidget(Qt::BottomDockWidgetArea, scenarioDock);
+    tabifyDockWidget(problemsDock, scenarioDock);
+    problemsDock->raise();
+    resizeDocks({problemsDock}, {150}, Qt::Vertical);
+
+    m_editor->setTextBytes(document->text());
+    m_typing.setSingleShot(true);
+    m_typing.setInterval(kTypingPauseMs);
+    connect(&m_typing, &QTimer::timeout, this, &Pl110Window::applyTyping);
+    connect(m_editor, &QsciScintilla::textChanged, this, [this] {
+        if (!m_settingEditor)
+            m_typing.start();
+    });
+    m_liveRefresh.setSingleShot(true);
+    m_liveRefresh.setInterval(kLiveRefreshMs);
+    connect(&m_liveRefresh, &QTimer::timeout, this, &Pl110Window::refreshLive);
+
+    connect(document, &Pl110Document::changed, this, &Pl110Window::followDocument);
+    connect(document, &Pl110Document::pathChanged, this, &Pl110Window::updateTitle);
+    connect(document, &Pl110Document::modifiedChanged, this, &Pl110Window::updateTitle);
+    connect(m_ladder, &Pl110LadderView::operandClicked, this, &Pl110Window::operandClicked);
+    connect(m_ladder, &Pl110LadderView::operandMenuRequested, this, &Pl110Window::operandMenu);
+    connect(m_ladder, &Pl110LadderView::lineActivated, this, [this](int line) { goToLine(line); });
+    connect(m_problems, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        goToLine(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
+    });
+    connect(m_names, &Pl110NamesPage::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(m_simulation, &Pl110Simulation::scanned, this, &Pl110Window::scheduleLiveRefresh);
+    connect(m_simulation, &Pl110Simulation::started, this, &Pl110Window::updateSimulationActions);
+    connect(m_simulation, &Pl110Simulation::stopped, this, [this](const QString& why) {
+        updateSimulationActions();
+        if (!why.isEmpty())
+            statusBar()->showMessage(why, 8000);
+    });
+    connect(m_simulation, &Pl110Simulation::discarded, this, &Pl110Window::refreshLive);
+
+    createActions();
+    followDocument();
+    resize(1180, 760);
+}
+
+QString Pl110Window::openWindow(const QString& path) {
+    QString error;
+    Pl110Document* document = Pl110Document::open(path, error);
+    if (!document)
+        return error;
+    auto* window = new Pl110Window(document);
+    window->show();
+    return {};
+}
+
+Pl110Window* Pl110Window::newWindow(const QString& name) {
+    auto* window = new Pl110Window(Pl110Document::create(name));
+    window->show();
+    return window;
+}
+
+void Pl110Window::createActions() {
+    const auto action = [this](const QString& text, const char* name,
+                               const QKeySequence& key = {}) {
+        auto* created = new QAction(text, this);
+        created->setObjectName(QString::fromLatin1(name));
+        if (!key.isEmpty())
+            created->setShortcut(key);
+        return created;
+    };
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* newProgram = action(tr("&New PL110 Program"), "pl110NewAction", QKeySequence::New);
+    connect(newProgram, &QAction::triggered, this, [] { newWindow(tr("New program")); });
+    QAction* open = action(tr("&Open..."), "pl110OpenAction", QKeySequence::Open);
+    open->setIcon(namedIcon("document-open"));
+    connect(open, &QAction::triggered, this, &Pl110Window::openOther);
+    QAction* saveAction = action(tr("&Save"), "pl110SaveAction", QKeySequence::Save);
+    saveAction->setIcon(namedIcon("document-save"));
+    connect(saveAction, &QAction::triggered, this, &Pl110Window::save);
+    QAction* saveAsAction = action(tr("Save &As..."), "pl110SaveAsAction", QKeySequence::SaveAs);
+    connect(saveAsAction, &QAction::triggered, this, &Pl110Window::saveAs);
+    QAction* close = action(tr("&Close"), "pl110CloseAction", QKeySequence::Close);
+    connect(close, &QAction::triggered, this, &QWidget::close);
+    file->addActions({newProgram, open, saveAction, saveAsAction});
+    file->addSeparator();
+    file->addAction(close);
+
+    // One undo history for every page; typing in progress is taken in first.
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = action(tr("&Undo"), "pl110UndoAction", QKeySequence::Undo);
+    undo->setIcon(namedIcon("edit-undo"));
+    connect(undo, &QAction::triggered, this, [this] {
+        applyTyping();
+        m_document->undoStack()->undo();
+    });
+    QAction* redo = action(tr("&Redo"), "pl110RedoAction");
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
+        redoKeys << QKeySequence(Qt::CTRL | Qt::Key_Y);
+    redo->setShortcuts(redoKeys);
+    redo->setIcon(namedIcon("edit-redo"));
+    connect(redo, &QAction::triggered, this, [this] {
+        applyTyping();
+        m_document->undoStack()->redo();
+    });
+    const auto updateUndo = [this, undo, redo] {
+        QUndoStack* stack = m_document->undoStack();
+        undo->setEnabled(stack->canUndo() || m_typing.isActive());
+        redo->setEnabled(stack->canRedo());
+        undo->setText(stack->canUndo() ? tr("&Undo %1").arg(stack->undoText()) : tr("&Undo"));
+        redo->setText(stack->canRedo() ? tr("&Redo %1").arg(stack->redoText()) : tr("&Redo"));
+    };
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, updateUndo);
+    connect(m_editor, &QsciScintilla::textChanged, this, updateUndo);
+    updateUndo();
+    QAction* format = action(tr("&Format Text"), "pl110FormatAction",
+                             QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    format->setStatusTip(tr("Write the program as the printer writes it: one space around "
+                            "operators, names as declared"));
+    connect(format, &QAction::triggered, this, [this] {
+        applyTyping();
+        if (!m_document->readsWhole()) {
+            statusBar()->showMessage(tr("Fix the errors first: formatting would drop the lines "
+                                        "that do not read."),
+                                     8000);
+            return;
+        }
+        m_document->setProgram(m_document->program(), tr("Format Text"));
+    });
+    edit->addActions({undo, redo});
+    edit->addSeparator();
+    edit->addAction(format);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    const std::array pages = {std::pair{tr("&Ladder"), Page::Ladder},
+                              std::pair{tr("&Program Text"), Page::Program},
+                              std::pair{tr("&Names and Areas"), Page::Names}};
+    int key = Qt::Key_1;
+    for (const auto& [text, page] : pages) {
+        QAction* show = action(text, "pl110PageAction", QKeySequence(Qt::CTRL | key++));
+        connect(show, &QAction::triggered, this, [this, page = page] { showPage(page); });
+        view->addAction(show);
+    }
+
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    m_start = action(tr("&Start"), "pl110StartAction", QKeySequence(Qt::Key_F5));
+    m_start->setStatusTip(tr("Run the program on the simulated clock; click an input's contact "
+                             "to switch it"));
+    m_start->setIcon(QIcon::fromTheme(QStringLiteral("media-playback-start")));
+    connect(m_start, &QAction::triggered, this, [this] {
+        applyTyping();
+        simulationAnswer(m_simulation->start());
+    });
+    m_stop = action(tr("S&top"), "pl110StopAction", QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    m_stop->setStatusTip(tr("Hold the program and the clock; the state stays shown"));
+    m_stop->setIcon(QIcon::fromTheme(QStringLiteral("media-playback-pause")));
+    connect(m_stop, &QAction::triggered, m_simulation, &Pl110Simulation::stop);
+    m_singleScan = action(tr("Single S&can"), "pl110SingleScanAction", QKeySequence(Qt::Key_F10));
+    m_singleScan->setIcon(QIcon::fromTheme(QStringLiteral("media-skip-forward")));
+    connect(m_singleScan, &QAction::triggered, this, [this] {
+        applyTyping();
+        simulationAnswer(m_simulation->singleScan());
+    });
+    m_reset = action(tr("&Reset"), "pl110ResetAction", QKeySequence(Qt::CTRL | Qt::Key_F5));
+    m_reset->setStatusTip(tr("Power on again at time 0; inputs set and forces stay"));
+    m_reset->setIcon(QIcon::fromTheme(QStringLiteral("view-refresh")));
+    connect(m_reset, &QAction::triggered, this, [this] {
+        applyTyping();
+        simulationAnswer(m_simulation->reset());
+    });
+    QAction* scenario = action(tr("Run Sce&nario..."), "pl110RunScenarioAction");
+    scenario->setStatusTip(tr("Run a scenario file (.scn) from power on and list its results"));
+    connect(scenario, &QAction::triggered, this, &Pl110Window::chooseScenario);
+    simulation->addActions({m_start, m_stop, m_singleScan, m_reset});
+    simulation->addSeparator();
+    simulation->addAction(scenario);
+
+    QToolBar* tools = addToolBar(tr("Simulation"));
+    tools->setObjectName(QStringLiteral("pl110ToolBar"));
+    tools->addActions({saveAction, undo, redo});
+    tools->addSeparator();
+    tools->addActions({m_start, m_stop, m_singleScan, m_reset});
+    updateSimulationActions();
+}
+
+void Pl110Window::showPage(Page page) {
+    m_pages->setCurrentIndex(static_cast<int>(page));
+}
+
+bool Pl110Window::showRung(int number) {
+    showPage(Page::Ladder);
+    return m_ladder->showRung(number);
+}
+
+void Pl110Window::applyTyping() {
+    if (!m_typing.isActive())
+        return;
+    m_typing.stop();
+    m_document->setText(m_editor->textBytes(), tr("Typing"), true);
+}
+
+void Pl110Window::followDocument() {
+    if (m_editor->textBytes() != m_document->text()) {
+        // Undo, redo or another page changed the text: show it where the user was.
+        int line = 0;
+        int index = 0;
+        m_editor->getCursorPosition(&line, &index);
+        const int firstShown = m_editor->firstVisibleLine();
+        m_settingEditor = true;
+        m_typing.stop();
+        m_editor->setTextBytes(m_document->text());
+        m_settingEditor = false;
+        m_editor->setCursorPosition(std::min(line, std::max(m_editor->lines() - 1, 0)), index);
+        m_editor->setFirstVisibleLine(firstShown);
+    }
+    const lang::Diagnostics& diagnostics = m_document->diagnostics();
+    m_editor->setDiagnostics(diagnostics);
+    m_problems->clear();
+    for (const lang::Diagnostic& d : diagnostics) {
+        auto* item = new QListWidgetItem(diagnosticText(d), m_problems);
+        item->setData(Qt::UserRole, d.line);
+        item->setData(Qt::UserRole + 1, d.column);
+        item->setIcon(namedIcon(d.severity == lang::Severity::Error ? "error" : "warning"));
+    }
+    m_ladder->setProgram(m_document->program());
+    const int errors = lang::errorCount(diagnostics);
+    statusBar()->showMessage(
+        errors == 0 ? tr("%n rung(s), no errors", nullptr, m_ladder->rungCount())
+                    : tr("%n error(s): the ladder shows the lines that read", nullptr, errors));
+    updateTitle();
+    updateSimulationActions();
+    refreshLive();
+}
+
+void Pl110Window::updateTitle() {
+    setWindowTitle(tr("%1[*] — PL110 — Rungsmith").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
+void Pl110Window::updateSimulationActions() {
+    const bool running = m_simulation->isRunning();
+    const bool runnable = m_document->isRunnable();
+    m_start->setEnabled(!running && runnable);
+    m_stop->setEnabled(running);
+    m_singleScan->setEnabled(runnable);
+    m_reset->setEnabled(runnable);
+}
+
+void Pl110Window::scheduleLiveRefresh() {
+    if (!m_liveRefresh.isActive())
+        m_liveRefresh.start();
+}
+
+void Pl110Window::refreshLive() {
+    const pl110::ScanEngine* engine = m_simulation->engine();
+    m_ladder->setPower(engine ? std::optional(render::snapshotOfMarks(engine->marks()))
+                              : std::nullopt);
+    m_names->showValues(engine);
+    if (!engine)
+        return;
+    const QString seconds =
+        QLocale().toString(static_cast<double>(engine->timeMs()) / 1000.0, 'f', 2);
+    statusBar()->showMessage(
+        m_simulation->isRunning()
+            ? tr("Simulating: %1 s, scan %2").arg(seconds).arg(engine->scans())
+            : tr("Stopped at %1 s, scan %2").arg(seconds).arg(engine->scans()));
+}
+
+void Pl110Window::simulationAnswer(const QString& error) {
+    if (!error.isEmpty()) {
+        statusBar()->showMessage(error, 8000);
+        m_problems->parentWidget()->raise();
+    }
+    updateSimulationActions();
+}
+
+void Pl110Window::operandClicked(const QString& address) {
+    const pl110::ScanEngine* engine = m_simulation->engine();
+    if (!engine) {
+        statusBar()->showMessage(tr("Start the simulation (F5) to switch inputs from the ladder."),
+                                 5000);
+        return;
+    }
+    const pl110::AddressReading reading = pl110::readAddress(address.toStdString());
+    if (reading.shape != pl110::AddressReading::Shape::Address || !isBitAddress(reading.address))
+        return;
+    // A click switches an input as its terminal would; any other bit is forced.
+    const std::int64_t value = engine->value(reading.address) ? 0 : 1;
+    m_simulation->set(reading.address, value);
+    statusBar()->showMessage(reading.address.area == pl110::Area::Input
+                                 ? tr("%1 set to %2").arg(address).arg(value)
+                                 : tr("%1 forced to %2").arg(address).arg(value),
+                             5000);
+}
+
+void Pl110Window::operandMenu(const QString& address, const QPoint& where) {
+    const pl110::AddressReading reading = pl110::readAddress(address.toStdString());
+    if (reading.shape != pl110::AddressReading::Shape::Address)
+        return;
+    const pl110::Address target = reading.address;
+    const bool input = target.area == pl110::Area::Input;
+    QMenu menu(this);
+    menu.addAction(input ? tr("Set %1 to 1").arg(address) : tr("Force %1 to 1").arg(address), this,
+                   [this, target] { m_simulation->set(target, 1); });
+    menu.addAction(input ? tr("Set %1 to 0").arg(address) : tr("Force %1 to 0").arg(address), this,
+                   [this, target] { m_simulation->set(target, 0); });
+    QAction* release =
+        menu.addAction(input ? tr("Let go of %1").arg(address) : tr("Release %1").arg(address),
+                       this, [this, target] { m_simulation->release(target); });
+    release->setEnabled(m_simulation->isForced(target));
+    menu.addSeparator();
+    menu.addAction(tr("Show in Program Text"), this, [this, address] {
+        showPage(Page::Program);
+        m_editor->findFirst(address, false, false, true, false, true, 0, 0);
+    });
+    menu.exec(where);
+}
+
+void Pl110Window::goToLine(int line, int column) {
+    showPage(Page::Program);
+    m_editor->goTo(line, column);
+    m_editor->setFocus();
+}
+
+bool Pl110Window::save() {
+    applyTyping();
+    if (m_document->path().isEmpty())
+        return saveAs();
+    if (const QString error = m_document->save(); !error.isEmpty()) {
+        QMessageBox::warning(this, tr("Save"), error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->path())),
+                             5000);
+    return true;
+}
+
+bool Pl110Window::saveAs() {
+    applyTyping();
+    const QString suggested = m_document->path().isEmpty()
+                                  ? m_document->displayName() + QStringLiteral(".sps")
+                                  : m_document->path();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save PL110 Program As"), suggested,
+                                                      tr("PL110 programs (*.sps)"));
+    if (path.isEmpty())
+        return false;
+    if (const QString error = m_document->saveAs(path); !error.isEmpty()) {
+        QMessageBox::warning(this, tr("Save As"), error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return true;
+}
+
+bool Pl110Window::maySaveOrDiscard() {
+    applyTyping();
+    if (!m_document->isModified())
+        return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Close"), tr("Save the changes to %1?").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void Pl110Window::closeEvent(QCloseEvent* event) {
+    if (maySaveOrDiscard()) {
+        m_simulation->stop();
+        event->accept();
+    } else {
+        event->ignore();
+    }
+}
+
+void Pl110Window::openOther() {
+    const QString directory = QFileInfo(m_document->path()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open PL110 Program"), directory,
+                                                      tr("PL110 programs (*.sps);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (const QString error = openWindow(path); !error.isEmpty()) {
+        QMessageBox box(QMessageBox::Warning, tr("Open"),
+                        tr("Could not open “%1”.").arg(QDir::toNativeSeparators(path)),
+                        QMessageBox::Ok, this);
+        box.setInformativeText(error);
+        box.exec();
+    }
+}
+
+void Pl110Window::chooseScenario() {
+    const QString directory = QFileInfo(m_document->path()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Run Scenario"), directory,
+                                                      tr("Scenarios (*.scn);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (const QString error = runScenario(path); !error.isEmpty())
+        QMessageBox::warning(this, tr("Run Scenario"), error);
+}
+
+QString Pl110Window::runScenario(const QString& path) {
+    applyTyping();
+    const Pl110Simulation::ScenarioRun run = m_simulation->runScenario(path);
+    if (!run.error.isEmpty())
+        return run.error;
+    QStringList lines;
+    for (const std::string& line : run.report.diagnostics)
+        lines << QString::fromStdString(line);
+    for (const std::string& line : run.report.failures)
+        lines << QString::fromStdString(line);
+    lines << (run.report.diagnostics.empty()
+                  ? tr("%1: %2 passed, %3 failed")
+                        .arg(QFileInfo(path).fileName())
+                        .arg(run.report.passed)
+                        .arg(run.report.failed)
+                  : tr("%1 did not run: it has errors").arg(QFileInfo(path).fileName()));
+    m_scenarioOutput->setPlainText(lines.join(u'\n'));
+    m_scenarioOutput->parentWidget()->raise();
+    refreshLive();
+    updateSimulationActions();
+    return {};
+}
+
+} // namespace rs::ui
