@@ -235,6 +235,18 @@
         <source>%1 does not read, so it has no properties page</source>
         <translation>%1 lässt sich nicht lesen und hat deshalb keine Eigenschaftsseite</translation>
     </message>
+    <message>
+        <source>%1 is a PL110 program: its pages are ladder:N (from rung N), text:N and variables:N</source>
+        <translation>%1 ist ein PL110-Programm: seine Seiten sind ladder:N (ab Netzwerk N), text:N und variables:N</translation>
+    </message>
+    <message>
+        <source>%1 has no rung %2</source>
+        <translation>%1 hat kein Netzwerk %2</translation>
+    </message>
+    <message>
+        <source>%1 is a PL110 program; proofs are for Pluto projects</source>
+        <translation>%1 ist ein PL110-Programm; Beweise gibt es für Pluto-Projekte</translation>
+    </message>
 </context>
 <context>
     <name>ElementKinds</name>
@@ -743,6 +755,61 @@
     <message>
         <source>step %1</source>
         <translation>Schritt %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::pl110::Area</name>
+    <message>
+        <source>Digital inputs: I1-I8 on the terminals, the rest from expansion modules</source>
+        <translation>Digitaleingänge: I1–I8 an den Klemmen, die übrigen von Erweiterungsmodulen</translation>
+    </message>
+    <message>
+        <source>Digital outputs: Q1-Q8 are the relays, the rest go to expansion modules</source>
+        <translation>Digitalausgänge: Q1–Q8 sind die Relais, die übrigen gehen an Erweiterungsmodule</translation>
+    </message>
+    <message>
+        <source>Markers</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>Bistable relays: each energisation of the coil changes the contact</source>
+        <translation>Bistabile Relais: jede Ansteuerung der Spule schaltet den Kontakt um</translation>
+    </message>
+    <message>
+        <source>Timers: the contact and the value in units of the time base</source>
+        <translation>Zeitglieder: der Kontakt und der Wert in Einheiten der Zeitbasis</translation>
+    </message>
+    <message>
+        <source>Counters: the contact and the value</source>
+        <translation>Zähler: der Kontakt und der Wert</translation>
+    </message>
+    <message>
+        <source>Variables, kept by the battery</source>
+        <translation>Variablen, von der Batterie gehalten</translation>
+    </message>
+    <message>
+        <source>Special markers: status, clocks, scan times and settings</source>
+        <translation>Sondermerker: Status, Takte, Zykluszeiten und Einstellungen</translation>
+    </message>
+    <message>
+        <source>Analogue inputs, scaled by RANGE</source>
+        <translation>Analogeingänge, skaliert durch RANGE</translation>
+    </message>
+    <message>
+        <source>Analogue output, 0-10 V</source>
+        <translation>Analogausgang, 0–10 V</translation>
+    </message>
+    <message>
+        <source>Timer presets</source>
+        <translation>Vorgabewerte der Zeitglieder</translation>
+    </message>
+    <message>
+        <source>Counter presets</source>
+        <translation>Vorgabewerte der Zähler</translation>
+    </message>
+    <message>
+        <source>EEPROM words, kept without power</source>
+        <translation>EEPROM-Wörter, ohne Versorgung gehalten</translation>
     </message>
 </context>
 <context>
@@ -2747,6 +2814,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Project &amp;description:</source>
         <translation>Projekt&amp;beschreibung:</translation>
     </message>
+    <message>
+        <source>Pluto safety PLCs (1 to 32 units on one bus)</source>
+        <translation>Pluto-Sicherheitssteuerungen (1 bis 32 Einheiten an einem Bus)</translation>
+    </message>
+    <message>
+        <source>Pixsys PL110 (one ladder PLC)</source>
+        <translation>Pixsys PL110 (eine SPS mit Kontaktplan)</translation>
+    </message>
+    <message>
+        <source>&amp;Target:</source>
+        <translation>&amp;Ziel:</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewUnitDialog</name>
@@ -2941,6 +3020,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>&amp;Accept the Change...</source>
         <translation>Änderung &amp;annehmen …</translation>
     </message>
+    <message>
+        <source>Opened %1 in a PL110 window</source>
+        <translation>%1 in einem PL110-Fenster geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PasswordProtectDialog</name>
@@ -3018,6 +3101,468 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation>Passwortgeschützt, mit Berechtigung zum Konfigurieren geöffnet: Nur Konfigurationsoptionen können sich ändern, im Kontaktplan.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Document</name>
+    <message>
+        <source>It is not a PL110 program: its first line is not “$target PL110”.</source>
+        <translation>Es ist kein PL110-Programm: seine erste Zeile ist nicht „$target PL110“.</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>The program has no file yet: use Save As.</source>
+        <translation>Das Programm hat noch keine Datei: „Speichern unter“ verwenden.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110LadderView</name>
+    <message>
+        <source>INIT — runs once, before the first scan</source>
+        <translation>INIT — läuft einmal, vor dem ersten Zyklus</translation>
+    </message>
+    <message>
+        <source>MAIN — runs every scan</source>
+        <translation>MAIN — läuft in jedem Zyklus</translation>
+    </message>
+    <message>
+        <source>Rung %1</source>
+        <translation>Netzwerk %1</translation>
+    </message>
+    <message>
+        <source>The program has no rungs yet: write them on the Program page.</source>
+        <translation>Das Programm hat noch keine Netzwerke: schreiben Sie sie auf der Seite „Programm“.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110NamesPage</name>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation>CSV &amp;importieren …</translation>
+    </message>
+    <message>
+        <source>Name addresses from a CSV file: Variable, Symbolic Name, Description</source>
+        <translation>Adressen aus einer CSV-Datei benennen: Variable, symbolischer Name, Beschreibung</translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation>CSV e&amp;xportieren …</translation>
+    </message>
+    <message>
+        <source>Write the names and descriptions to a CSV file</source>
+        <translation>Namen und Beschreibungen in eine CSV-Datei schreiben</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Addresses</source>
+        <translation>Adressen</translation>
+    </message>
+    <message>
+        <source>Program writes</source>
+        <translation>Programm schreibt</translation>
+    </message>
+    <message>
+        <source>Modbus (word / bit)</source>
+        <translation>Modbus (Wort / Bit)</translation>
+    </message>
+    <message>
+        <source>What it holds</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <source>Names: double-click a cell to change it; the last row names another address.</source>
+        <translation>Namen: Doppelklick auf eine Zelle ändert sie; die letzte Zeile benennt eine weitere Adresse.</translation>
+    </message>
+    <message>
+        <source>Memory areas of the PL110 (datasheet, section 2)</source>
+        <translation>Speicherbereiche der PL110 (Datenblatt, Abschnitt 2)</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source> (read only)</source>
+        <translation> (nur lesen)</translation>
+    </message>
+    <message>
+        <source>Type an address such as I6, Q4, M10 or VW20</source>
+        <translation>Eine Adresse eingeben, etwa I6, Q4, M10 oder VW20</translation>
+    </message>
+    <message>
+        <source>%1 rewrites the program text; fix its errors on the Program page first, so that no line is lost.</source>
+        <translation>%1 schreibt den Programmtext neu; beheben Sie zuerst seine Fehler auf der Seite „Programm“, damit keine Zeile verloren geht.</translation>
+    </message>
+    <message>
+        <source>Naming</source>
+        <translation>Das Benennen</translation>
+    </message>
+    <message>
+        <source>“%1” is not a PL110 address</source>
+        <translation>„%1“ ist keine PL110-Adresse</translation>
+    </message>
+    <message>
+        <source>Name %1</source>
+        <translation>%1 benennen</translation>
+    </message>
+    <message>
+        <source>Import Names</source>
+        <translation>Namen importieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Importing names</source>
+        <translation>Das Importieren von Namen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Nothing was imported: %n row(s) could not be read.
+%1</source>
+        <translation>
+            <numerusform>Nichts wurde importiert: %n Zeile konnte nicht gelesen werden.
+%1</numerusform>
+            <numerusform>Nichts wurde importiert: %n Zeilen konnten nicht gelesen werden.
+%1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n name(s) from %1</source>
+        <translation>
+            <numerusform>%n Name aus %1 importiert</numerusform>
+            <numerusform>%n Namen aus %1 importiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CSV, comma-separated (*.csv)</source>
+        <translation>CSV, durch Kommas getrennt (*.csv)</translation>
+    </message>
+    <message>
+        <source>CSV, semicolon-separated, as spreadsheets in Swedish and German expect (*.csv)</source>
+        <translation>CSV, durch Semikolons getrennt, wie deutsche und schwedische Tabellenkalkulationen es erwarten (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export Names</source>
+        <translation>Namen exportieren</translation>
+    </message>
+    <message>
+        <source>Exported the names to %1</source>
+        <translation>Namen nach %1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Simulation</name>
+    <message>
+        <source>The program changed: the simulation stopped. Start it again to run the new program.</source>
+        <translation>Das Programm hat sich geändert: die Simulation wurde angehalten. Starten Sie sie erneut, um das neue Programm auszuführen.</translation>
+    </message>
+    <message>
+        <source>The program has errors; fix them to simulate it.</source>
+        <translation>Das Programm hat Fehler; beheben Sie sie, um es zu simulieren.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Window</name>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>&amp;Ladder</source>
+        <translation>&amp;Kontaktplan</translation>
+    </message>
+    <message>
+        <source>&amp;Program</source>
+        <translation>&amp;Programm</translation>
+    </message>
+    <message>
+        <source>&amp;Names and Areas</source>
+        <translation>&amp;Namen und Bereiche</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Probleme</translation>
+    </message>
+    <message>
+        <source>Scenario Results</source>
+        <translation>Szenarioergebnisse</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;New PL110 Program</source>
+        <translation>&amp;Neues PL110-Programm</translation>
+    </message>
+    <message>
+        <source>New program</source>
+        <translation>Neues Programm</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>S&amp;chließen</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Format Text</source>
+        <translation>Text &amp;formatieren</translation>
+    </message>
+    <message>
+        <source>Write the program as the printer writes it: one space around operators, names as declared</source>
+        <translation>Das Programm so schreiben, wie der Drucker es schreibt: ein Leerzeichen um Operatoren, Namen wie deklariert</translation>
+    </message>
+    <message>
+        <source>Fix the errors first: formatting would drop the lines that do not read.</source>
+        <translation>Beheben Sie zuerst die Fehler: das Formatieren ließe die unlesbaren Zeilen weg.</translation>
+    </message>
+    <message>
+        <source>Format Text</source>
+        <translation>Text formatieren</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text</source>
+        <translation>&amp;Programmtext</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock; click an input&apos;s contact to switch it</source>
+        <translation>Das Programm auf der simulierten Uhr ausführen; ein Klick auf den Kontakt eines Eingangs schaltet ihn</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Anhalten</translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation>Programm und Uhr anhalten; der Zustand bleibt sichtbar</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Einzelzyklus</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; inputs set and forces stay</source>
+        <translation>Erneut einschalten bei Zeit 0; gesetzte Eingänge und Forcierungen bleiben</translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation>Sze&amp;nario ausführen …</translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) from power on and list its results</source>
+        <translation>Eine Szenariodatei (.scn) ab dem Einschalten ausführen und ihre Ergebnisse auflisten</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>Typing</source>
+        <translation>Tippen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n rung(s), no errors</source>
+        <translation>
+            <numerusform>%n Netzwerk, keine Fehler</numerusform>
+            <numerusform>%n Netzwerke, keine Fehler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s): the ladder shows the lines that read</source>
+        <translation>
+            <numerusform>%n Fehler: der Kontaktplan zeigt die lesbaren Zeilen</numerusform>
+            <numerusform>%n Fehler: der Kontaktplan zeigt die lesbaren Zeilen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] — PL110 — Rungsmith</source>
+        <translation>%1[*] — PL110 — Rungsmith</translation>
+    </message>
+    <message>
+        <source>Simulating: %1 s, scan %2</source>
+        <translation>Simulation läuft: %1 s, Zyklus %2</translation>
+    </message>
+    <message>
+        <source>Stopped at %1 s, scan %2</source>
+        <translation>Angehalten bei %1 s, Zyklus %2</translation>
+    </message>
+    <message>
+        <source>Start the simulation (F5) to switch inputs from the ladder.</source>
+        <translation>Starten Sie die Simulation (F5), um Eingänge im Kontaktplan zu schalten.</translation>
+    </message>
+    <message>
+        <source>%1 set to %2</source>
+        <translation>%1 auf %2 gesetzt</translation>
+    </message>
+    <message>
+        <source>%1 forced to %2</source>
+        <translation>%1 auf %2 forciert</translation>
+    </message>
+    <message>
+        <source>Set %1 to 1</source>
+        <translation>%1 auf 1 setzen</translation>
+    </message>
+    <message>
+        <source>Force %1 to 1</source>
+        <translation>%1 auf 1 forcieren</translation>
+    </message>
+    <message>
+        <source>Set %1 to 0</source>
+        <translation>%1 auf 0 setzen</translation>
+    </message>
+    <message>
+        <source>Force %1 to 0</source>
+        <translation>%1 auf 0 forcieren</translation>
+    </message>
+    <message>
+        <source>Let go of %1</source>
+        <translation>%1 loslassen</translation>
+    </message>
+    <message>
+        <source>Release %1</source>
+        <translation>Forcierung von %1 aufheben</translation>
+    </message>
+    <message>
+        <source>Show in Program Text</source>
+        <translation>Im Programmtext zeigen</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save PL110 Program As</source>
+        <translation>PL110-Programm speichern unter</translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps)</source>
+        <translation>PL110-Programme (*.sps)</translation>
+    </message>
+    <message>
+        <source>Save As</source>
+        <translation>Speichern unter</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Save the changes to %1?</source>
+        <translation>Die Änderungen an %1 speichern?</translation>
+    </message>
+    <message>
+        <source>Open PL110 Program</source>
+        <translation>PL110-Programm öffnen</translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps);;All files (*)</source>
+        <translation>PL110-Programme (*.sps);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation>„%1“ konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation>Szenario ausführen</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation>Szenarien (*.scn);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation>%1: %2 bestanden, %3 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>%1 did not run: it has errors</source>
+        <translation>%1 lief nicht: es hat Fehler</translation>
     </message>
 </context>
 <context>
@@ -3267,8 +3812,8 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Das Projekt ist mit Berechtigung zum Konfigurieren geöffnet: Nur seine Konfigurationsoptionen können sich ändern.</translation>
     </message>
     <message>
-        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
-        <translation>Es ist ein Programm für die Pixsys PL110. Das Fenster bearbeitet Pluto-Projekte; PL110-Programme werden mit rungsmith-cli geprüft, getestet, gezeichnet und bereitgestellt (docs/pl110.md).</translation>
+        <source>It is a program for the Pixsys PL110, not a Pluto project: File &gt; Open opens it in a PL110 window.</source>
+        <translation>Es ist ein Programm für die Pixsys PL110, kein Pluto-Projekt: Datei &gt; Öffnen öffnet es in einem PL110-Fenster.</translation>
     </message>
 </context>
 <context>

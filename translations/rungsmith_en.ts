@@ -235,6 +235,18 @@
         <source>%1 does not read, so it has no properties page</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 is a PL110 program: its pages are ladder:N (from rung N), text:N and variables:N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no rung %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a PL110 program; proofs are for Pluto projects</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ElementKinds</name>
@@ -742,6 +754,61 @@
     <name>rs::ladder::Layout</name>
     <message>
         <source>step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::pl110::Area</name>
+    <message>
+        <source>Digital inputs: I1-I8 on the terminals, the rest from expansion modules</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Digital outputs: Q1-Q8 are the relays, the rest go to expansion modules</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Markers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bistable relays: each energisation of the coil changes the contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timers: the contact and the value in units of the time base</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Counters: the contact and the value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variables, kept by the battery</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Special markers: status, clocks, scan times and settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue inputs, scaled by RANGE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output, 0-10 V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timer presets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Counter presets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM words, kept without power</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2746,6 +2813,18 @@ Its text page (F6) shows and edits it.</source>
         <source>Project &amp;description:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Pluto safety PLCs (1 to 32 units on one bus)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pixsys PL110 (one ladder PLC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Target:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewUnitDialog</name>
@@ -2940,6 +3019,10 @@ Its text page (F6) shows and edits it.</source>
         <source>&amp;Accept the Change...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Opened %1 in a PL110 window</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PasswordProtectDialog</name>
@@ -3016,6 +3099,466 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Document</name>
+    <message>
+        <source>It is not a PL110 program: its first line is not “$target PL110”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program has no file yet: use Save As.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110LadderView</name>
+    <message>
+        <source>INIT — runs once, before the first scan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MAIN — runs every scan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rung %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program has no rungs yet: write them on the Program page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110NamesPage</name>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name addresses from a CSV file: Variable, Symbolic Name, Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the names and descriptions to a CSV file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Addresses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program writes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus (word / bit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What it holds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Names: double-click a cell to change it; the last row names another address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memory areas of the PL110 (datasheet, section 2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (read only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type an address such as I6, Q4, M10 or VW20</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 rewrites the program text; fix its errors on the Program page first, so that no line is lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Naming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is not a PL110 address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Importing names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Nothing was imported: %n row(s) could not be read.
+%1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n name(s) from %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CSV, comma-separated (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV, semicolon-separated, as spreadsheets in Swedish and German expect (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported the names to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Simulation</name>
+    <message>
+        <source>The program changed: the simulation stopped. Start it again to run the new program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program has errors; fix them to simulate it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Window</name>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Ladder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Names and Areas</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenario Results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New PL110 Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Format Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the program as the printer writes it: one space around operators, names as declared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fix the errors first: formatting would drop the lines that do not read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Format Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Program Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock; click an input&apos;s contact to switch it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; inputs set and forces stay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) from power on and list its results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n rung(s), no errors</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s): the ladder shows the lines that read</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] — PL110 — Rungsmith</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulating: %1 s, scan %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped at %1 s, scan %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start the simulation (F5) to switch inputs from the ladder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 set to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 forced to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 to 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 to 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Let go of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Release %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show in Program Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save PL110 Program As</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save As</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the changes to %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open PL110 Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 did not run: it has errors</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3266,7 +3809,7 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
+        <source>It is a program for the Pixsys PL110, not a Pluto project: File &gt; Open opens it in a PL110 window.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -235,6 +235,18 @@
         <source>%1 does not read, so it has no properties page</source>
         <translation>%1 går inte att läsa och har därför ingen egenskapssida</translation>
     </message>
+    <message>
+        <source>%1 is a PL110 program: its pages are ladder:N (from rung N), text:N and variables:N</source>
+        <translation>%1 är ett PL110-program: dess sidor är ladder:N (från steg N), text:N och variables:N</translation>
+    </message>
+    <message>
+        <source>%1 has no rung %2</source>
+        <translation>%1 har inget steg %2</translation>
+    </message>
+    <message>
+        <source>%1 is a PL110 program; proofs are for Pluto projects</source>
+        <translation>%1 är ett PL110-program; bevis görs för Pluto-projekt</translation>
+    </message>
 </context>
 <context>
     <name>ElementKinds</name>
@@ -743,6 +755,61 @@
     <message>
         <source>step %1</source>
         <translation>steg %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::pl110::Area</name>
+    <message>
+        <source>Digital inputs: I1-I8 on the terminals, the rest from expansion modules</source>
+        <translation>Digitala ingångar: I1–I8 på plintarna, resten från expansionsmoduler</translation>
+    </message>
+    <message>
+        <source>Digital outputs: Q1-Q8 are the relays, the rest go to expansion modules</source>
+        <translation>Digitala utgångar: Q1–Q8 är reläerna, resten går till expansionsmoduler</translation>
+    </message>
+    <message>
+        <source>Markers</source>
+        <translation>Minnesceller</translation>
+    </message>
+    <message>
+        <source>Bistable relays: each energisation of the coil changes the contact</source>
+        <translation>Bistabila reläer: varje aktivering av spolen växlar kontakten</translation>
+    </message>
+    <message>
+        <source>Timers: the contact and the value in units of the time base</source>
+        <translation>Timrar: kontakten och värdet i tidbasens enheter</translation>
+    </message>
+    <message>
+        <source>Counters: the contact and the value</source>
+        <translation>Räknare: kontakten och värdet</translation>
+    </message>
+    <message>
+        <source>Variables, kept by the battery</source>
+        <translation>Variabler, bevarade av batteriet</translation>
+    </message>
+    <message>
+        <source>Special markers: status, clocks, scan times and settings</source>
+        <translation>Specialminnen: status, klockor, cykeltider och inställningar</translation>
+    </message>
+    <message>
+        <source>Analogue inputs, scaled by RANGE</source>
+        <translation>Analoga ingångar, skalade av RANGE</translation>
+    </message>
+    <message>
+        <source>Analogue output, 0-10 V</source>
+        <translation>Analog utgång, 0–10 V</translation>
+    </message>
+    <message>
+        <source>Timer presets</source>
+        <translation>Förval för timrar</translation>
+    </message>
+    <message>
+        <source>Counter presets</source>
+        <translation>Förval för räknare</translation>
+    </message>
+    <message>
+        <source>EEPROM words, kept without power</source>
+        <translation>EEPROM-ord, bevarade utan matning</translation>
     </message>
 </context>
 <context>
@@ -2747,6 +2814,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Project &amp;description:</source>
         <translation>Projekt&amp;beskrivning:</translation>
     </message>
+    <message>
+        <source>Pluto safety PLCs (1 to 32 units on one bus)</source>
+        <translation>Pluto säkerhets-PLC (1 till 32 enheter på en buss)</translation>
+    </message>
+    <message>
+        <source>Pixsys PL110 (one ladder PLC)</source>
+        <translation>Pixsys PL110 (en PLC med stegdiagram)</translation>
+    </message>
+    <message>
+        <source>&amp;Target:</source>
+        <translation>&amp;Mål:</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::NewUnitDialog</name>
@@ -2941,6 +3020,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>&amp;Accept the Change...</source>
         <translation>&amp;Godta ändringen …</translation>
     </message>
+    <message>
+        <source>Opened %1 in a PL110 window</source>
+        <translation>Öppnade %1 i ett PL110-fönster</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PasswordProtectDialog</name>
@@ -3018,6 +3101,468 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>Password protected, open with permission to configure: only Config Options can change, on the ladder.</source>
         <translation>Lösenordsskyddat, öppnat med behörighet att konfigurera: bara konfigurationsalternativ kan ändras, i stegdiagrammet.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Document</name>
+    <message>
+        <source>It is not a PL110 program: its first line is not “$target PL110”.</source>
+        <translation>Det är inget PL110-program: dess första rad är inte ”$target PL110”.</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Namnlöst</translation>
+    </message>
+    <message>
+        <source>The program has no file yet: use Save As.</source>
+        <translation>Programmet har ingen fil än: använd Spara som.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110LadderView</name>
+    <message>
+        <source>INIT — runs once, before the first scan</source>
+        <translation>INIT — körs en gång, före första cykeln</translation>
+    </message>
+    <message>
+        <source>MAIN — runs every scan</source>
+        <translation>MAIN — körs varje cykel</translation>
+    </message>
+    <message>
+        <source>Rung %1</source>
+        <translation>Steg %1</translation>
+    </message>
+    <message>
+        <source>The program has no rungs yet: write them on the Program page.</source>
+        <translation>Programmet har inga steg än: skriv dem på sidan Program.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110NamesPage</name>
+    <message>
+        <source>&amp;Import CSV...</source>
+        <translation>&amp;Importera CSV …</translation>
+    </message>
+    <message>
+        <source>Name addresses from a CSV file: Variable, Symbolic Name, Description</source>
+        <translation>Namnge adresser från en CSV-fil: variabel, symboliskt namn, beskrivning</translation>
+    </message>
+    <message>
+        <source>E&amp;xport CSV...</source>
+        <translation>E&amp;xportera CSV …</translation>
+    </message>
+    <message>
+        <source>Write the names and descriptions to a CSV file</source>
+        <translation>Skriv namnen och beskrivningarna till en CSV-fil</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adress</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Namn</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beskrivning</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Värde</translation>
+    </message>
+    <message>
+        <source>Addresses</source>
+        <translation>Adresser</translation>
+    </message>
+    <message>
+        <source>Program writes</source>
+        <translation>Programmet skriver</translation>
+    </message>
+    <message>
+        <source>Modbus (word / bit)</source>
+        <translation>Modbus (ord / bit)</translation>
+    </message>
+    <message>
+        <source>What it holds</source>
+        <translation>Innehåll</translation>
+    </message>
+    <message>
+        <source>Names: double-click a cell to change it; the last row names another address.</source>
+        <translation>Namn: dubbelklicka på en cell för att ändra den; sista raden namnger ytterligare en adress.</translation>
+    </message>
+    <message>
+        <source>Memory areas of the PL110 (datasheet, section 2)</source>
+        <translation>PL110:s minnesområden (datablad, avsnitt 2)</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nej</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source> (read only)</source>
+        <translation> (endast läsning)</translation>
+    </message>
+    <message>
+        <source>Type an address such as I6, Q4, M10 or VW20</source>
+        <translation>Skriv en adress, till exempel I6, Q4, M10 eller VW20</translation>
+    </message>
+    <message>
+        <source>%1 rewrites the program text; fix its errors on the Program page first, so that no line is lost.</source>
+        <translation>%1 skriver om programtexten; rätta först dess fel på sidan Program, så att ingen rad går förlorad.</translation>
+    </message>
+    <message>
+        <source>Naming</source>
+        <translation>Namngivning</translation>
+    </message>
+    <message>
+        <source>“%1” is not a PL110 address</source>
+        <translation>”%1” är ingen PL110-adress</translation>
+    </message>
+    <message>
+        <source>Name %1</source>
+        <translation>Namnge %1</translation>
+    </message>
+    <message>
+        <source>Import Names</source>
+        <translation>Importera namn</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-filer (*.csv *.txt);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>Importing names</source>
+        <translation>Import av namn</translation>
+    </message>
+    <message numerus="yes">
+        <source>Nothing was imported: %n row(s) could not be read.
+%1</source>
+        <translation>
+            <numerusform>Inget importerades: %n rad kunde inte läsas.
+%1</numerusform>
+            <numerusform>Inget importerades: %n rader kunde inte läsas.
+%1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n name(s) from %1</source>
+        <translation>
+            <numerusform>Importerade %n namn från %1</numerusform>
+            <numerusform>Importerade %n namn från %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CSV, comma-separated (*.csv)</source>
+        <translation>CSV, kommaseparerad (*.csv)</translation>
+    </message>
+    <message>
+        <source>CSV, semicolon-separated, as spreadsheets in Swedish and German expect (*.csv)</source>
+        <translation>CSV, semikolonseparerad, som kalkylprogram på svenska och tyska väntar sig (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export Names</source>
+        <translation>Exportera namn</translation>
+    </message>
+    <message>
+        <source>Exported the names to %1</source>
+        <translation>Exporterade namnen till %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Simulation</name>
+    <message>
+        <source>The program changed: the simulation stopped. Start it again to run the new program.</source>
+        <translation>Programmet ändrades: simuleringen stoppades. Starta den igen för att köra det nya programmet.</translation>
+    </message>
+    <message>
+        <source>The program has errors; fix them to simulate it.</source>
+        <translation>Programmet har fel; rätta dem för att simulera det.</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::Pl110Window</name>
+    <message>
+        <source>error</source>
+        <translation>fel</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>varning</translation>
+    </message>
+    <message>
+        <source>&amp;Ladder</source>
+        <translation>Steg&amp;diagram</translation>
+    </message>
+    <message>
+        <source>&amp;Program</source>
+        <translation>&amp;Program</translation>
+    </message>
+    <message>
+        <source>&amp;Names and Areas</source>
+        <translation>&amp;Namn och områden</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Problem</translation>
+    </message>
+    <message>
+        <source>Scenario Results</source>
+        <translation>Scenarioresultat</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arkiv</translation>
+    </message>
+    <message>
+        <source>&amp;New PL110 Program</source>
+        <translation>&amp;Nytt PL110-program</translation>
+    </message>
+    <message>
+        <source>New program</source>
+        <translation>Nytt program</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ppna …</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Spara</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Spara s&amp;om …</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>S&amp;täng</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Redigera</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Ångra</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Gör om</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Ångra %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Gör om %1</translation>
+    </message>
+    <message>
+        <source>&amp;Format Text</source>
+        <translation>&amp;Formatera text</translation>
+    </message>
+    <message>
+        <source>Write the program as the printer writes it: one space around operators, names as declared</source>
+        <translation>Skriv programmet som skrivaren skriver det: ett mellanslag kring operatorer, namn som de deklarerats</translation>
+    </message>
+    <message>
+        <source>Fix the errors first: formatting would drop the lines that do not read.</source>
+        <translation>Rätta felen först: formateringen skulle ta bort raderna som inte kan läsas.</translation>
+    </message>
+    <message>
+        <source>Format Text</source>
+        <translation>Formatera text</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Visa</translation>
+    </message>
+    <message>
+        <source>&amp;Program Text</source>
+        <translation>&amp;Programtext</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulering</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starta</translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated clock; click an input&apos;s contact to switch it</source>
+        <translation>Kör programmet på den simulerade klockan; klicka på en ingångs kontakt för att slå om den</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>S&amp;toppa</translation>
+    </message>
+    <message>
+        <source>Hold the program and the clock; the state stays shown</source>
+        <translation>Stoppa programmet och klockan; tillståndet visas kvar</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>En &amp;cykel</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>Starta &amp;om</translation>
+    </message>
+    <message>
+        <source>Power on again at time 0; inputs set and forces stay</source>
+        <translation>Slå på igen vid tid 0; satta ingångar och tvångsstyrningar finns kvar</translation>
+    </message>
+    <message>
+        <source>Run Sce&amp;nario...</source>
+        <translation>Kör sce&amp;nario …</translation>
+    </message>
+    <message>
+        <source>Run a scenario file (.scn) from power on and list its results</source>
+        <translation>Kör en scenariofil (.scn) från tillslag och lista dess resultat</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulering</translation>
+    </message>
+    <message>
+        <source>Typing</source>
+        <translation>Skrivning</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n rung(s), no errors</source>
+        <translation>
+            <numerusform>%n steg, inga fel</numerusform>
+            <numerusform>%n steg, inga fel</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s): the ladder shows the lines that read</source>
+        <translation>
+            <numerusform>%n fel: stegdiagrammet visar raderna som kan läsas</numerusform>
+            <numerusform>%n fel: stegdiagrammet visar raderna som kan läsas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] — PL110 — Rungsmith</source>
+        <translation>%1[*] — PL110 — Rungsmith</translation>
+    </message>
+    <message>
+        <source>Simulating: %1 s, scan %2</source>
+        <translation>Simulerar: %1 s, cykel %2</translation>
+    </message>
+    <message>
+        <source>Stopped at %1 s, scan %2</source>
+        <translation>Stoppad vid %1 s, cykel %2</translation>
+    </message>
+    <message>
+        <source>Start the simulation (F5) to switch inputs from the ladder.</source>
+        <translation>Starta simuleringen (F5) för att slå om ingångar i stegdiagrammet.</translation>
+    </message>
+    <message>
+        <source>%1 set to %2</source>
+        <translation>%1 satt till %2</translation>
+    </message>
+    <message>
+        <source>%1 forced to %2</source>
+        <translation>%1 tvångsstyrd till %2</translation>
+    </message>
+    <message>
+        <source>Set %1 to 1</source>
+        <translation>Sätt %1 till 1</translation>
+    </message>
+    <message>
+        <source>Force %1 to 1</source>
+        <translation>Tvångsstyr %1 till 1</translation>
+    </message>
+    <message>
+        <source>Set %1 to 0</source>
+        <translation>Sätt %1 till 0</translation>
+    </message>
+    <message>
+        <source>Force %1 to 0</source>
+        <translation>Tvångsstyr %1 till 0</translation>
+    </message>
+    <message>
+        <source>Let go of %1</source>
+        <translation>Släpp %1</translation>
+    </message>
+    <message>
+        <source>Release %1</source>
+        <translation>Häv tvångsstyrning av %1</translation>
+    </message>
+    <message>
+        <source>Show in Program Text</source>
+        <translation>Visa i programtexten</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Spara</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Sparade %1</translation>
+    </message>
+    <message>
+        <source>Save PL110 Program As</source>
+        <translation>Spara PL110-program som</translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps)</source>
+        <translation>PL110-program (*.sps)</translation>
+    </message>
+    <message>
+        <source>Save As</source>
+        <translation>Spara som</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Stäng</translation>
+    </message>
+    <message>
+        <source>Save the changes to %1?</source>
+        <translation>Spara ändringarna i %1?</translation>
+    </message>
+    <message>
+        <source>Open PL110 Program</source>
+        <translation>Öppna PL110-program</translation>
+    </message>
+    <message>
+        <source>PL110 programs (*.sps);;All files (*)</source>
+        <translation>PL110-program (*.sps);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öppna</translation>
+    </message>
+    <message>
+        <source>Could not open “%1”.</source>
+        <translation>Kunde inte öppna ”%1”.</translation>
+    </message>
+    <message>
+        <source>Run Scenario</source>
+        <translation>Kör scenario</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scn);;All files (*)</source>
+        <translation>Scenarier (*.scn);;Alla filer (*)</translation>
+    </message>
+    <message>
+        <source>%1: %2 passed, %3 failed</source>
+        <translation>%1: %2 godkända, %3 underkända</translation>
+    </message>
+    <message>
+        <source>%1 did not run: it has errors</source>
+        <translation>%1 kördes inte: det har fel</translation>
     </message>
 </context>
 <context>
@@ -3267,8 +3812,8 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Projektet är öppnat med behörighet att konfigurera: bara dess konfigurationsalternativ kan ändras.</translation>
     </message>
     <message>
-        <source>It is a program for the Pixsys PL110. The window edits Pluto projects; check, test, draw and serve PL110 programs with rungsmith-cli (docs/pl110.md).</source>
-        <translation>Det är ett program för Pixsys PL110. Fönstret redigerar Pluto-projekt; kontrollera, testa, rita och servera PL110-program med rungsmith-cli (docs/pl110.md).</translation>
+        <source>It is a program for the Pixsys PL110, not a Pluto project: File &gt; Open opens it in a PL110 window.</source>
+        <translation>Det är ett program för Pixsys PL110, inte ett Pluto-projekt: Arkiv &gt; Öppna öppnar det i ett PL110-fönster.</translation>
     </message>
 </context>
 <context>
