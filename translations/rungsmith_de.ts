@@ -3276,6 +3276,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>Exported the names to %1</source>
         <translation>Namen nach %1 exportiert</translation>
     </message>
+    <message>
+        <source>Type a value to set the input or force the variable</source>
+        <translation>Einen Wert eingeben, um den Eingang zu setzen oder die Variable zu forcieren</translation>
+    </message>
+    <message>
+        <source>Start the simulation to set values.</source>
+        <translation>Starten Sie die Simulation, um Werte zu setzen.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number</source>
+        <translation>„%1“ ist keine ganze Zahl</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::Pl110Simulation</name>

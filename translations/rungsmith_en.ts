@@ -3273,6 +3273,18 @@ Its text page (F6) shows and edits it.</source>
         <source>Exported the names to %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Type a value to set the input or force the variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start the simulation to set values.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::Pl110Simulation</name>

@@ -3276,6 +3276,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Exported the names to %1</source>
         <translation>Exporterade namnen till %1</translation>
     </message>
+    <message>
+        <source>Type a value to set the input or force the variable</source>
+        <translation>Skriv ett värde för att sätta ingången eller tvångsstyra variabeln</translation>
+    </message>
+    <message>
+        <source>Start the simulation to set values.</source>
+        <translation>Starta simuleringen för att sätta värden.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number</source>
+        <translation>”%1” är inget heltal</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::Pl110Simulation</name>

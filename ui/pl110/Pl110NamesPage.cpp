@@ -8,7 +8,7 @@
 #include "project/ProjectFile.h"
 #include "shell/StatusColors.h"
 
-#include <QCoreApplication>
+#include <QApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QHeaderView>
@@ -77,7 +77,7 @@ Pl110NamesPage::Pl110NamesPage(Pl110Document* document, QWidget* parent)
     import->setObjectName(QStringLiteral("pl110ImportCsvAction"));
     import->setToolTip(tr("Name addresses from a CSV file: Variable, Symbolic Name, Description"));
     connect(import, &QAction::triggered, this, &Pl110NamesPage::chooseImport);
-    QAction* exportAction = toolBar->addAction(tr("&Export CSV..."));
+    QAction* exportAction = toolBar->addAction(tr("E&xport CSV..."));
     exportAction->setObjectName(QStringLiteral("pl110ExportCsvAction"));
     exportAction->setToolTip(tr("Write the names and descriptions to a CSV file"));
     connect(exportAction, &QAction::triggered, this, &Pl110NamesPage::chooseExport);
@@ -172,7 +172,7 @@ void Pl110NamesPage::fillNames() {
         m_names->setItem(row, NameColumn, new QTableWidgetItem(utf8(declaration.name)));
         m_names->setItem(row, DescriptionColumn,
                          new QTableWidgetItem(utf8(line->comment.value_or("")).trimmed()));
-        m_names->setItem(row, ValueColumn, readOnlyItem({}));
+        m_names->setItem(row, ValueColumn, new QTableWidgetItem);
         ++row;
     }
     // The last row names another address.
@@ -189,8 +189,16 @@ void Pl110NamesPage::fillNames() {
 
 void Pl110NamesPage::showValues(const pl110::ScanEngine* engine) {
     m_filling = true;
+    m_live = engine != nullptr;
+    // A value being typed is not overwritten by the next scan's.
+    const QWidget* focus = QApplication::focusWidget();
+    const bool editing = focus && m_names->viewport()->isAncestorOf(focus);
     for (int row = 0; row + 1 < m_names->rowCount(); ++row) {
         QTableWidgetItem* item = m_names->item(row, ValueColumn);
+        if (editing && m_names->currentItem() == item)
+            continue;
+        item->setToolTip(engine ? tr("Type a value to set the input or force the variable")
+                                : QString());
         if (!engine) {
             item->setText({});
             continue;
@@ -219,6 +227,10 @@ void Pl110NamesPage::edited(QTableWidgetItem* item) {
     if (m_filling)
         return;
     const int row = item->row();
+    if (item->column() == ValueColumn) {
+        enterValue(item);
+        return;
+    }
     const QString addressText = m_names->item(row, AddressColumn)->text().trimmed();
     const QString name = m_names->item(row, NameColumn)->text();
     const QString description = m_names->item(row, DescriptionColumn)->text();
@@ -246,6 +258,22 @@ void Pl110NamesPage::edited(QTableWidgetItem* item) {
     }
     if (changed)
         m_document->setProgram(program, tr("Name %1").arg(utf8(pl110::toString(reading.address))));
+}
+
+void Pl110NamesPage::enterValue(QTableWidgetItem* item) {
+    const pl110::AddressReading reading =
+        pl110::readAddress(m_names->item(item->row(), AddressColumn)->text().toStdString());
+    bool number = false;
+    const qint64 value = item->text().trimmed().toLongLong(&number);
+    if (!m_live || reading.shape != pl110::AddressReading::Shape::Address) {
+        Q_EMIT message(tr("Start the simulation to set values."));
+        return;
+    }
+    if (!number) {
+        Q_EMIT message(tr("“%1” is not a whole number").arg(item->text()));
+        return;
+    }
+    Q_EMIT valueEntered(reading.address, value);
 }
 
 void Pl110NamesPage::chooseImport() {

@@ -9,7 +9,8 @@ class QTableWidgetItem;
 
 namespace rs::pl110 {
 class ScanEngine;
-}
+struct Address;
+} // namespace rs::pl110
 
 namespace rs::ui {
 
@@ -32,12 +33,16 @@ public:
 
 Q_SIGNALS:
     void message(const QString& text);
+    // While simulating, a value typed into the Value column: the keyboard's
+    // way to set an input or force a variable.
+    void valueEntered(const pl110::Address& address, qint64 value);
 
 private:
     enum Column { AddressColumn, NameColumn, DescriptionColumn, ValueColumn };
     void fillNames();
     void fillAreas();
     void edited(QTableWidgetItem* item);
+    void enterValue(QTableWidgetItem* item);
     void chooseImport();
     void chooseExport();
     bool canRewrite(const QString& what);
@@ -47,6 +52,7 @@ private:
     QTableWidget* m_areas;
     QLabel* m_problem;
     bool m_filling = false;
+    bool m_live = false; // values are shown: the Value column takes new ones
 };
 
 } // namespace rs::ui

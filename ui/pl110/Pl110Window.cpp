@@ -106,6 +106,9 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
     });
     connect(m_names, &Pl110NamesPage::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(
+        m_names, &Pl110NamesPage::valueEntered, this,
+        [this](const pl110::Address& address, qint64 value) { m_simulation->set(address, value); });
     connect(m_simulation, &Pl110Simulation::scanned, this, &Pl110Window::scheduleLiveRefresh);
     connect(m_simulation, &Pl110Simulation::started, this, &Pl110Window::updateSimulationActions);
     connect(m_simulation, &Pl110Simulation::stopped, this, [this](const QString& why) {

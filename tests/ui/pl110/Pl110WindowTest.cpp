@@ -15,6 +15,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include "QtPrinting.h"
 
@@ -203,6 +204,19 @@ TEST_F(Pl110WindowTest, ClickingAnInputsContactSwitchesItAndTheRungRunsOnIt) {
     EXPECT_TRUE(simulation->isForced(pl110Address("M1")));
     ASSERT_TRUE(simulation->singleScan().isEmpty());
     EXPECT_EQ(simulation->engine()->value(pl110Address("M1")), 0);
+}
+
+TEST_F(Pl110WindowTest, AValueTypedOnTheNamesPageSetsAnInputWhileSimulating) {
+    rs::ui::Pl110Simulation* simulation = window->simulation();
+    QTableWidgetItem* stop = names()->item(namesRow(QStringLiteral("I2")), 3);
+    stop->setText(QStringLiteral("1")); // not simulating: nothing to set
+    EXPECT_FALSE(simulation->isForced(pl110Address("I2")));
+    ASSERT_TRUE(simulation->singleScan().isEmpty());
+    QTest::qWait(120); // the live pages' next refresh
+    stop->setText(QStringLiteral("1"));
+    EXPECT_EQ(simulation->engine()->value(pl110Address("I2")), 1);
+    QTest::qWait(120);
+    EXPECT_EQ(stop->text(), QStringLiteral("1"));
 }
 
 TEST_F(Pl110WindowTest, AChangedProgramStopsTheSimulationItRan) {
