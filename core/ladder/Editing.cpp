@@ -9,18 +9,10 @@ namespace rs::ladder {
 namespace {
 
 const char* const kNoRung = "there is no rung there";
-const char* const kNoNode = "there is no element there";
+const char* const kNoNode = kNoCircuitNode;
 const char* const kShared =
     "a rung with several outputs cannot hold an edge or a timer, nor read what one of its "
     "outputs writes: the text repeats the condition for every output";
-
-// An empty group stands where a node was taken out; normalizing drops it, so
-// the paths of other nodes stay valid until then.
-Circuit placeholder() {
-    Circuit empty;
-    empty.kind = Circuit::Kind::Series;
-    return empty;
-}
 
 Rung* rungAt(Network& network, std::size_t item) {
     if (item >= network.items.size())
@@ -29,29 +21,13 @@ Rung* rungAt(Network& network, std::size_t item) {
 }
 
 Circuit* nodeAt(Rung& rung, const std::vector<std::size_t>& path) {
-    if (!rung.condition)
-        return nullptr;
-    Circuit* node = &*rung.condition;
-    for (std::size_t index : path) {
-        if (index >= node->parts.size())
-            return nullptr;
-        node = &node->parts[index];
-    }
-    return node;
+    return ladder::nodeAt(rung.condition, path);
 }
 
 Element canonical(Element element) {
     if (auto* contact = std::get_if<Contact>(&element); contact && !isEdge(contact->kind))
         contact->operandNegated = false;
     return element;
-}
-
-void normalizeCondition(Rung& rung) {
-    if (!rung.condition)
-        return;
-    normalize(*rung.condition);
-    if (!rung.condition->isElement() && rung.condition->parts.empty())
-        rung.condition.reset();
 }
 
 // Normalizes every condition and joins adjacent rungs the text cannot tell
@@ -62,7 +38,7 @@ EditResult settle(Network& network) {
         if (auto* rung = std::get_if<Rung>(&item)) {
             if (network.block)
                 return {"a block network holds its block alone: add a network for the rung"};
-            normalizeCondition(*rung);
+            normalizeCondition(rung->condition);
             if (!isExpressible(*rung))
                 return {kShared};
             if (!items.empty())
@@ -93,33 +69,7 @@ template <typename Edit> EditResult edit(Network& network, Edit&& change) {
 
 // Inserts without normalizing, so that placeholders elsewhere keep their place.
 EditResult insertRaw(Rung& rung, const std::vector<std::size_t>& path, Circuit part, Side side) {
-    if (!rung.condition) {
-        if (!path.empty())
-            return {kNoNode};
-        rung.condition = std::move(part);
-        return {};
-    }
-    Circuit* node = nodeAt(rung, path);
-    if (!node)
-        return {kNoNode};
-    if (!path.empty()) {
-        std::vector<std::size_t> parentPath(path.begin(), path.end() - 1);
-        Circuit* parent = nodeAt(rung, parentPath);
-        if (parent->kind == Circuit::Kind::Series) {
-            auto at = parent->parts.begin() + static_cast<std::ptrdiff_t>(path.back()) +
-                      (side == Side::After ? 1 : 0);
-            parent->parts.insert(at, std::move(part));
-            return {};
-        }
-    }
-    Circuit series;
-    series.kind = Circuit::Kind::Series;
-    if (side == Side::Before)
-        series.parts = {std::move(part), std::move(*node)};
-    else
-        series.parts = {std::move(*node), std::move(part)};
-    *node = std::move(series);
-    return {};
+    return {ladder::insertInSeries(rung.condition, path, std::move(part), side)};
 }
 
 } // namespace
@@ -139,28 +89,8 @@ EditResult insertInParallel(Network& network, const ElementPath& at, Element ele
         Rung* rung = rungAt(copy, at.item);
         if (!rung)
             return {kNoRung};
-        Circuit* node = nodeAt(*rung, at.node);
-        if (!node)
-            return {rung->condition ? kNoNode : "a parallel branch needs an element to go around"};
-        Circuit branch = Circuit::of(canonical(std::move(element)));
-        if (seriesParts == 1) {
-            *node = Circuit::parallel({std::move(*node), std::move(branch)});
-            return {};
-        }
-        if (at.node.empty())
-            return {"only parts of a series can be taken into a parallel branch together"};
-        Circuit* parent = nodeAt(*rung, {at.node.begin(), at.node.end() - 1});
-        const std::size_t first = at.node.back();
-        if (parent->kind != Circuit::Kind::Series || seriesParts == 0 ||
-            first + seriesParts > parent->parts.size())
-            return {"only parts of a series can be taken into a parallel branch together"};
-        auto begin = parent->parts.begin() + static_cast<std::ptrdiff_t>(first);
-        auto end = begin + static_cast<std::ptrdiff_t>(seriesParts);
-        Circuit taken =
-            Circuit::series({std::make_move_iterator(begin), std::make_move_iterator(end)});
-        *begin = Circuit::parallel({std::move(taken), std::move(branch)});
-        parent->parts.erase(begin + 1, end);
-        return {};
+        return {ladder::insertInParallel(rung->condition, at.node,
+                                         Circuit::of(canonical(std::move(element))), seriesParts)};
     });
 }
 
@@ -169,11 +99,7 @@ EditResult removeNode(Network& network, const ElementPath& at) {
         Rung* rung = rungAt(copy, at.item);
         if (!rung)
             return {kNoRung};
-        Circuit* node = nodeAt(*rung, at.node);
-        if (!node)
-            return {kNoNode};
-        *node = placeholder();
-        return {};
+        return {ladder::removeNode(rung->condition, at.node)};
     });
 }
 
@@ -207,7 +133,7 @@ EditResult moveNode(Network& from, const ElementPath& node, Network& to, const E
     Circuit* moved = nodeAt(*sourceRung, node.node);
     if (!moved)
         return {kNoNode};
-    Circuit part = std::exchange(*moved, placeholder());
+    Circuit part = std::exchange(*moved, emptyGroup<Element>());
     Rung* targetRung = rungAt(targetNetwork, target.item);
     if (!targetRung)
         return {kNoRung};

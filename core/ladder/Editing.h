@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "CircuitEditing.h"
 #include "Network.h"
 
 #include <cstddef>
@@ -22,8 +23,6 @@ struct ElementPath {
     std::vector<std::size_t> node;
     friend bool operator==(const ElementPath&, const ElementPath&) = default;
 };
-
-enum class Side : std::uint8_t { Before, After };
 
 struct EditResult {
     std::string refusal; // why nothing was changed; empty when the edit was made

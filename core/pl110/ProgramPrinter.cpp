@@ -191,4 +191,8 @@ std::string printProgram(const Program& program) {
     return out;
 }
 
+std::string printRungLine(const Line& line) {
+    return lineText(line);
+}
+
 } // namespace rs::pl110

@@ -590,4 +590,31 @@ ProgramReading readProgram(std::string_view text) {
     return reading;
 }
 
+RungReading readRung(const Program& program, std::string_view text) {
+    RungReading reading;
+    std::map<std::string, DeclaredName> names;
+    for (const Line& line : program.declarations)
+        if (const auto* declaration = std::get_if<NameDeclaration>(&line.body))
+            names[lang::toUpper(declaration->name)] = {declaration->name,
+                                                       declaration->variable.address};
+    const SplitLine split = ::rs::pl110::split(text);
+    const std::string_view code = trimmed(split.code);
+    const int column = static_cast<int>(code.data() - text.data()) + 1;
+    try {
+        if (code.empty())
+            throw LineError{1, "a rung is an output, '=' and its condition: Q1 = I1 * /I2"};
+        if (text.find('\n') != std::string_view::npos)
+            throw LineError{column, "a rung is one line"};
+        LineReader reader(tokenize(code, column), 1, names);
+        Line line;
+        line.body = reader.rung();
+        line.comment = split.comment;
+        line.location = {1, column};
+        reading.line = std::move(line);
+    } catch (const LineError& bad) {
+        reading.diagnostics.push_back({lang::Severity::Error, 1, bad.column, bad.message});
+    }
+    return reading;
+}
+
 } // namespace rs::pl110

@@ -4,6 +4,7 @@
 #include "Program.h"
 #include "lang/Diagnostic.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -21,6 +22,17 @@ struct ProgramReading {
 ProgramReading readProgram(std::string_view text);
 
 std::string printProgram(const Program& program);
+
+// One rung as its line is written, "Q1 = I1 * /I2 ; comment", with the
+// program's declared names: what the ladder's rung dialog reads. Errors are
+// on line 1.
+struct RungReading {
+    std::optional<Line> line; // a Rung line, when it reads
+    lang::Diagnostics diagnostics;
+};
+RungReading readRung(const Program& program, std::string_view text);
+// The line as the printer writes it within a program.
+std::string printRungLine(const Line& line);
 
 // Whether a file's text is a PL110 program: its first directive is "$target PL110".
 bool isPl110Text(std::string_view text);
