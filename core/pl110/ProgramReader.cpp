@@ -89,6 +89,13 @@ public:
                const std::map<std::string, DeclaredName>& names)
         : m_tokens(std::move(tokens)), m_line(line), m_names(names) {}
 
+    // A condition alone, "I1 * /I2", as the ladder inserts it.
+    Circuit condition() {
+        Circuit circuit = expression(0);
+        end();
+        return circuit;
+    }
+
     Rung rung() {
         Rung rung;
         rung.output = output();
@@ -590,13 +597,22 @@ ProgramReading readProgram(std::string_view text) {
     return reading;
 }
 
-RungReading readRung(const Program& program, std::string_view text) {
-    RungReading reading;
+namespace {
+
+std::map<std::string, DeclaredName> declaredNames(const Program& program) {
     std::map<std::string, DeclaredName> names;
     for (const Line& line : program.declarations)
         if (const auto* declaration = std::get_if<NameDeclaration>(&line.body))
             names[lang::toUpper(declaration->name)] = {declaration->name,
                                                        declaration->variable.address};
+    return names;
+}
+
+} // namespace
+
+RungReading readRung(const Program& program, std::string_view text) {
+    RungReading reading;
+    const std::map<std::string, DeclaredName> names = declaredNames(program);
     const SplitLine split = ::rs::pl110::split(text);
     const std::string_view code = trimmed(split.code);
     const int column = static_cast<int>(code.data() - text.data()) + 1;
@@ -611,6 +627,25 @@ RungReading readRung(const Program& program, std::string_view text) {
         line.comment = split.comment;
         line.location = {1, column};
         reading.line = std::move(line);
+    } catch (const LineError& bad) {
+        reading.diagnostics.push_back({lang::Severity::Error, 1, bad.column, bad.message});
+    }
+    return reading;
+}
+
+ConditionReading readCondition(const Program& program, std::string_view text) {
+    ConditionReading reading;
+    try {
+        if (text.find_first_of("\n;") != std::string_view::npos)
+            throw LineError{static_cast<int>(text.find_first_of("\n;")) + 1,
+                            "a condition is one line without a comment"};
+        const std::string_view code = trimmed(text);
+        const int column = static_cast<int>(code.data() - text.data()) + 1;
+        if (code.empty())
+            throw LineError{1, "write a contact such as I3 or /I3, a comparison such as "
+                               "(VW1 >= 10), NOT, P or N"};
+        LineReader reader(tokenize(code, column), 1, declaredNames(program));
+        reading.circuit = reader.condition();
     } catch (const LineError& bad) {
         reading.diagnostics.push_back({lang::Severity::Error, 1, bad.column, bad.message});
     }

@@ -31,6 +31,13 @@ struct RungReading {
     lang::Diagnostics diagnostics;
 };
 RungReading readRung(const Program& program, std::string_view text);
+// Part of a condition, "I3", "/I3 * (VW1 >= 10)", "NOT": what the ladder
+// puts in series or in parallel.
+struct ConditionReading {
+    std::optional<Circuit> circuit;
+    lang::Diagnostics diagnostics;
+};
+ConditionReading readCondition(const Program& program, std::string_view text);
 // The line as the printer writes it within a program.
 std::string printRungLine(const Line& line);
 

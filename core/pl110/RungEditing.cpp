@@ -127,17 +127,17 @@ std::string moveRung(Program& program, int number, int direction) {
     return {};
 }
 
-std::string insertInSeries(Program& program, int number, const ElementNodePath& path,
-                           Element element, ladder::Side side) {
+std::string insertInSeries(Program& program, int number, const ElementNodePath& path, Circuit part,
+                           ladder::Side side) {
     return editRung(program, number, [&](Rung& rung) {
-        return ladder::insertInSeries(rung.condition, path, Circuit::of(std::move(element)), side);
+        return ladder::insertInSeries(rung.condition, path, std::move(part), side);
     });
 }
 
 std::string insertInParallel(Program& program, int number, const ElementNodePath& path,
-                             Element element) {
+                             Circuit part) {
     return editRung(program, number, [&](Rung& rung) {
-        return ladder::insertInParallel(rung.condition, path, Circuit::of(std::move(element)));
+        return ladder::insertInParallel(rung.condition, path, std::move(part));
     });
 }
 

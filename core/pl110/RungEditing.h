@@ -29,10 +29,12 @@ std::string removeRung(Program& program, int number);
 // (+1) in the same part.
 std::string moveRung(Program& program, int number, int direction);
 
-std::string insertInSeries(Program& program, int number, const ElementNodePath& path,
-                           Element element, ladder::Side side);
+// A part (an element, or a whole circuit) before or after the node, or in a
+// parallel branch around it.
+std::string insertInSeries(Program& program, int number, const ElementNodePath& path, Circuit part,
+                           ladder::Side side);
 std::string insertInParallel(Program& program, int number, const ElementNodePath& path,
-                             Element element);
+                             Circuit part);
 // A rung whose last element goes has its output powered every scan.
 std::string removeElement(Program& program, int number, const ElementNodePath& path);
 std::string replaceElement(Program& program, int number, const ElementNodePath& path,

@@ -108,10 +108,11 @@ TEST(Pl110RungEditing, ARungDoesNotMoveOutOfItsPartOrBeyondTheEnds) {
 
 TEST(Pl110RungEditing, ElementsGoInSeriesAndInParallelAndComeOut) {
     Program program = read(kStation);
-    ASSERT_EQ(insertInSeries(program, 2, {1}, contact("I9", ElementKind::NormallyClosed),
+    ASSERT_EQ(insertInSeries(program, 2, {1},
+                             Circuit::of(contact("I9", ElementKind::NormallyClosed)),
                              ladder::Side::After),
               "");
-    ASSERT_EQ(insertInParallel(program, 2, {0}, contact("M1")), "");
+    ASSERT_EQ(insertInParallel(program, 2, {0}, Circuit::of(contact("M1"))), "");
     EXPECT_EQ(printRungLine(*numberedRungs(program)[1].line), "Q1 = (Start + M1) * I2 * /I9");
     Element rising;
     rising.kind = ElementKind::RisingEdge;
@@ -123,13 +124,28 @@ TEST(Pl110RungEditing, ElementsGoInSeriesAndInParallelAndComeOut) {
     ASSERT_EQ(removeElement(program, 2, {}), "");
     EXPECT_EQ(printRungLine(*numberedRungs(program)[1].line), "Q1");
     // The condition is gone: the next contact becomes it.
-    ASSERT_EQ(insertInSeries(program, 2, {}, contact("I1"), ladder::Side::After), "");
+    ASSERT_EQ(insertInSeries(program, 2, {}, Circuit::of(contact("I1")), ladder::Side::After), "");
     EXPECT_EQ(printRungLine(*numberedRungs(program)[1].line), "Q1 = I1");
 
     const Program before = program;
     EXPECT_EQ(removeElement(program, 2, {3}), "there is no element there");
     EXPECT_EQ(replaceElement(program, 7, {}, rising), "there is no rung there");
     EXPECT_EQ(program, before);
+}
+
+TEST(Pl110RungEditing, AConditionIsReadAsWrittenInARung) {
+    const Program program = read(kStation);
+    const ConditionReading good = readCondition(program, " start * (VW1 >= 10) + NOT");
+    ASSERT_TRUE(good.circuit.has_value());
+    Program edited = program;
+    ASSERT_EQ(insertInSeries(edited, 4, {}, *good.circuit, ladder::Side::Before), "");
+    EXPECT_EQ(printRungLine(*numberedRungs(edited)[3].line),
+              "Q3 = (Start * (VW1>=10) + NOT) * Q1 * Q2");
+    const ConditionReading bad = readCondition(program, "I1 * ");
+    ASSERT_FALSE(bad.circuit.has_value());
+    EXPECT_EQ(bad.diagnostics.at(0).column, 5);
+    EXPECT_FALSE(readCondition(program, "I1 ; comment").circuit.has_value());
+    EXPECT_FALSE(readCondition(program, "").circuit.has_value());
 }
 
 TEST(Pl110RungEditing, ARungIsReadAsItsLineIsWrittenWithTheDeclaredNames) {
@@ -182,15 +198,18 @@ TEST(Pl110RungEditing, RandomEditsOfRandomProgramsStayExactlyPrintable) {
                                : pick(0, 1)    ? ElementKind::RisingEdge
                                                : ElementKind::FallingEdge;
             }
+            // A whole circuit goes in as well as one element.
+            const Circuit parallelPart = *readCondition(program, "I5 * (VW3 > 2) + /M1").circuit;
             const Program before = program;
             std::string refusal;
             switch (pick(0, 8)) {
             case 0:
-                refusal = insertInSeries(program, number, path, element,
+                refusal = insertInSeries(program, number, path, Circuit::of(element),
                                          pick(0, 1) ? ladder::Side::Before : ladder::Side::After);
                 break;
             case 1:
-                refusal = insertInParallel(program, number, path, element);
+                refusal = insertInParallel(program, number, path,
+                                           pick(0, 3) == 0 ? parallelPart : Circuit::of(element));
                 break;
             case 2:
                 refusal = removeElement(program, number, path);
