@@ -39,6 +39,12 @@ SeriesParallel<E>* nodeAt(std::optional<SeriesParallel<E>>& condition,
     return node;
 }
 
+template <class E>
+const SeriesParallel<E>* nodeAt(const std::optional<SeriesParallel<E>>& condition,
+                                const std::vector<std::size_t>& path) {
+    return nodeAt(const_cast<std::optional<SeriesParallel<E>>&>(condition), path);
+}
+
 // What stands where a node was taken out: an empty group, which normalizing
 // drops.
 template <class E> SeriesParallel<E> emptyGroup() {

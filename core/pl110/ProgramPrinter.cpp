@@ -195,4 +195,8 @@ std::string printRungLine(const Line& line) {
     return lineText(line);
 }
 
+std::string printCondition(const Circuit& circuit) {
+    return circuitText(circuit);
+}
+
 } // namespace rs::pl110

@@ -40,6 +40,8 @@ struct ConditionReading {
 ConditionReading readCondition(const Program& program, std::string_view text);
 // The line as the printer writes it within a program.
 std::string printRungLine(const Line& line);
+// A condition or part of one as a rung's line writes it: "I1 * /I2".
+std::string printCondition(const Circuit& circuit);
 
 // Whether a file's text is a PL110 program: its first directive is "$target PL110".
 bool isPl110Text(std::string_view text);

@@ -146,13 +146,12 @@ std::string removeElement(Program& program, int number, const ElementNodePath& p
                     [&](Rung& rung) { return ladder::removeNode(rung.condition, path); });
 }
 
-std::string replaceElement(Program& program, int number, const ElementNodePath& path,
-                           Element element) {
+std::string replaceNode(Program& program, int number, const ElementNodePath& path, Circuit part) {
     return editRung(program, number, [&](Rung& rung) -> std::string {
         Circuit* node = ladder::nodeAt(rung.condition, path);
-        if (!node || !node->isElement())
+        if (!node)
             return ladder::kNoCircuitNode;
-        node->element = std::move(element);
+        *node = std::move(part);
         return {};
     });
 }

@@ -37,8 +37,8 @@ std::string insertInParallel(Program& program, int number, const ElementNodePath
                              Circuit part);
 // A rung whose last element goes has its output powered every scan.
 std::string removeElement(Program& program, int number, const ElementNodePath& path);
-std::string replaceElement(Program& program, int number, const ElementNodePath& path,
-                           Element element);
+// The node (an element or a group) becomes the part.
+std::string replaceNode(Program& program, int number, const ElementNodePath& path, Circuit part);
 std::string replaceOutput(Program& program, int number, Output output);
 
 } // namespace rs::pl110

@@ -116,7 +116,7 @@ TEST(Pl110RungEditing, ElementsGoInSeriesAndInParallelAndComeOut) {
     EXPECT_EQ(printRungLine(*numberedRungs(program)[1].line), "Q1 = (Start + M1) * I2 * /I9");
     Element rising;
     rising.kind = ElementKind::RisingEdge;
-    ASSERT_EQ(replaceElement(program, 2, {2}, rising), "");
+    ASSERT_EQ(replaceNode(program, 2, {2}, Circuit::of(rising)), "");
     EXPECT_EQ(printRungLine(*numberedRungs(program)[1].line), "Q1 = (Start + M1) * I2 * P");
     ASSERT_EQ(removeElement(program, 2, {0}), "");
     ASSERT_EQ(removeElement(program, 2, {0}), "");
@@ -129,7 +129,7 @@ TEST(Pl110RungEditing, ElementsGoInSeriesAndInParallelAndComeOut) {
 
     const Program before = program;
     EXPECT_EQ(removeElement(program, 2, {3}), "there is no element there");
-    EXPECT_EQ(replaceElement(program, 7, {}, rising), "there is no rung there");
+    EXPECT_EQ(replaceNode(program, 7, {}, Circuit::of(rising)), "there is no rung there");
     EXPECT_EQ(program, before);
 }
 
@@ -215,7 +215,8 @@ TEST(Pl110RungEditing, RandomEditsOfRandomProgramsStayExactlyPrintable) {
                 refusal = removeElement(program, number, path);
                 break;
             case 3:
-                refusal = replaceElement(program, number, path, element);
+                refusal = replaceNode(program, number, path,
+                                      pick(0, 3) == 0 ? parallelPart : Circuit::of(element));
                 break;
             case 4:
                 refusal = moveRung(program, number, pick(0, 1) ? 1 : -1);

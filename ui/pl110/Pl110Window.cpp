@@ -6,8 +6,12 @@
 #include "pl110/Pl110Document.h"
 #include "pl110/Pl110LadderView.h"
 #include "pl110/Pl110Lexer.h"
+#include "pl110/Pl110LineDialog.h"
 #include "pl110/Pl110NamesPage.h"
 #include "pl110/Pl110Simulation.h"
+#include "pl110/ProgramText.h"
+#include "pl110/RungEditing.h"
+#include "pl110/Rungs.h"
 #include "shell/NamedIcon.h"
 #include "text/ProgramEditor.h"
 
@@ -100,7 +104,7 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
     connect(document, &Pl110Document::modifiedChanged, this, &Pl110Window::updateTitle);
     connect(m_ladder, &Pl110LadderView::operandClicked, this, &Pl110Window::operandClicked);
     connect(m_ladder, &Pl110LadderView::operandMenuRequested, this, &Pl110Window::operandMenu);
-    connect(m_ladder, &Pl110LadderView::lineActivated, this, [this](int line) { goToLine(line); });
+    connect(m_ladder, &Pl110LadderView::editRequested, this, &Pl110Window::editSelected);
     connect(m_problems, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         goToLine(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
     });
@@ -120,6 +124,7 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
 
     createActions();
     followDocument();
+    m_ladder->setFocus();
     resize(1180, 760);
 }
 
@@ -222,6 +227,8 @@ void Pl110Window::createActions() {
         view->addAction(show);
     }
 
+    createLadderActions(action);
+
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     m_start = action(tr("&Start"), "pl110StartAction", QKeySequence(Qt::Key_F5));
     m_start->setStatusTip(tr("Run the program on the simulated clock; click an input's contact "
@@ -261,6 +268,264 @@ void Pl110Window::createActions() {
     tools->addSeparator();
     tools->addActions({m_start, m_stop, m_singleScan, m_reset});
     updateSimulationActions();
+}
+
+void Pl110Window::createLadderActions(
+    const std::function<QAction*(const QString&, const char*, const QKeySequence&)>& action) {
+    // The ladder's keys work where the ladder has the focus; the menu reaches
+    // the same actions from anywhere.
+    const auto onLadder = [this](QAction* ladderAction, const QList<QKeySequence>& keys) {
+        ladderAction->setShortcuts(keys);
+        ladderAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_ladder->addAction(ladderAction);
+        return ladderAction;
+    };
+    QMenu* ladder = menuBar()->addMenu(tr("&Ladder"));
+    QAction* newRung = onLadder(action(tr("&New Rung..."), "pl110NewRungAction", {}),
+                                {QKeySequence(Qt::Key_Insert)});
+    newRung->setStatusTip(tr("Write a rung after the selected one: its output, '=' and its "
+                             "condition"));
+    connect(newRung, &QAction::triggered, this, &Pl110Window::newRung);
+    QAction* edit = onLadder(action(tr("&Edit..."), "pl110EditAction", {}),
+                             {QKeySequence(Qt::Key_Return), QKeySequence(Qt::Key_Enter)});
+    edit->setStatusTip(tr("Change the selected contact, or the selected rung as its line"));
+    connect(edit, &QAction::triggered, this, &Pl110Window::editSelected);
+    const auto inserting = [&](const QString& text, const char* name, QKeySequence key,
+                               Insertion where) {
+        QAction* created = onLadder(action(text, name, {}), {key});
+        connect(created, &QAction::triggered, this, [this, where] { insertAtSelection(where); });
+        return created;
+    };
+    QAction* after = inserting(tr("Contact &After..."), "pl110ContactAfterAction",
+                               QKeySequence(Qt::Key_BracketRight), Insertion::After);
+    QAction* before = inserting(tr("Contact &Before..."), "pl110ContactBeforeAction",
+                                QKeySequence(Qt::Key_BracketLeft), Insertion::Before);
+    QAction* parallel = inserting(tr("Contact in &Parallel..."), "pl110ContactParallelAction",
+                                  QKeySequence(Qt::Key_Backslash), Insertion::Parallel);
+    QAction* remove = onLadder(action(tr("&Delete"), "pl110DeleteAction", {}),
+                               {QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_Backspace)});
+    remove->setStatusTip(tr("Delete the selected element; with the output selected, the rung"));
+    connect(remove, &QAction::triggered, this, &Pl110Window::deleteSelected);
+    QAction* up = onLadder(action(tr("Move Rung &Up"), "pl110MoveRungUpAction", {}),
+                           {QKeySequence(Qt::CTRL | Qt::Key_Up)});
+    connect(up, &QAction::triggered, this, [this] { moveSelectedRung(-1); });
+    QAction* down = onLadder(action(tr("Move Rung Do&wn"), "pl110MoveRungDownAction", {}),
+                             {QKeySequence(Qt::CTRL | Qt::Key_Down)});
+    connect(down, &QAction::triggered, this, [this] { moveSelectedRung(1); });
+    QAction* toggle =
+        onLadder(action(tr("&Toggle"), "pl110ToggleAction", {}), {QKeySequence(Qt::Key_Space)});
+    toggle->setStatusTip(tr("While simulating: switch the selected contact's input, or force "
+                            "its variable the other way"));
+    connect(toggle, &QAction::triggered, this, [this] {
+        if (const ladder::ElementLayout* element = m_ladder->selectedElement())
+            if (element->shape != ladder::Shape::Box && !element->address.isEmpty())
+                operandClicked(element->address);
+    });
+    QAction* text =
+        action(tr("Ladder or &Text"), "pl110LadderOrTextAction", QKeySequence(Qt::Key_F6));
+    text->setStatusTip(tr("Switch between the ladder and the program text at the same rung"));
+    connect(text, &QAction::triggered, this, [this] {
+        if (m_pages->currentWidget() == m_ladder) {
+            goToLine(std::max(m_ladder->selectedLine(), 1));
+            return;
+        }
+        applyTyping();
+        showPage(Page::Ladder);
+        int line = 0;
+        int index = 0;
+        m_editor->getCursorPosition(&line, &index);
+        m_ladder->select(rungAtLine(line));
+        m_ladder->setFocus();
+    });
+    ladder->addActions({newRung, edit, after, before, parallel, remove});
+    ladder->addSeparator();
+    ladder->addActions({up, down});
+    ladder->addSeparator();
+    ladder->addActions({toggle, text});
+    // Moving the selection: keys only.
+    const std::array moves = {std::tuple{Qt::Key_Left, -1, 0}, std::tuple{Qt::Key_Right, 1, 0},
+                              std::tuple{Qt::Key_Up, 0, -1}, std::tuple{Qt::Key_Down, 0, 1}};
+    for (const auto& [key, columns, rungs] : moves) {
+        QAction* move = onLadder(new QAction(this), {QKeySequence(key)});
+        connect(move, &QAction::triggered, this, [this, columns = columns, rungs = rungs] {
+            m_ladder->moveSelection(columns, rungs);
+        });
+    }
+}
+
+int Pl110Window::rungAtLine(int editorLine) const {
+    // The editor counts lines from 0; the rung whose line is at or above it.
+    int found = 1;
+    for (const pl110::NumberedRung& rung : pl110::numberedRungs(m_document->program()))
+        if (rung.line->location.line <= editorLine + 1)
+            found = rung.number;
+    return found;
+}
+
+bool Pl110Window::mayEditLadder() {
+    applyTyping();
+    if (m_document->readsWhole())
+        return true;
+    statusBar()->showMessage(tr("Fix the errors on the Program page first: the ladder's edits "
+                                "rewrite the text, and lines with errors would be lost."),
+                             8000);
+    return false;
+}
+
+void Pl110Window::applyLadderEdit(const QString& what, const std::string& refusal,
+                                  const pl110::Program& edited, int select, std::uint16_t element) {
+    if (!refusal.empty()) {
+        statusBar()->showMessage(
+            tr("%1 was not done: %2").arg(what, QString::fromStdString(refusal)), 8000);
+        return;
+    }
+    m_document->setProgram(edited, what);
+    m_ladder->select(select, element);
+    m_ladder->setFocus();
+}
+
+QString Pl110Window::readProblem(const lang::Diagnostics& diagnostics) {
+    if (diagnostics.empty())
+        return {};
+    const lang::Diagnostic& first = diagnostics.front();
+    return tr("Column %1: %2").arg(first.column).arg(QString::fromStdString(first.message));
+}
+
+void Pl110Window::newRung() {
+    if (!mayEditLadder())
+        return;
+    const pl110::Program& program = m_document->program();
+    Pl110LineDialog dialog(
+        tr("New Rung"),
+        tr("The rung as its line is written: its output, '=' and its "
+           "condition, for example Q1 = I1 * /I2"),
+        QString(),
+        [&program](const QString& text) {
+            return readProblem(pl110::readRung(program, text.toStdString()).diagnostics);
+        },
+        this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    pl110::Program edited = program;
+    const int after = m_ladder->selectedRung();
+    const std::vector<pl110::NumberedRung> rungs = pl110::numberedRungs(program);
+    const bool init = after >= 1 && rungs[static_cast<std::size_t>(after - 1)].init;
+    const std::string refusal = pl110::insertRung(
+        edited, after, *pl110::readRung(program, dialog.text().toStdString()).line, init);
+    applyLadderEdit(tr("New Rung"), refusal, edited, after + 1);
+}
+
+void Pl110Window::editSelected() {
+    // A copy: the edit lays the ladder out again.
+    const ladder::ElementLayout* selected = m_ladder->selectedElement();
+    if (!selected || !mayEditLadder())
+        return;
+    const ladder::ElementLayout element = *selected;
+    const pl110::Program& program = m_document->program();
+    const int number = m_ladder->selectedRung();
+    const pl110::NumberedRung rung =
+        pl110::numberedRungs(program)[static_cast<std::size_t>(number - 1)];
+    pl110::Program edited = program;
+    if (element.output >= 0) {
+        Pl110LineDialog dialog(
+            tr("Edit Rung"),
+            tr("The rung as its line is written: its output, '=' and its "
+               "condition, and a comment after ';'"),
+            QString::fromStdString(pl110::printRungLine(*rung.line)),
+            [&program](const QString& text) {
+                return readProblem(pl110::readRung(program, text.toStdString()).diagnostics);
+            },
+            this);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        const std::string refusal = pl110::replaceRung(
+            edited, number, *pl110::readRung(program, dialog.text().toStdString()).line);
+        applyLadderEdit(tr("Edit Rung"), refusal, edited, number);
+        return;
+    }
+    const pl110::Circuit* node = ladder::nodeAt(rung.rung->condition, element.path.node);
+    Pl110LineDialog dialog(
+        tr("Edit Element"),
+        tr("The element as a rung writes it: a contact such as I3 or /I3, a "
+           "comparison such as (VW1 >= 10), NOT, P or N; several joined by * "
+           "and + take its place together"),
+        node ? QString::fromStdString(pl110::printCondition(*node)) : QString(),
+        [&program](const QString& text) {
+            return readProblem(pl110::readCondition(program, text.toStdString()).diagnostics);
+        },
+        this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const std::string refusal =
+        pl110::replaceNode(edited, number, element.path.node,
+                           *pl110::readCondition(program, dialog.text().toStdString()).circuit);
+    applyLadderEdit(tr("Edit Element"), refusal, edited, number, element.element);
+}
+
+void Pl110Window::insertAtSelection(Insertion where) {
+    // A copy: the edit lays the ladder out again.
+    const ladder::ElementLayout* selected = m_ladder->selectedElement();
+    if (!selected || !mayEditLadder())
+        return;
+    const ladder::ElementLayout element = *selected;
+    const pl110::Program& program = m_document->program();
+    const QString what = where == Insertion::Parallel ? tr("Contact in Parallel")
+                         : where == Insertion::Before ? tr("Contact Before")
+                                                      : tr("Contact After");
+    Pl110LineDialog dialog(
+        what,
+        tr("A contact such as I3 or /I3, a comparison such as (VW1 >= 10), "
+           "NOT, P or N, or several joined by * and +"),
+        QString(),
+        [&program](const QString& text) {
+            return readProblem(pl110::readCondition(program, text.toStdString()).diagnostics);
+        },
+        this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const int number = m_ladder->selectedRung();
+    // With the output selected, the part goes around or after the whole condition.
+    const pl110::ElementNodePath path =
+        element.output >= 0 ? pl110::ElementNodePath{} : element.path.node;
+    const pl110::Circuit part = *pl110::readCondition(program, dialog.text().toStdString()).circuit;
+    pl110::Program edited = program;
+    const std::string refusal =
+        where == Insertion::Parallel
+            ? pl110::insertInParallel(edited, number, path, part)
+            : pl110::insertInSeries(edited, number, path, part,
+                                    where == Insertion::Before && element.output < 0
+                                        ? ladder::Side::Before
+                                        : ladder::Side::After);
+    applyLadderEdit(what, refusal, edited, number, element.element);
+}
+
+void Pl110Window::deleteSelected() {
+    // A copy: the edit lays the ladder out again.
+    const ladder::ElementLayout* selected = m_ladder->selectedElement();
+    if (!selected || !mayEditLadder())
+        return;
+    const ladder::ElementLayout element = *selected;
+    const int number = m_ladder->selectedRung();
+    pl110::Program edited = m_document->program();
+    if (element.output >= 0) {
+        applyLadderEdit(tr("Delete Rung"), pl110::removeRung(edited, number), edited,
+                        std::max(1, number - 1));
+        return;
+    }
+    // What takes the element's place is selected next.
+    applyLadderEdit(tr("Delete Element"), pl110::removeElement(edited, number, element.path.node),
+                    edited, number, element.element);
+}
+
+void Pl110Window::moveSelectedRung(int direction) {
+    const int number = m_ladder->selectedRung();
+    if (number == 0 || !mayEditLadder())
+        return;
+    const std::uint16_t element = m_ladder->selectedElement()->element;
+    pl110::Program edited = m_document->program();
+    applyLadderEdit(direction < 0 ? tr("Move Rung Up") : tr("Move Rung Down"),
+                    pl110::moveRung(edited, number, direction), edited, number + direction,
+                    element);
 }
 
 void Pl110Window::showPage(Page page) {

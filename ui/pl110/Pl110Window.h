@@ -1,8 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#ifndef Q_MOC_RUN
+#include "lang/Diagnostic.h"
+#include "pl110/Program.h"
+#endif
+
 #include <QMainWindow>
 #include <QTimer>
+
+#include <cstdint>
+#include <functional>
+#include <string>
 
 class QAction;
 class QListWidget;
@@ -50,7 +59,22 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    enum class Insertion { Before, After, Parallel };
     void createActions();
+    void createLadderActions(
+        const std::function<QAction*(const QString&, const char*, const QKeySequence&)>& action);
+    // The ladder's edits: each reads what the user typed, changes the
+    // program in the core and replaces the text as one undoable step.
+    bool mayEditLadder();
+    void applyLadderEdit(const QString& what, const std::string& refusal,
+                         const pl110::Program& edited, int select, std::uint16_t element = 0);
+    static QString readProblem(const lang::Diagnostics& diagnostics);
+    void newRung();
+    void editSelected();
+    void insertAtSelection(Insertion where);
+    void deleteSelected();
+    void moveSelectedRung(int direction);
+    int rungAtLine(int editorLine) const;
     void followDocument();
     void updateTitle();
     void updateSimulationActions();

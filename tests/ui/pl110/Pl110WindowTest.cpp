@@ -4,19 +4,27 @@
 #include "pl110/Pl110LadderView.h"
 #include "pl110/Pl110NamesPage.h"
 #include "pl110/Pl110Simulation.h"
+#include "pl110/ProgramText.h"
+#include "pl110/Rungs.h"
 #include "text/ProgramEditor.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPointer>
+#include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "DialogDriver.h"
 #include "QtPrinting.h"
 
 #include <gtest/gtest.h>
@@ -258,6 +266,140 @@ TEST_F(Pl110WindowTest, SavingWritesTheTextAndAFailedSaveKeepsTheFileAndTheChang
     EXPECT_FALSE(
         document()->saveAs(directory.filePath(QStringLiteral("no/such/dir.sps"))).isEmpty());
     EXPECT_EQ(document()->path(), path);
+}
+
+// Types into the line dialog that opens next and presses Enter; what the
+// dialog said about the text as it was typed.
+struct LineAnswer {
+    QString typed;
+    QString shown;   // the dialog's text when it opened
+    QString problem; // its message for what was typed
+    bool okEnabled = false;
+};
+
+DialogDriver::Handler answerLine(LineAnswer& answer) {
+    return [&answer](QDialog& dialog) {
+        auto* line = dialog.findChild<QLineEdit*>(QStringLiteral("pl110LineEdit"));
+        answer.shown = line->text();
+        line->setText(answer.typed);
+        answer.problem = dialog.findChild<QLabel*>(QStringLiteral("pl110LineProblem"))->text();
+        auto* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+        answer.okEnabled = ok->isEnabled();
+        if (answer.okEnabled)
+            dialog.accept();
+        else
+            dialog.reject();
+    };
+}
+
+class Pl110LadderEditing : public Pl110WindowTest {
+protected:
+    void SetUp() override {
+        Pl110WindowTest::SetUp();
+        window->show();
+        ladder()->setFocus();
+        QApplication::setActiveWindow(window.get());
+    }
+    void key(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+        QTest::keyClick(ladder(), key, modifiers);
+    }
+    // Presses a key that opens a line dialog and answers it with `typed`.
+    LineAnswer keyIntoDialog(Qt::Key pressed, const QString& typed) {
+        LineAnswer answer{typed, {}, {}, false};
+        DialogDriver driver({answerLine(answer)});
+        key(pressed);
+        EXPECT_TRUE(driver.done());
+        // As a window manager does when a dialog closes.
+        QApplication::setActiveWindow(window.get());
+        return answer;
+    }
+    QString rungLine(int number) const {
+        const auto rungs = rs::pl110::numberedRungs(document()->program());
+        return QString::fromStdString(
+            rs::pl110::printRungLine(*rungs.at(static_cast<std::size_t>(number - 1)).line));
+    }
+};
+
+TEST_F(Pl110LadderEditing, TheKeyboardWritesANewRungAfterTheSelectedOne) {
+    ladder()->select(2);
+    const LineAnswer answer = keyIntoDialog(Qt::Key_Insert, QStringLiteral("Q4 = Start * /I6"));
+    EXPECT_TRUE(answer.okEnabled) << answer.problem.toStdString();
+    EXPECT_EQ(ladder()->rungCount(), 10);
+    EXPECT_EQ(rungLine(3), QStringLiteral("Q4 = Start * /I6"));
+    EXPECT_EQ(ladder()->selectedRung(), 3);
+    action("pl110UndoAction")->trigger();
+    EXPECT_EQ(ladder()->rungCount(), 9);
+}
+
+TEST_F(Pl110LadderEditing, TextThatDoesNotReadIsRefusedInTheDialogWithItsColumn) {
+    ladder()->select(2);
+    const QByteArray before = document()->text();
+    const LineAnswer answer = keyIntoDialog(Qt::Key_Insert, QStringLiteral("Q4 = Nowhere"));
+    EXPECT_FALSE(answer.okEnabled);
+    EXPECT_TRUE(answer.problem.contains(QStringLiteral("Column 6")))
+        << answer.problem.toStdString();
+    EXPECT_EQ(document()->text(), before);
+}
+
+TEST_F(Pl110LadderEditing, ArrowsSelectAContactWhichEnterEditsAndDeleteRemoves) {
+    ladder()->select(3); // Pump = Running * CanPresent * /Full * /BatchDone
+    for (int i = 0; i < 10; ++i)
+        key(Qt::Key_Left);
+    ASSERT_NE(ladder()->selectedElement(), nullptr);
+    EXPECT_EQ(ladder()->selectedElement()->name, QStringLiteral("Running"));
+    key(Qt::Key_Right);
+    EXPECT_EQ(ladder()->selectedElement()->name, QStringLiteral("CanPresent"));
+    const LineAnswer answer = keyIntoDialog(Qt::Key_Return, QStringLiteral("/CanPresent"));
+    EXPECT_EQ(answer.shown, QStringLiteral("CanPresent"));
+    EXPECT_EQ(rungLine(3), QStringLiteral("Pump = Running * /CanPresent * /Full * /BatchDone"));
+    key(Qt::Key_Delete);
+    EXPECT_EQ(rungLine(3), QStringLiteral("Pump = Running * /Full * /BatchDone"));
+    ASSERT_NE(ladder()->selectedElement(), nullptr);
+    EXPECT_EQ(ladder()->selectedElement()->name, QStringLiteral("Full"));
+    keyIntoDialog(Qt::Key_Backslash, QStringLiteral("M2"));
+    EXPECT_EQ(rungLine(3), QStringLiteral("Pump = Running * (/Full + M2) * /BatchDone"));
+    keyIntoDialog(Qt::Key_BracketLeft, QStringLiteral("I7"));
+    EXPECT_TRUE(rungLine(3).startsWith(QStringLiteral("Pump = Running * ")))
+        << rungLine(3).toStdString();
+    EXPECT_EQ(document()->undoStack()->count(), 4);
+}
+
+TEST_F(Pl110LadderEditing, RungsMoveWithTheirCommentsAndTheOutputsDeleteRemovesTheRung) {
+    ladder()->select(4); // TON(Overrun, ...) with its comment above
+    key(Qt::Key_Up, Qt::ControlModifier);
+    EXPECT_EQ(ladder()->selectedRung(), 3);
+    EXPECT_TRUE(rungLine(3).startsWith(QStringLiteral("TON(Overrun"))) << rungLine(3).toStdString();
+    const QString text = QString::fromUtf8(document()->text());
+    EXPECT_LT(text.indexOf(QStringLiteral("; A can that is not full")),
+              text.indexOf(QStringLiteral("TON(Overrun")));
+    EXPECT_LT(text.indexOf(QStringLiteral("TON(Overrun")), text.indexOf(QStringLiteral("Pump = ")));
+    ladder()->select(3); // its output
+    key(Qt::Key_Delete);
+    EXPECT_EQ(ladder()->rungCount(), 8);
+    EXPECT_FALSE(
+        QString::fromUtf8(document()->text()).contains(QStringLiteral("; A can that is not full")));
+}
+
+TEST_F(Pl110LadderEditing, F6GoesToTheSelectedRungsLineAndBack) {
+    ladder()->select(5);
+    action("pl110LadderOrTextAction")->trigger();
+    int line = 0;
+    int index = 0;
+    editor()->getCursorPosition(&line, &index);
+    EXPECT_EQ(line + 1, 24);            // Alarm = Overrun + ...
+    editor()->setCursorPosition(20, 0); // Pump = ...
+    action("pl110LadderOrTextAction")->trigger();
+    EXPECT_EQ(ladder()->selectedRung(), 3);
+}
+
+TEST_F(Pl110LadderEditing, SpaceSwitchesTheSelectedInputWhileSimulating) {
+    ASSERT_TRUE(window->simulation()->singleScan().isEmpty());
+    ladder()->select(2); // Running = Start * Stop * /Alarm + ...
+    for (int i = 0; i < 10; ++i)
+        key(Qt::Key_Left);
+    ASSERT_EQ(ladder()->selectedElement()->address, QStringLiteral("I1"));
+    key(Qt::Key_Space);
+    EXPECT_EQ(window->simulation()->engine()->value(pl110Address("I1")), 1);
 }
 
 TEST(Pl110NewProgram, ANewProgramRunsAsItStands) {
