@@ -3315,10 +3315,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>&amp;Kontaktplan</translation>
     </message>
     <message>
-        <source>&amp;Program</source>
-        <translation>&amp;Programm</translation>
-    </message>
-    <message>
         <source>&amp;Names and Areas</source>
         <translation>&amp;Namen und Bereiche</translation>
     </message>
@@ -3575,6 +3571,146 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>%1 did not run: it has errors</source>
         <translation>%1 lief nicht: es hat Fehler</translation>
+    </message>
+    <message>
+        <source>&amp;New Rung...</source>
+        <translation>&amp;Neues Netzwerk …</translation>
+    </message>
+    <message>
+        <source>Write a rung after the selected one: its output, &apos;=&apos; and its condition</source>
+        <translation>Ein Netzwerk nach dem gewählten schreiben: sein Ausgang, „=“ und seine Bedingung</translation>
+    </message>
+    <message>
+        <source>&amp;Edit...</source>
+        <translation>&amp;Bearbeiten …</translation>
+    </message>
+    <message>
+        <source>Change the selected contact, or the selected rung as its line</source>
+        <translation>Den gewählten Kontakt ändern, oder das gewählte Netzwerk als seine Zeile</translation>
+    </message>
+    <message>
+        <source>Contact &amp;After...</source>
+        <translation>Kontakt &amp;danach …</translation>
+    </message>
+    <message>
+        <source>Contact &amp;Before...</source>
+        <translation>Kontakt da&amp;vor …</translation>
+    </message>
+    <message>
+        <source>Contact in &amp;Parallel...</source>
+        <translation>Kontakt &amp;parallel …</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selected element; with the output selected, the rung</source>
+        <translation>Das gewählte Element löschen; ist der Ausgang gewählt, das Netzwerk</translation>
+    </message>
+    <message>
+        <source>Move Rung &amp;Up</source>
+        <translation>Netzwerk nach &amp;oben</translation>
+    </message>
+    <message>
+        <source>Move Rung Do&amp;wn</source>
+        <translation>Netzwerk nach &amp;unten</translation>
+    </message>
+    <message>
+        <source>While simulating: switch the selected contact&apos;s input, or force its variable the other way</source>
+        <translation>Während der Simulation: den Eingang des gewählten Kontakts umschalten oder seine Variable umgekehrt forcieren</translation>
+    </message>
+    <message>
+        <source>Ladder or &amp;Text</source>
+        <translation>Kontaktplan oder &amp;Text</translation>
+    </message>
+    <message>
+        <source>Switch between the ladder and the program text at the same rung</source>
+        <translation>Zwischen Kontaktplan und Programmtext am selben Netzwerk wechseln</translation>
+    </message>
+    <message>
+        <source>Fix the errors on the Program page first: the ladder&apos;s edits rewrite the text, and lines with errors would be lost.</source>
+        <translation>Beheben Sie zuerst die Fehler auf der Seite „Programm“: die Änderungen im Kontaktplan schreiben den Text neu, und fehlerhafte Zeilen gingen verloren.</translation>
+    </message>
+    <message>
+        <source>%1 was not done: %2</source>
+        <translation>%1 wurde nicht ausgeführt: %2</translation>
+    </message>
+    <message>
+        <source>Column %1: %2</source>
+        <translation>Spalte %1: %2</translation>
+    </message>
+    <message>
+        <source>New Rung</source>
+        <translation>Neues Netzwerk</translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, for example Q1 = I1 * /I2</source>
+        <translation>Das Netzwerk, wie seine Zeile geschrieben wird: sein Ausgang, „=“ und seine Bedingung, zum Beispiel Q1 = I1 * /I2</translation>
+    </message>
+    <message>
+        <source>Edit Rung</source>
+        <translation>Netzwerk bearbeiten</translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, and a comment after &apos;;&apos;</source>
+        <translation>Das Netzwerk, wie seine Zeile geschrieben wird: sein Ausgang, „=“ und seine Bedingung, und ein Kommentar nach „;“</translation>
+    </message>
+    <message>
+        <source>Edit Element</source>
+        <translation>Element bearbeiten</translation>
+    </message>
+    <message>
+        <source>The element as a rung writes it: a contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N; several joined by * and + take its place together</source>
+        <translation>Das Element, wie ein Netzwerk es schreibt: ein Kontakt wie I3 oder /I3, ein Vergleich wie (VW1 &gt;= 10), NOT, P oder N; mehrere, verbunden durch * und +, treten gemeinsam an seine Stelle</translation>
+    </message>
+    <message>
+        <source>Contact in Parallel</source>
+        <translation>Kontakt parallel</translation>
+    </message>
+    <message>
+        <source>Contact Before</source>
+        <translation>Kontakt davor</translation>
+    </message>
+    <message>
+        <source>Contact After</source>
+        <translation>Kontakt danach</translation>
+    </message>
+    <message>
+        <source>A contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N, or several joined by * and +</source>
+        <translation>Ein Kontakt wie I3 oder /I3, ein Vergleich wie (VW1 &gt;= 10), NOT, P oder N, oder mehrere, verbunden durch * und +</translation>
+    </message>
+    <message>
+        <source>Delete Rung</source>
+        <translation>Netzwerk löschen</translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation>Element löschen</translation>
+    </message>
+    <message>
+        <source>Move Rung Up</source>
+        <translation>Netzwerk nach oben</translation>
+    </message>
+    <message>
+        <source>Move Rung Down</source>
+        <translation>Netzwerk nach unten</translation>
+    </message>
+    <message>
+        <source>Ladder</source>
+        <translation>Kontaktplan</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Names and Areas</source>
+        <translation>Namen und Bereiche</translation>
+    </message>
+    <message>
+        <source>T&amp;oggle</source>
+        <translation>Um&amp;schalten</translation>
     </message>
 </context>
 <context>

@@ -3312,10 +3312,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;Program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Names and Areas</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3571,6 +3567,146 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>%1 did not run: it has errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;New Rung...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a rung after the selected one: its output, &apos;=&apos; and its condition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change the selected contact, or the selected rung as its line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact &amp;After...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact &amp;Before...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact in &amp;Parallel...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete the selected element; with the output selected, the rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Rung &amp;Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Rung Do&amp;wn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>While simulating: switch the selected contact&apos;s input, or force its variable the other way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder or &amp;Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch between the ladder and the program text at the same rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fix the errors on the Program page first: the ladder&apos;s edits rewrite the text, and lines with errors would be lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was not done: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Column %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, for example Q1 = I1 * /I2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit Rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, and a comment after &apos;;&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The element as a rung writes it: a contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N; several joined by * and + take its place together</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact in Parallel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N, or several joined by * and +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete Rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Rung Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move Rung Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ladder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Names and Areas</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T&amp;oggle</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3315,10 +3315,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Steg&amp;diagram</translation>
     </message>
     <message>
-        <source>&amp;Program</source>
-        <translation>&amp;Program</translation>
-    </message>
-    <message>
         <source>&amp;Names and Areas</source>
         <translation>&amp;Namn och områden</translation>
     </message>
@@ -3575,6 +3571,146 @@ Dess textsida (F6) visar och redigerar den.</translation>
     <message>
         <source>%1 did not run: it has errors</source>
         <translation>%1 kördes inte: det har fel</translation>
+    </message>
+    <message>
+        <source>&amp;New Rung...</source>
+        <translation>&amp;Nytt steg …</translation>
+    </message>
+    <message>
+        <source>Write a rung after the selected one: its output, &apos;=&apos; and its condition</source>
+        <translation>Skriv ett steg efter det valda: dess utgång, ”=” och dess villkor</translation>
+    </message>
+    <message>
+        <source>&amp;Edit...</source>
+        <translation>&amp;Redigera …</translation>
+    </message>
+    <message>
+        <source>Change the selected contact, or the selected rung as its line</source>
+        <translation>Ändra den valda kontakten, eller det valda steget som sin rad</translation>
+    </message>
+    <message>
+        <source>Contact &amp;After...</source>
+        <translation>Kontakt &amp;efter …</translation>
+    </message>
+    <message>
+        <source>Contact &amp;Before...</source>
+        <translation>Kontakt &amp;före …</translation>
+    </message>
+    <message>
+        <source>Contact in &amp;Parallel...</source>
+        <translation>Kontakt &amp;parallellt …</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>Ta &amp;bort</translation>
+    </message>
+    <message>
+        <source>Delete the selected element; with the output selected, the rung</source>
+        <translation>Ta bort det valda elementet; med utgången vald, steget</translation>
+    </message>
+    <message>
+        <source>Move Rung &amp;Up</source>
+        <translation>Flytta steg &amp;upp</translation>
+    </message>
+    <message>
+        <source>Move Rung Do&amp;wn</source>
+        <translation>Flytta steg ne&amp;d</translation>
+    </message>
+    <message>
+        <source>While simulating: switch the selected contact&apos;s input, or force its variable the other way</source>
+        <translation>Under simulering: slå om den valda kontaktens ingång, eller tvångsstyr dess variabel åt andra hållet</translation>
+    </message>
+    <message>
+        <source>Ladder or &amp;Text</source>
+        <translation>Stegdiagram eller &amp;text</translation>
+    </message>
+    <message>
+        <source>Switch between the ladder and the program text at the same rung</source>
+        <translation>Växla mellan stegdiagrammet och programtexten vid samma steg</translation>
+    </message>
+    <message>
+        <source>Fix the errors on the Program page first: the ladder&apos;s edits rewrite the text, and lines with errors would be lost.</source>
+        <translation>Rätta först felen på sidan Program: ändringarna i stegdiagrammet skriver om texten, och rader med fel skulle gå förlorade.</translation>
+    </message>
+    <message>
+        <source>%1 was not done: %2</source>
+        <translation>%1 gjordes inte: %2</translation>
+    </message>
+    <message>
+        <source>Column %1: %2</source>
+        <translation>Kolumn %1: %2</translation>
+    </message>
+    <message>
+        <source>New Rung</source>
+        <translation>Nytt steg</translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, for example Q1 = I1 * /I2</source>
+        <translation>Steget som dess rad skrivs: dess utgång, ”=” och dess villkor, till exempel Q1 = I1 * /I2</translation>
+    </message>
+    <message>
+        <source>Edit Rung</source>
+        <translation>Redigera steg</translation>
+    </message>
+    <message>
+        <source>The rung as its line is written: its output, &apos;=&apos; and its condition, and a comment after &apos;;&apos;</source>
+        <translation>Steget som dess rad skrivs: dess utgång, ”=” och dess villkor, och en kommentar efter ”;”</translation>
+    </message>
+    <message>
+        <source>Edit Element</source>
+        <translation>Redigera element</translation>
+    </message>
+    <message>
+        <source>The element as a rung writes it: a contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N; several joined by * and + take its place together</source>
+        <translation>Elementet som ett steg skriver det: en kontakt som I3 eller /I3, en jämförelse som (VW1 &gt;= 10), NOT, P eller N; flera, förenade med * och +, tar tillsammans dess plats</translation>
+    </message>
+    <message>
+        <source>Contact in Parallel</source>
+        <translation>Kontakt parallellt</translation>
+    </message>
+    <message>
+        <source>Contact Before</source>
+        <translation>Kontakt före</translation>
+    </message>
+    <message>
+        <source>Contact After</source>
+        <translation>Kontakt efter</translation>
+    </message>
+    <message>
+        <source>A contact such as I3 or /I3, a comparison such as (VW1 &gt;= 10), NOT, P or N, or several joined by * and +</source>
+        <translation>En kontakt som I3 eller /I3, en jämförelse som (VW1 &gt;= 10), NOT, P eller N, eller flera förenade med * och +</translation>
+    </message>
+    <message>
+        <source>Delete Rung</source>
+        <translation>Ta bort steg</translation>
+    </message>
+    <message>
+        <source>Delete Element</source>
+        <translation>Ta bort element</translation>
+    </message>
+    <message>
+        <source>Move Rung Up</source>
+        <translation>Flytta steg upp</translation>
+    </message>
+    <message>
+        <source>Move Rung Down</source>
+        <translation>Flytta steg ned</translation>
+    </message>
+    <message>
+        <source>Ladder</source>
+        <translation>Stegdiagram</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Names and Areas</source>
+        <translation>Namn och områden</translation>
+    </message>
+    <message>
+        <source>T&amp;oggle</source>
+        <translation>&amp;Växla</translation>
     </message>
 </context>
 <context>

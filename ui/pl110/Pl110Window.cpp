@@ -67,9 +67,9 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
     m_editor->setProjectUndo(true);
     m_pages->setObjectName(QStringLiteral("pl110Pages"));
     m_pages->setDocumentMode(true);
-    m_pages->addTab(m_ladder, tr("&Ladder"));
-    m_pages->addTab(m_editor, tr("&Program"));
-    m_pages->addTab(m_names, tr("&Names and Areas"));
+    m_pages->addTab(m_ladder, tr("Ladder"));
+    m_pages->addTab(m_editor, tr("Program"));
+    m_pages->addTab(m_names, tr("Names and Areas"));
     setCentralWidget(m_pages);
 
     m_problems->setObjectName(QStringLiteral("pl110Problems"));
@@ -313,7 +313,7 @@ void Pl110Window::createLadderActions(
                              {QKeySequence(Qt::CTRL | Qt::Key_Down)});
     connect(down, &QAction::triggered, this, [this] { moveSelectedRung(1); });
     QAction* toggle =
-        onLadder(action(tr("&Toggle"), "pl110ToggleAction", {}), {QKeySequence(Qt::Key_Space)});
+        onLadder(action(tr("T&oggle"), "pl110ToggleAction", {}), {QKeySequence(Qt::Key_Space)});
     toggle->setStatusTip(tr("While simulating: switch the selected contact's input, or force "
                             "its variable the other way"));
     connect(toggle, &QAction::triggered, this, [this] {
