@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "WaveformPainter.h"
 
-#include "sim/WaveformRecorder.h"
+#include "sim/Waveform.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -32,8 +32,8 @@ QString timeLabel(std::int64_t ms, std::int64_t step) {
 
 } // namespace
 
-WaveformPainter::WaveformPainter(const sim::WaveformRecorder& recorder, const QPalette& palette)
-    : m_recorder(recorder), m_palette(palette) {}
+WaveformPainter::WaveformPainter(const sim::Waveform& waveform, const QPalette& palette)
+    : m_waveform(waveform), m_palette(palette) {}
 
 void WaveformPainter::setLabels(std::function<QString(int row)> labels) {
     m_labels = std::move(labels);
@@ -73,16 +73,15 @@ void WaveformPainter::paintRuler(QPainter& painter, int width, int height, const
 
 int WaveformPainter::paint(QPainter& painter, int width, int height, const View& view) const {
     paintRuler(painter, width, height, view);
-    const auto& traces = m_recorder.traces();
     const QColor bits = bitColor(m_palette);
     auto xOf = [&](std::int64_t timeMs) {
         return kNameWidth + static_cast<double>(timeMs - view.firstMs) / view.msPerPixel;
     };
-    const double right = std::min<double>(xOf(m_recorder.endMs()), width);
+    const double right = std::min<double>(xOf(m_waveform.endMs()), width);
     int y = kRulerHeight;
     int drawn = 0;
-    for (int row = view.firstRow; row < static_cast<int>(traces.size()) && y < height; ++row) {
-        const sim::WaveformRecorder::Trace& trace = traces[static_cast<std::size_t>(row)];
+    for (int row = view.firstRow; row < static_cast<int>(m_waveform.rows()) && y < height; ++row) {
+        const auto index = static_cast<std::size_t>(row);
         const bool selected = row == view.selectedRow;
         const QRect nameRect(0, y, kNameWidth, kRowHeight);
         painter.fillRect(nameRect, selected ? m_palette.color(QPalette::Highlight)
@@ -90,7 +89,7 @@ int WaveformPainter::paint(QPainter& painter, int width, int height, const View&
         painter.setPen(selected ? m_palette.color(QPalette::HighlightedText)
                                 : m_palette.color(QPalette::WindowText));
         const QString label =
-            m_labels ? m_labels(row) : QString::fromStdString(lang::toString(trace.address));
+            m_labels ? m_labels(row) : QString::fromStdString(m_waveform.label(index));
         const QRect textRect = nameRect.adjusted(6, 0, -4, 0);
         painter.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
                          painter.fontMetrics().elidedText(label, Qt::ElideRight, textRect.width()));
@@ -98,17 +97,17 @@ int WaveformPainter::paint(QPainter& painter, int width, int height, const View&
         painter.drawLine(0, y + kRowHeight - 1, width, y + kRowHeight - 1);
 
         // The change in effect at the left edge, then every change up to the right edge.
-        const auto& changes = trace.changes;
+        const auto& changes = m_waveform.changes(index);
         auto it = std::upper_bound(
             changes.begin(), changes.end(), view.firstMs,
-            [](std::int64_t t, const sim::WaveformRecorder::Change& c) { return t < c.timeMs; });
+            [](std::int64_t t, const sim::WaveformChange& c) { return t < c.timeMs; });
         if (it != changes.begin())
             --it;
         const double high = y + 5;
         const double low = y + kRowHeight - 6;
         painter.save();
         painter.setClipRect(QRect(kNameWidth, y, width - kNameWidth, kRowHeight));
-        if (trace.address.isBit() && trace.address.kind != lang::AddressKind::AnalogInput) {
+        if (m_waveform.isBit(index)) {
             QPainterPath path;
             bool started = false;
             for (; it != changes.end(); ++it) {
@@ -161,10 +160,10 @@ int WaveformPainter::paint(QPainter& painter, int width, int height, const View&
     return drawn;
 }
 
-QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QString>& labels,
-                     int width, const QPalette& palette, qreal devicePixelRatio,
+QImage waveformImage(const sim::Waveform& waveform, const std::vector<QString>& labels, int width,
+                     const QPalette& palette, qreal devicePixelRatio,
                      std::function<QString(int row, std::int64_t value)> valueText) {
-    const int rows = static_cast<int>(recorder.traces().size());
+    const int rows = static_cast<int>(waveform.rows());
     const int height = WaveformPainter::kRulerHeight + rows * WaveformPainter::kRowHeight;
     QImage image(QSize(width, height) * devicePixelRatio, QImage::Format_ARGB32_Premultiplied);
     image.setDevicePixelRatio(devicePixelRatio);
@@ -172,8 +171,8 @@ QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QS
     // A margin on the right, so the last change is not drawn on the edge.
     const int plot = std::max(width - WaveformPainter::kNameWidth - 12, 1);
     const double span =
-        static_cast<double>(std::max<std::int64_t>(recorder.endMs() - recorder.startMs(), 1));
-    WaveformPainter painter(recorder, palette);
+        static_cast<double>(std::max<std::int64_t>(waveform.endMs() - waveform.startMs(), 1));
+    WaveformPainter painter(waveform, palette);
     painter.setLabels([&labels](int row) {
         return row < static_cast<int>(labels.size()) ? labels[static_cast<std::size_t>(row)]
                                                      : QString();
@@ -181,7 +180,7 @@ QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QS
     painter.setValueText(std::move(valueText));
     QPainter p(&image);
     p.setRenderHint(QPainter::Antialiasing);
-    painter.paint(p, width, height, {recorder.startMs(), span / plot, 0, -1});
+    painter.paint(p, width, height, {waveform.startMs(), span / plot, 0, -1});
     return image;
 }
 

@@ -11,10 +11,10 @@
 class QPainter;
 
 namespace rs::sim {
-class WaveformRecorder;
+class Waveform;
 }
 
-// Draws what a waveform recorder holds over virtual time: a time ruler on
+// Draws what a waveform holds over virtual time, for any target: a time ruler on
 // top, then a row per trace with its label on the left, bits as 0/1 traces
 // and numbers as bands with their value. The simulator's waveform panel
 // scrolls over it; a block's documentation page draws a whole recording as a
@@ -35,7 +35,7 @@ public:
         int selectedRow = -1; // drawn highlighted; -1 for none
     };
 
-    WaveformPainter(const sim::WaveformRecorder& recorder, const QPalette& palette);
+    WaveformPainter(const sim::Waveform& waveform, const QPalette& palette);
 
     // The label of each row; the address when not set.
     void setLabels(std::function<QString(int row)> labels);
@@ -51,7 +51,7 @@ public:
 private:
     void paintRuler(QPainter& painter, int width, int height, const View& view) const;
 
-    const sim::WaveformRecorder& m_recorder;
+    const sim::Waveform& m_waveform;
     QPalette m_palette;
     std::function<QString(int row)> m_labels;
     std::function<QString(int row, std::int64_t value)> m_valueText;
@@ -59,8 +59,8 @@ private:
 
 // The whole recording, every row, `width` pixels wide (device independent),
 // at the given pixel ratio: a picture for a page.
-QImage waveformImage(const sim::WaveformRecorder& recorder, const std::vector<QString>& labels,
-                     int width, const QPalette& palette, qreal devicePixelRatio = 1.0,
+QImage waveformImage(const sim::Waveform& waveform, const std::vector<QString>& labels, int width,
+                     const QPalette& palette, qreal devicePixelRatio = 1.0,
                      std::function<QString(int row, std::int64_t value)> valueText = {});
 
 } // namespace rs::render

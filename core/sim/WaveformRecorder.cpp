@@ -10,51 +10,28 @@
 namespace rs::sim {
 
 bool WaveformRecorder::add(const lang::Address& address, const Simulation* simulation) {
-    if (contains(address))
-        return false;
-    m_traces.push_back({address, {}});
-    if (simulation && m_sampled)
-        m_traces.back().changes.push_back({m_endMs, simulation->value(address)});
-    return true;
-}
-
-void WaveformRecorder::remove(const lang::Address& address) {
-    std::erase_if(m_traces, [&](const Trace& trace) { return trace.address == address; });
-}
-
-void WaveformRecorder::removeAll() {
-    m_traces.clear();
-}
-
-bool WaveformRecorder::contains(const lang::Address& address) const {
-    return std::any_of(m_traces.begin(), m_traces.end(),
-                       [&](const Trace& trace) { return trace.address == address; });
-}
-
-void WaveformRecorder::clear() {
-    for (Trace& trace : m_traces)
-        trace.changes.clear();
-    m_sampled = false;
-    m_startMs = m_endMs = 0;
+    return BasicWaveformRecorder::add(
+        address, simulation ? std::optional(simulation->value(address)) : std::nullopt);
 }
 
 void WaveformRecorder::sample(const Simulation& simulation) {
-    const std::int64_t now = simulation.timeMs();
-    if (!m_sampled) {
-        m_startMs = now;
-        m_sampled = true;
-    }
-    m_endMs = now;
-    for (Trace& trace : m_traces) {
-        const std::int64_t value = simulation.value(trace.address);
-        if (trace.changes.empty() || trace.changes.back().value != value)
-            trace.changes.push_back({now, value});
-    }
+    BasicWaveformRecorder::sample(simulation.timeMs(), [&simulation](const lang::Address& address) {
+        return simulation.value(address);
+    });
+}
+
+std::string WaveformRecorder::label(std::size_t row) const {
+    return lang::toString(traces()[row].address);
+}
+
+bool WaveformRecorder::isBit(std::size_t row) const {
+    const lang::Address& address = traces()[row].address;
+    return address.isBit() && address.kind != lang::AddressKind::AnalogInput;
 }
 
 std::string WaveformRecorder::vcd(const std::string& title) const {
     std::vector<const Trace*> sorted;
-    for (const Trace& trace : m_traces)
+    for (const Trace& trace : traces())
         sorted.push_back(&trace);
     std::sort(sorted.begin(), sorted.end(),
               [](const Trace* a, const Trace* b) { return a->address < b->address; });

@@ -93,11 +93,15 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
         if (!error.isEmpty())
             QMessageBox::warning(this, tr("Export VCD"), error);
     });
-    m_view->setNames([this](const lang::Address& address) {
+    m_view->setLabels([this](int row) {
+        const lang::Address& address =
+            m_session->recorder().traces()[static_cast<std::size_t>(row)].address;
         const ProjectDocument* document = m_session->document();
-        return document
-                   ? QString::fromStdString(project::variableName(document->project(), address))
-                   : QString();
+        const QString name =
+            document ? QString::fromStdString(project::variableName(document->project(), address))
+                     : QString();
+        return QString::fromStdString(lang::toString(address)) +
+               (name.isEmpty() ? QString() : QStringLiteral("  ") + name);
     });
     connect(m_session, &SimulationSession::updated, m_view, &WaveformView::recordingChanged);
     connect(m_session, &SimulationSession::projectChanged, this, [this] {

@@ -2,7 +2,7 @@
 #include "WaveformView.h"
 
 #include "WaveformPainter.h"
-#include "sim/WaveformRecorder.h"
+#include "sim/Waveform.h"
 
 #include <QMouseEvent>
 #include <QPainter>
@@ -22,8 +22,8 @@ constexpr double kZoomStep = 1.5;
 
 } // namespace
 
-WaveformView::WaveformView(const sim::WaveformRecorder* recorder, QWidget* parent)
-    : QAbstractScrollArea(parent), m_recorder(recorder) {
+WaveformView::WaveformView(const sim::Waveform* waveform, QWidget* parent)
+    : QAbstractScrollArea(parent), m_waveform(waveform) {
     setObjectName(QStringLiteral("waveformView"));
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
     viewport()->setBackgroundRole(QPalette::Base);
@@ -40,18 +40,18 @@ int WaveformView::plotWidth() const {
 }
 
 std::int64_t WaveformView::firstVisibleMs() const {
-    return m_recorder->startMs() +
+    return m_waveform->startMs() +
            static_cast<std::int64_t>(horizontalScrollBar()->value() * m_msPerPixel);
 }
 
 void WaveformView::updateScrollBars() {
-    const double span = static_cast<double>(m_recorder->endMs() - m_recorder->startMs());
+    const double span = static_cast<double>(m_waveform->endMs() - m_waveform->startMs());
     const int total = static_cast<int>(std::ceil(span / m_msPerPixel));
     QScrollBar* horizontal = horizontalScrollBar();
     horizontal->setRange(0, std::max(total - plotWidth() + 20, 0));
     horizontal->setPageStep(plotWidth());
     horizontal->setSingleStep(20);
-    const int rows = static_cast<int>(m_recorder->traces().size());
+    const int rows = static_cast<int>(m_waveform->rows());
     const int visibleRows = std::max((viewport()->height() - kRulerHeight) / kRowHeight, 1);
     verticalScrollBar()->setRange(0, std::max(rows - visibleRows, 0));
     verticalScrollBar()->setPageStep(visibleRows);
@@ -59,13 +59,13 @@ void WaveformView::updateScrollBars() {
         horizontal->setValue(horizontal->maximum());
 }
 
-void WaveformView::setNames(std::function<QString(const lang::Address&)> names) {
-    m_names = std::move(names);
+void WaveformView::setLabels(std::function<QString(int row)> labels) {
+    m_labels = std::move(labels);
     viewport()->update();
 }
 
 void WaveformView::recordingChanged() {
-    if (m_selected >= static_cast<int>(m_recorder->traces().size()))
+    if (m_selected >= static_cast<int>(m_waveform->rows()))
         m_selected = -1;
     updateScrollBars();
     viewport()->update();
@@ -88,7 +88,7 @@ void WaveformView::zoomOut() {
 }
 
 void WaveformView::zoomToFit() {
-    const double span = static_cast<double>(m_recorder->endMs() - m_recorder->startMs());
+    const double span = static_cast<double>(m_waveform->endMs() - m_waveform->startMs());
     m_follow = true;
     m_fitted = true;
     setMsPerPixel(std::max(span, 1.0) / std::max(plotWidth() - 20, 1));
@@ -119,7 +119,7 @@ void WaveformView::wheelEvent(QWheelEvent* event) {
             zoomOut();
         m_follow = false;
         horizontalScrollBar()->setValue(static_cast<int>(
-            (anchor - static_cast<double>(m_recorder->startMs())) / m_msPerPixel - x));
+            (anchor - static_cast<double>(m_waveform->startMs())) / m_msPerPixel - x));
         event->accept();
         return;
     }
@@ -134,7 +134,7 @@ void WaveformView::wheelEvent(QWheelEvent* event) {
 void WaveformView::mousePressEvent(QMouseEvent* event) {
     const int y = static_cast<int>(event->position().y()) - kRulerHeight;
     const int row = y < 0 ? -1 : y / kRowHeight + verticalScrollBar()->value();
-    m_selected = row < static_cast<int>(m_recorder->traces().size()) ? row : -1;
+    m_selected = row < static_cast<int>(m_waveform->rows()) ? row : -1;
     emit selectionChanged(m_selected);
     viewport()->update();
 }
@@ -142,16 +142,12 @@ void WaveformView::mousePressEvent(QMouseEvent* event) {
 void WaveformView::paintEvent(QPaintEvent*) {
     QPainter painter(viewport());
     const int width = viewport()->width();
-    render::WaveformPainter waveform(*m_recorder, palette());
-    waveform.setLabels([this](int row) {
-        const lang::Address& address = m_recorder->traces()[static_cast<std::size_t>(row)].address;
-        const QString name = m_names ? m_names(address) : QString();
-        return QString::fromStdString(lang::toString(address)) +
-               (name.isEmpty() ? QString() : QStringLiteral("  ") + name);
-    });
+    render::WaveformPainter waveform(*m_waveform, palette());
+    if (m_labels)
+        waveform.setLabels(m_labels);
     waveform.paint(painter, width, viewport()->height(),
                    {firstVisibleMs(), m_msPerPixel, verticalScrollBar()->value(), m_selected});
-    if (m_recorder->traces().empty()) {
+    if (m_waveform->rows() == 0) {
         painter.setPen(palette().color(QPalette::PlaceholderText));
         painter.drawText(QRect(kNameWidth, kRulerHeight, width - kNameWidth,
                                viewport()->height() - kRulerHeight),

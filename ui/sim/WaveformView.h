@@ -8,12 +8,8 @@
 #include <cstdint>
 #include <functional>
 
-namespace rs::lang {
-struct Address;
-}
-
 namespace rs::sim {
-class WaveformRecorder;
+class Waveform;
 }
 
 namespace rs::ui {
@@ -29,10 +25,10 @@ public:
     static constexpr int kRulerHeight = render::WaveformPainter::kRulerHeight;
     static constexpr int kRowHeight = render::WaveformPainter::kRowHeight;
 
-    explicit WaveformView(const sim::WaveformRecorder* recorder, QWidget* parent = nullptr);
+    explicit WaveformView(const sim::Waveform* waveform, QWidget* parent = nullptr);
 
-    // The symbolic name shown beside a trace's address, empty for none.
-    void setNames(std::function<QString(const lang::Address&)> names);
+    // The label of each row; its address as the target writes it when not set.
+    void setLabels(std::function<QString(int row)> labels);
 
     // The recording grew or changed: new extent, and the end shown when following.
     void recordingChanged();
@@ -63,8 +59,8 @@ private:
     void updateScrollBars();
     int plotWidth() const;
 
-    const sim::WaveformRecorder* m_recorder;
-    std::function<QString(const lang::Address&)> m_names;
+    const sim::Waveform* m_waveform;
+    std::function<QString(int row)> m_labels;
     double m_msPerPixel = 1.0;
     bool m_follow = true;
     bool m_fitted = false; // zoomToFit() was the last zoom: a resize fits again
