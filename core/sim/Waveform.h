@@ -87,6 +87,39 @@ public:
     const std::vector<Trace>& traces() const { return m_traces; }
     bool isEmpty() const { return !m_sampled; }
 
+    // The recorded variables in address order, as a VCD lists them.
+    std::vector<Operand> sortedAddresses() const {
+        std::vector<Operand> addresses;
+        for (const Trace* trace : sorted())
+            addresses.push_back(trace->address);
+        return addresses;
+    }
+    // Every change replayed in time order: sample(timeMs, values) gets the
+    // values of all variables then, in sortedAddresses() order. A variable
+    // added during the run has its first recorded value before that.
+    template <class Sample> void replay(const Sample& sample) const {
+        const std::vector<const Trace*> order = sorted();
+        std::vector<std::int64_t> times;
+        for (const Trace* trace : order)
+            for (const Change& change : trace->changes)
+                times.push_back(change.timeMs);
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end()), times.end());
+        std::vector<std::size_t> next(order.size(), 0);
+        std::vector<std::int64_t> values(order.size(), 0);
+        for (std::size_t i = 0; i < order.size(); ++i)
+            if (!order[i]->changes.empty())
+                values[i] = order[i]->changes.front().value;
+        for (std::int64_t time : times) {
+            for (std::size_t i = 0; i < order.size(); ++i) {
+                const auto& changes = order[i]->changes;
+                while (next[i] < changes.size() && changes[next[i]].timeMs <= time)
+                    values[i] = changes[next[i]++].value;
+            }
+            sample(time, values);
+        }
+    }
+
     std::size_t rows() const override { return m_traces.size(); }
     const std::vector<WaveformChange>& changes(std::size_t row) const override {
         return m_traces[row].changes;
@@ -95,6 +128,15 @@ public:
     std::int64_t endMs() const override { return m_endMs; }
 
 private:
+    std::vector<const Trace*> sorted() const {
+        std::vector<const Trace*> order;
+        for (const Trace& trace : m_traces)
+            order.push_back(&trace);
+        std::sort(order.begin(), order.end(),
+                  [](const Trace* a, const Trace* b) { return a->address < b->address; });
+        return order;
+    }
+
     std::vector<Trace> m_traces;
     std::int64_t m_startMs = 0;
     std::int64_t m_endMs = 0;

@@ -5,7 +5,6 @@
 #include "VcdTrace.h"
 
 #include <algorithm>
-#include <set>
 
 namespace rs::sim {
 
@@ -30,34 +29,10 @@ bool WaveformRecorder::isBit(std::size_t row) const {
 }
 
 std::string WaveformRecorder::vcd(const std::string& title) const {
-    std::vector<const Trace*> sorted;
-    for (const Trace& trace : traces())
-        sorted.push_back(&trace);
-    std::sort(sorted.begin(), sorted.end(),
-              [](const Trace* a, const Trace* b) { return a->address < b->address; });
-    std::vector<lang::Address> addresses;
-    std::set<std::int64_t> times;
-    for (const Trace* trace : sorted) {
-        addresses.push_back(trace->address);
-        for (const Change& change : trace->changes)
-            times.insert(change.timeMs);
-    }
-    VcdTrace out(addresses);
-    // Replays the changes in time order; a variable added during the run has
-    // its first recorded value before that.
-    std::vector<std::size_t> next(sorted.size(), 0);
-    std::vector<std::int64_t> values(sorted.size(), 0);
-    for (std::size_t i = 0; i < sorted.size(); ++i)
-        if (!sorted[i]->changes.empty())
-            values[i] = sorted[i]->changes.front().value;
-    for (std::int64_t time : times) {
-        for (std::size_t i = 0; i < sorted.size(); ++i) {
-            const auto& changes = sorted[i]->changes;
-            while (next[i] < changes.size() && changes[next[i]].timeMs <= time)
-                values[i] = changes[next[i]++].value;
-        }
-        out.sample(time, values);
-    }
+    VcdTrace out(sortedAddresses());
+    replay([&out](std::int64_t timeMs, const std::vector<std::int64_t>& values) {
+        out.sample(timeMs, values);
+    });
     return out.text(title);
 }
 

@@ -54,6 +54,8 @@ QString Pl110Simulation::prepare(bool powerOn) {
         else
             m_engine->force(address, value);
     }
+    m_recorder.clear();
+    m_recorder.sample(*m_engine);
     return {};
 }
 
@@ -81,7 +83,7 @@ QString Pl110Simulation::singleScan() {
     stop();
     if (QString error = prepare(false); !error.isEmpty())
         return error;
-    m_engine->scan();
+    scanOnce();
     Q_EMIT scanned();
     return {};
 }
@@ -104,13 +106,22 @@ void Pl110Simulation::tick() {
     const std::int64_t due = m_clock.elapsed() + m_clockOffsetMs;
     int scans = 0;
     while (m_engine->timeMs() + m_engine->cycleMs() <= due && scans < kMaxScansPerTick) {
-        m_engine->scan();
+        scanOnce();
         ++scans;
     }
     if (scans == kMaxScansPerTick) // fell behind: virtual time goes on from now
         m_clockOffsetMs = m_engine->timeMs() - m_clock.elapsed();
     if (scans > 0)
         Q_EMIT scanned();
+}
+
+void Pl110Simulation::scanOnce() {
+    m_engine->scan();
+    m_recorder.sample(*m_engine);
+}
+
+bool Pl110Simulation::record(const pl110::Address& address) {
+    return m_recorder.add(address, m_engine.get());
 }
 
 void Pl110Simulation::set(const pl110::Address& address, std::int64_t value) {
@@ -149,7 +160,9 @@ Pl110Simulation::ScenarioRun Pl110Simulation::runScenario(const QString& path) {
         return run;
     const pl110::Scenario scenario =
         pl110::parseScenario(file.text, pl110::ScenarioNames(m_document->program()));
-    run.report = pl110::runScenario(QFileInfo(path).fileName().toStdString(), scenario, *m_engine);
+    run.report =
+        pl110::runScenario(QFileInfo(path).fileName().toStdString(), scenario, *m_engine,
+                           [this](const pl110::ScanEngine& engine) { m_recorder.sample(engine); });
     Q_EMIT scanned();
     return run;
 }

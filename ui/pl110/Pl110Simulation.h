@@ -3,6 +3,7 @@
 
 #ifndef Q_MOC_RUN
 #include "pl110/ScanEngine.h"
+#include "pl110/WaveformRecorder.h"
 #include "sim/ScenarioRunner.h"
 #endif
 
@@ -45,6 +46,12 @@ public:
     void set(const pl110::Address& address, std::int64_t value);
     void release(const pl110::Address& address);
     bool isForced(const pl110::Address& address) const { return m_forced.contains(address); }
+
+    // What the chosen variables did, scan by scan, since power on.
+    pl110::WaveformRecorder& recorder() { return m_recorder; }
+    const pl110::WaveformRecorder& recorder() const { return m_recorder; }
+    // Records a variable from now on; false when it is recorded already.
+    bool record(const pl110::Address& address);
     const std::map<pl110::Address, std::int64_t>& forced() const { return m_forced; }
 
     struct ScenarioRun {
@@ -66,6 +73,7 @@ Q_SIGNALS:
 
 private:
     void tick();
+    void scanOnce();
     // An engine at power on with the user's inputs and forces, unless one runs
     // the current program already.
     QString prepare(bool powerOn);
@@ -73,6 +81,7 @@ private:
     Pl110Document* m_document;
     std::unique_ptr<pl110::ScanEngine> m_engine;
     std::map<pl110::Address, std::int64_t> m_forced; // inputs set count too: the user holds them
+    pl110::WaveformRecorder m_recorder;
     QTimer m_timer;
     QElapsedTimer m_clock;
     std::int64_t m_clockOffsetMs = 0; // virtual time minus wall-clock time since start

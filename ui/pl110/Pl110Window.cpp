@@ -9,6 +9,7 @@
 #include "pl110/Pl110LineDialog.h"
 #include "pl110/Pl110NamesPage.h"
 #include "pl110/Pl110Simulation.h"
+#include "pl110/Pl110WaveformPanel.h"
 #include "pl110/ProgramText.h"
 #include "pl110/RungEditing.h"
 #include "pl110/Rungs.h"
@@ -58,7 +59,8 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
       m_pages(new QTabWidget(this)), m_ladder(new Pl110LadderView(this)),
       m_editor(new ProgramEditor(new Pl110Lexer, this)),
       m_names(new Pl110NamesPage(document, this)), m_problems(new QListWidget(this)),
-      m_scenarioOutput(new QPlainTextEdit(this)) {
+      m_scenarioOutput(new QPlainTextEdit(this)),
+      m_waveform(new Pl110WaveformPanel(document, m_simulation, this)) {
     setObjectName(QStringLiteral("pl110Window"));
     setAttribute(Qt::WA_DeleteOnClose);
     document->setParent(this);
@@ -83,7 +85,12 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
     scenarioDock->setObjectName(QStringLiteral("pl110ScenarioDock"));
     scenarioDock->setWidget(m_scenarioOutput);
     addDockWidget(Qt::BottomDockWidgetArea, scenarioDock);
+    auto* waveformDock = new QDockWidget(tr("Waveform"), this);
+    waveformDock->setObjectName(QStringLiteral("pl110WaveformDock"));
+    waveformDock->setWidget(m_waveform);
+    addDockWidget(Qt::BottomDockWidgetArea, waveformDock);
     tabifyDockWidget(problemsDock, scenarioDock);
+    tabifyDockWidget(problemsDock, waveformDock);
     problemsDock->raise();
     resizeDocks({problemsDock}, {150}, Qt::Vertical);
 
@@ -124,6 +131,10 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
 
     createActions();
     followDocument();
+    // Every named variable is plotted from the start; more are added by hand.
+    for (const pl110::Line& line : document->program().declarations)
+        if (const auto* declaration = std::get_if<pl110::NameDeclaration>(&line.body))
+            m_simulation->record(declaration->variable.address);
     m_ladder->setFocus();
     resize(1180, 760);
 }
@@ -321,6 +332,21 @@ void Pl110Window::createLadderActions(
             if (element->shape != ladder::Shape::Box && !element->address.isEmpty())
                 operandClicked(element->address);
     });
+    QAction* plot =
+        onLadder(action(tr("Plot in &Waveform"), "pl110PlotAction", {}), {QKeySequence(Qt::Key_W)});
+    plot->setStatusTip(tr("Record the selected contact's or output's variable in the waveform"));
+    connect(plot, &QAction::triggered, this, [this] {
+        const ladder::ElementLayout* element = m_ladder->selectedElement();
+        if (!element || element->address.isEmpty())
+            return;
+        // A box's address line holds more than its variable ("T1 PT 80").
+        const QString variable = element->address.section(u' ', 0, 0);
+        const QString error = m_waveform->add(variable);
+        statusBar()->showMessage(
+            error.isEmpty() ? tr("%1 is plotted in the waveform").arg(variable) : error, 5000);
+        if (error.isEmpty())
+            m_waveform->parentWidget()->raise();
+    });
     QAction* text =
         action(tr("Ladder or &Text"), "pl110LadderOrTextAction", QKeySequence(Qt::Key_F6));
     text->setStatusTip(tr("Switch between the ladder and the program text at the same rung"));
@@ -341,7 +367,7 @@ void Pl110Window::createLadderActions(
     ladder->addSeparator();
     ladder->addActions({up, down});
     ladder->addSeparator();
-    ladder->addActions({toggle, text});
+    ladder->addActions({toggle, plot, text});
     // Moving the selection: keys only.
     const std::array moves = {std::tuple{Qt::Key_Left, -1, 0}, std::tuple{Qt::Key_Right, 1, 0},
                               std::tuple{Qt::Key_Up, 0, -1}, std::tuple{Qt::Key_Down, 0, 1}};
@@ -601,6 +627,7 @@ void Pl110Window::refreshLive() {
     m_ladder->setPower(engine ? std::optional(render::snapshotOfMarks(engine->marks()))
                               : std::nullopt);
     m_names->showValues(engine);
+    m_waveform->recordingChanged();
     if (!engine)
         return;
     const QString seconds =

@@ -24,6 +24,7 @@ class Pl110Document;
 class Pl110LadderView;
 class Pl110NamesPage;
 class Pl110Simulation;
+class Pl110WaveformPanel;
 class ProgramEditor;
 
 // The window of one PL110 program (docs/pl110.md, "The window"): its ladder,
@@ -98,6 +99,7 @@ private:
     Pl110NamesPage* m_names;
     QListWidget* m_problems;
     QPlainTextEdit* m_scenarioOutput;
+    Pl110WaveformPanel* m_waveform;
     QTimer m_typing;
     QTimer m_liveRefresh;
     bool m_settingEditor = false;

@@ -4,6 +4,7 @@
 #include "pl110/Pl110LadderView.h"
 #include "pl110/Pl110NamesPage.h"
 #include "pl110/Pl110Simulation.h"
+#include "pl110/Pl110WaveformPanel.h"
 #include "pl110/ProgramText.h"
 #include "pl110/Rungs.h"
 #include "text/ProgramEditor.h"
@@ -250,6 +251,32 @@ TEST_F(Pl110WindowTest, AScenarioRunsToItsEndAndItsResultsAreShown) {
     ASSERT_TRUE(window->runScenario(failing).isEmpty());
     EXPECT_TRUE(output->toPlainText().contains(QStringLiteral("wrong.scn:1: expect Pump 1 failed")))
         << output->toPlainText().toStdString();
+}
+
+TEST_F(Pl110WindowTest, TheWaveformRecordsTheNamedVariablesScanByScanAndExportsThem) {
+    const rs::pl110::WaveformRecorder& recorder = window->simulation()->recorder();
+    EXPECT_EQ(recorder.rows(), 12u); // every declared name
+    auto* panel = window->findChild<rs::ui::Pl110WaveformPanel*>();
+    ASSERT_NE(panel, nullptr);
+    EXPECT_EQ(panel->add(QStringLiteral("T1")), QStringLiteral("T1 is plotted already"));
+    EXPECT_TRUE(panel->add(QStringLiteral("Nowhere")).contains(QStringLiteral("Nowhere")));
+    EXPECT_TRUE(panel->add(QStringLiteral("SM0.1")).isEmpty());
+    ASSERT_TRUE(window->runScenario(kFillingScenario).isEmpty());
+    EXPECT_EQ(recorder.startMs(), 0);
+    EXPECT_EQ(recorder.endMs(), window->simulation()->engine()->timeMs());
+    // The pump went on and off twice: four changes after power on.
+    const auto pump =
+        std::find_if(recorder.traces().begin(), recorder.traces().end(),
+                     [](const auto& trace) { return trace.address == pl110Address("Q1"); });
+    ASSERT_NE(pump, recorder.traces().end());
+    EXPECT_EQ(pump->changes.size(), 5u);
+    const QString vcd = directory.filePath(QStringLiteral("run.vcd"));
+    ASSERT_TRUE(panel->exportVcd(vcd).isEmpty());
+    QFile file(vcd);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    EXPECT_TRUE(text.contains("$scope module pl110 $end")) << text.toStdString();
+    EXPECT_TRUE(text.contains(" Q1 $end")) << text.toStdString();
 }
 
 TEST_F(Pl110WindowTest, SavingWritesTheTextAndAFailedSaveKeepsTheFileAndTheChanges) {

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pl110/Pl110WaveformPanel.h"
+
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110Simulation.h"
+#include "pl110/Scenario.h"
+#include "project/ProjectFile.h"
+#include "shell/StatusColors.h"
+#include "sim/WaveformView.h"
+
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace rs::ui {
+
+Pl110WaveformPanel::Pl110WaveformPanel(Pl110Document* document, Pl110Simulation* simulation,
+                                       QWidget* parent)
+    : QWidget(parent), m_document(document), m_simulation(simulation),
+      m_view(new WaveformView(&simulation->recorder(), this)), m_input(new QLineEdit(this)),
+      m_message(new QLabel(this)), m_remove(new QToolButton(this)) {
+    setObjectName(QStringLiteral("pl110WaveformPanel"));
+    m_input->setObjectName(QStringLiteral("pl110WaveformInput"));
+    m_input->setPlaceholderText(tr("Add a variable to plot: an address or a name"));
+    m_input->setMinimumWidth(160);
+    markAsError(m_message);
+    m_message->hide();
+    const auto button = [this](const QString& text, const QString& tip) {
+        auto* created = new QToolButton(this);
+        created->setText(text);
+        created->setToolTip(tip);
+        return created;
+    };
+    m_remove->setText(tr("Remove"));
+    m_remove->setToolTip(tr("Stop plotting the chosen variable"));
+    m_remove->setEnabled(false);
+    QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
+    QToolButton* zoomOut =
+        button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
+    QToolButton* fit = button(tr("Fit"), tr("Show the whole recording"));
+    QToolButton* exportButton =
+        button(tr("Export VCD..."), tr("Write the recording as a Value Change Dump, for GTKWave"));
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_input, 1);
+    for (QToolButton* b : {m_remove, zoomIn, zoomOut, fit, exportButton})
+        top->addWidget(b);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(top);
+    layout->addWidget(m_message);
+    layout->addWidget(m_view, 1);
+
+    connect(m_input, &QLineEdit::returnPressed, this, [this] {
+        const QString error = add(m_input->text());
+        m_message->setText(error);
+        m_message->setVisible(!error.isEmpty());
+        if (error.isEmpty())
+            m_input->clear();
+    });
+    connect(m_remove, &QToolButton::clicked, this, [this] {
+        const int row = m_view->selectedRow();
+        const auto& traces = m_simulation->recorder().traces();
+        if (row < 0 || row >= static_cast<int>(traces.size()))
+            return;
+        m_simulation->recorder().remove(traces[static_cast<std::size_t>(row)].address);
+        m_remove->setEnabled(false);
+        recordingChanged();
+    });
+    connect(m_view, &WaveformView::selectionChanged, this,
+            [this](int row) { m_remove->setEnabled(row >= 0); });
+    connect(zoomIn, &QToolButton::clicked, m_view, &WaveformView::zoomIn);
+    connect(zoomOut, &QToolButton::clicked, m_view, &WaveformView::zoomOut);
+    connect(fit, &QToolButton::clicked, m_view, &WaveformView::zoomToFit);
+    connect(exportButton, &QToolButton::clicked, this, [this] {
+        if (const QString error = exportVcd(); !error.isEmpty())
+            QMessageBox::warning(this, tr("Export VCD"), error);
+    });
+    m_view->setLabels([this](int row) {
+        const pl110::Address& address =
+            m_simulation->recorder().traces()[static_cast<std::size_t>(row)].address;
+        QString label = QString::fromStdString(pl110::toString(address));
+        for (const pl110::Line& line : m_document->program().declarations)
+            if (const auto* declaration = std::get_if<pl110::NameDeclaration>(&line.body);
+                declaration && declaration->variable.address == address)
+                label += QStringLiteral("  ") + QString::fromStdString(declaration->name);
+        return label;
+    });
+}
+
+QString Pl110WaveformPanel::add(const QString& variable) {
+    const pl110::ScenarioNames names(m_document->program());
+    pl110::Address address;
+    std::string error;
+    if (!names.resolve(variable.trimmed().toStdString(), address, error))
+        return QString::fromStdString(error);
+    if (!m_simulation->record(address))
+        return tr("%1 is plotted already").arg(variable.trimmed());
+    recordingChanged();
+    return {};
+}
+
+QString Pl110WaveformPanel::exportVcd(const QString& requested) {
+    if (m_simulation->recorder().isEmpty())
+        return tr("Nothing is recorded yet: start the simulation or run a scenario.");
+    QString path = requested;
+    if (path.isEmpty()) {
+        path = QFileDialog::getSaveFileName(this, tr("Export VCD"), QStringLiteral("waveform.vcd"),
+                                            tr("Value Change Dumps (*.vcd);;All files (*)"));
+        if (path.isEmpty())
+            return {};
+    }
+    return project::writeTextFile(path, m_simulation->recorder().vcd("Rungsmith PL110 simulation"));
+}
+
+void Pl110WaveformPanel::recordingChanged() {
+    m_view->recordingChanged();
+}
+
+} // namespace rs::ui
