@@ -13,11 +13,11 @@ using namespace rs;
 
 namespace {
 
-const std::string kHead = "! id_pluto:00=000000000000\n"
-                          "! type_pluto:00=A20,is3\n"
-                          "! I0.12=EStop\n"
-                          "! pgm_pluto:00\n"
-                          "S0.0_0\n";
+const std::string kDraftHead = "! id_pluto:00=000000000000\n"
+                               "! type_pluto:00=A20,is3\n"
+                               "! I0.12=EStop\n"
+                               "! pgm_pluto:00\n"
+                               "S0.0_0\n";
 
 // The first two statements latch M0.5, which nothing else uses, and light a
 // lamp after a delay; the third uses M0.6, so M0.6 stays a pin.
@@ -32,7 +32,7 @@ struct Split {
 };
 
 Split split(const std::string& code, std::size_t chosen) {
-    auto read = project::readProject(kHead + code);
+    auto read = project::readProject(kDraftHead + code);
     EXPECT_TRUE(read.ok());
     Split result{read.project, {}, {}};
     const auto& lines = read.project.program.units.at(0).steps.at(0).lines;
@@ -88,14 +88,15 @@ TEST(BlockDraft, TheBlockReadsBackAndItsInstanceExpandsToTheSameStatements) {
         {read.library, QStringLiteral("mine.rslib"), blocks::LibraryOrigin::User});
     draft.instance.library = "Mine";
     const std::string project =
-        kHead + ";" + blocks::recordText(draft.instance) + "\n;@end\nQ0.4 = M0.6\n";
+        kDraftHead + ";" + blocks::recordText(draft.instance) + "\n;@end\nQ0.4 = M0.6\n";
     const auto expanded = blocks::readProjectWithInstances(project, set);
     ASSERT_TRUE(expanded.read.ok());
     EXPECT_TRUE(expanded.expanded);
     const auto& lines = expanded.read.project.program.units.at(0).steps.at(0).lines;
-    EXPECT_EQ(
-        printed(lines),
-        printed(project::readProject(kHead + kCode).project.program.units.at(0).steps.at(0).lines));
+    EXPECT_EQ(printed(lines), printed(project::readProject(kDraftHead + kCode)
+                                          .project.program.units.at(0)
+                                          .steps.at(0)
+                                          .lines));
     const auto statuses = blocks::instanceStatuses(expanded.read.project.program, 0, set);
     ASSERT_EQ(statuses.size(), 1U);
     EXPECT_EQ(statuses[0].standing, blocks::Standing::AsMade);

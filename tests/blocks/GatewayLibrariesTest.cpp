@@ -2,6 +2,7 @@
 // The shipped gateway libraries (docs/gateway.md): Ext01_1's ToGateway blocks
 // and Ext01's Ext_Sig, Ext_Val and ExtVarBlock written as body-less ;@block
 // records are expanded, compiled and run with a gateway on the bus.
+#include "DiagnosticsText.h"
 #include "blocks/LibraryReader.h"
 #include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
@@ -14,6 +15,8 @@
 #include <sstream>
 
 using namespace rs;
+using rs::test::addressOf;
+using rs::test::diagnosticsText;
 
 namespace {
 
@@ -31,17 +34,6 @@ blocks::LibrarySet gatewayLibraries() {
             {read.library, QString::fromLatin1(name) + ".rslib", blocks::LibraryOrigin::Standard});
     }
     return set;
-}
-
-std::string messages(const lang::Diagnostics& diagnostics) {
-    std::string text;
-    for (const auto& d : diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message + "\n";
-    return text;
-}
-
-lang::Address address(const char* word) {
-    return lang::readAddressWord(word).address;
 }
 
 } // namespace
@@ -67,10 +59,10 @@ TEST(GatewayLibraries, ABlockSendsAndAnotherReceivesThroughTheGateway) {
                              ";@block Ext_Val BlockNo=\"0\" Valid=\"M2.1\" Reg_1=\"R2.5\"\n"
                              ";@end\n";
     const auto read = blocks::readProjectWithInstances(text, gatewayLibraries());
-    ASSERT_TRUE(read.read.ok()) << messages(read.read.diagnostics);
+    ASSERT_TRUE(read.read.ok()) << diagnosticsText(read.read.diagnostics);
     const compiler::CompileResult compiled =
         blocks::compileProject(read.read.project, read.read.diagnostics);
-    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     sim::Simulation simulation(compiled.images);
     gateway::GatewayNode node(0, read.read.project.gateways.at(0));
     const auto scan = [&](int scans) {
@@ -79,16 +71,16 @@ TEST(GatewayLibraries, ABlockSendsAndAnotherReceivesThroughTheGateway) {
             node.exchange(simulation);
         }
     };
-    simulation.set(address("I1.0"), 1);
-    simulation.set(address("I1.1"), 1);
+    simulation.set(addressOf("I1.0"), 1);
+    simulation.set(addressOf("I1.1"), 1);
     scan(1);
-    EXPECT_EQ(simulation.value(address("M1.0")), 1);
+    EXPECT_EQ(simulation.value(addressOf("M1.0")), 1);
     EXPECT_EQ(node.additionalData(0), 300u | (1u << 19)); // Reg_0, then Bit_3 at bit 16 + 3
-    EXPECT_EQ(simulation.value(address("M2.0")), 0);
+    EXPECT_EQ(simulation.value(addressOf("M2.0")), 0);
     node.answer({1, 16, 1, 4, {0x0001, 0x8000, 0, 77}});
     scan(11);
-    EXPECT_EQ(simulation.value(address("M2.0")), 1);
-    EXPECT_EQ(simulation.value(address("Q2.10")), 1);
-    EXPECT_EQ(simulation.value(address("M2.1")), 1);
-    EXPECT_EQ(simulation.value(address("R2.5")), 77);
+    EXPECT_EQ(simulation.value(addressOf("M2.0")), 1);
+    EXPECT_EQ(simulation.value(addressOf("Q2.10")), 1);
+    EXPECT_EQ(simulation.value(addressOf("M2.1")), 1);
+    EXPECT_EQ(simulation.value(addressOf("R2.5")), 77);
 }

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "DiagnosticsText.h"
 #include "blocks/LibraryReader.h"
 #include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
@@ -10,13 +11,14 @@
 #include <algorithm>
 
 using namespace rs;
+using rs::test::diagnosticsText;
 
 namespace {
 
 // A library for the tests: a latch with a default-1 enable, a register
 // output, a timer with a time of 0 and one of 0s50 by default, and a block
 // that needs many memories.
-const char* kLibrary = R"(rungsmith-library 1
+const char* kExpansionLibrary = R"(rungsmith-library 1
 library Test
 version 1.0
 block Latch
@@ -53,7 +55,7 @@ block Greedy
 )";
 
 std::string greedyLibrary() {
-    std::string text = kLibrary;
+    std::string text = kExpansionLibrary;
     for (int i = 0; i < 250; ++i)
         text += "    private m" + std::to_string(i) + " memory\n";
     for (int i = 0; i < 250; ++i)
@@ -62,7 +64,7 @@ std::string greedyLibrary() {
     return text;
 }
 
-blocks::LibrarySet libraries() {
+blocks::LibrarySet expansionLibraries() {
     blocks::LibrarySet set;
     const auto read = blocks::readLibrary(greedyLibrary());
     EXPECT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : read.diagnostics[0].message);
@@ -71,28 +73,21 @@ blocks::LibrarySet libraries() {
     return set;
 }
 
-const std::string kHead = "! id_pluto:00=000000000000\n"
-                          "! type_pluto:00=A20,is3\n"
-                          "! I0.0=Start\n"
-                          "! pgm_pluto:00\n"
-                          "S0.0_0\n";
+const std::string kExpansionHead = "! id_pluto:00=000000000000\n"
+                                   "! type_pluto:00=A20,is3\n"
+                                   "! I0.0=Start\n"
+                                   "! pgm_pluto:00\n"
+                                   "S0.0_0\n";
 
 blocks::ProjectWithInstances read(const std::string& code) {
-    return blocks::readProjectWithInstances(kHead + code, libraries());
-}
-
-std::string messages(const lang::Diagnostics& diagnostics) {
-    std::string text;
-    for (const auto& d : diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message + "\n";
-    return text;
+    return blocks::readProjectWithInstances(kExpansionHead + code, expansionLibraries());
 }
 
 TEST(InstanceExpansion, ABodylessRecordIsExpandedAndRecordsWhatItWasGiven) {
     const auto result = read(";@block Latch S=\"Start\" R=\"I0.1\" Q=\"Q0.2\"\n"
                              ";@end\n"
                              "Q0.3 = I0.2\n");
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     EXPECT_TRUE(result.expanded);
     const std::string text = project::writeProject(result.read.project);
     // Private memories and registers come from the top, below nothing the unit
@@ -114,25 +109,25 @@ TEST(InstanceExpansion, ABodylessRecordIsExpandedAndRecordsWhatItWasGiven) {
 TEST(InstanceExpansion, TheSavedExpansionReadsBackUnchangedWithoutWarnings) {
     const auto first = read(";@block Latch S=\"Start\" Q=\"Q0.2\"\n;@end\n"
                             ";@block Latch S=\"I0.1\" Q=\"Q0.3\"\n;@end\n");
-    ASSERT_TRUE(first.read.ok()) << messages(first.read.diagnostics);
+    ASSERT_TRUE(first.read.ok()) << diagnosticsText(first.read.diagnostics);
     const std::string saved = project::writeProject(first.read.project);
-    const auto again = blocks::readProjectWithInstances(saved, libraries());
-    EXPECT_TRUE(again.read.diagnostics.empty()) << messages(again.read.diagnostics);
+    const auto again = blocks::readProjectWithInstances(saved, expansionLibraries());
+    EXPECT_TRUE(again.read.diagnostics.empty()) << diagnosticsText(again.read.diagnostics);
     EXPECT_FALSE(again.expanded);
     EXPECT_EQ(project::writeProject(again.read.project), saved);
     // Without the library the saved file is still the same program.
     const auto alone = blocks::readProjectWithInstances(saved, blocks::LibrarySet{});
-    EXPECT_TRUE(alone.read.diagnostics.empty()) << messages(alone.read.diagnostics);
+    EXPECT_TRUE(alone.read.diagnostics.empty()) << diagnosticsText(alone.read.diagnostics);
     EXPECT_EQ(project::writeProject(alone.read.project), saved);
 }
 
 TEST(InstanceExpansion, TwoInstancesGetPrivateVariablesOfTheirOwnAndKeepTheirOwnState) {
     const auto result = read(";@block Latch S=\"I0.0\" R=\"I0.1\" Q=\"Q0.2\"\n;@end\n"
                              ";@block Latch S=\"I0.2\" R=\"I0.3\" Q=\"Q0.3\"\n;@end\n");
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     const std::string text = project::writeProject(result.read.project);
     const compiler::CompileResult compiled = compiler::compileText(text);
-    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     sim::Simulation simulation(compiled.images);
     const sim::OperandNames names(result.read.project);
     const sim::ScenarioReport report =
@@ -150,7 +145,7 @@ TEST(InstanceExpansion, TwoInstancesGetPrivateVariablesOfTheirOwnAndKeepTheirOwn
 TEST(InstanceExpansion, AnOpenTimeOfZeroIsARegisterNothingWritesAndOtherTimesAreTheirDefault) {
     // TON(0s00) does not compile: the time 0 is a register holding 0.
     const auto result = read(";@block Delay In=\"Start\" Fast=\"Q0.2\" Slow=\"Q0.3\"\n;@end\n");
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     const std::string text = project::writeProject(result.read.project);
     EXPECT_NE(text.find(";@block Delay In=\"Start\" Fast=\"Q0.2\" Slow=\"Q0.3\" lib=\"Test\" "
                         "version=\"1.0\" #pin.Short=\"R0.149\"\n"
@@ -160,7 +155,7 @@ TEST(InstanceExpansion, AnOpenTimeOfZeroIsARegisterNothingWritesAndOtherTimesAre
               std::string::npos)
         << text;
     const compiler::CompileResult compiled = compiler::compileText(text);
-    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     sim::Simulation simulation(compiled.images);
     const sim::OperandNames names(result.read.project);
     const sim::ScenarioReport report =
@@ -176,7 +171,7 @@ TEST(InstanceExpansion, AnOpenTimeOfZeroIsARegisterNothingWritesAndOtherTimesAre
 TEST(InstanceExpansion, RecordedPrivateVariablesAreKept) {
     const auto result = read(";@block Latch S=\"I0.0\" Q=\"Q0.2\" #q=\"M0.7\" #pin.Enable=\"M0.8\" "
                              "#pin.Count=\"R0.9\"\n;@end\n");
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     const std::string text = project::writeProject(result.read.project);
     EXPECT_NE(text.find("S(M0.7) = I0.0 * M0.8\n"), std::string::npos) << text;
     EXPECT_NE(text.find("(R0.9++) = P(I0.0)\n"), std::string::npos) << text;
@@ -228,7 +223,7 @@ TEST(InstanceExpansion, AUnitWithoutFreeMemoriesLeftSaysSo) {
                              ";@block Greedy In=\"I0.1\"\n;@end\n"
                              ";@block Greedy In=\"I0.2\"\n;@end\n");
     const auto& d = result.read.diagnostics;
-    ASSERT_EQ(lang::errorCount(d), 1) << messages(d);
+    ASSERT_EQ(lang::errorCount(d), 1) << diagnosticsText(d);
     EXPECT_EQ(d.front().line, 10);
     EXPECT_EQ(d.front().message.rfind("Greedy: unit 0 has no free memory left for the "
                                       "instance's m",
@@ -242,8 +237,8 @@ TEST(InstanceExpansion, EditedStatementsAreKeptWithAWarningAndAnUnknownBlockWith
     std::string saved = project::writeProject(first.read.project);
     ASSERT_NE(saved.find("\nQ0.2 = M0."), std::string::npos) << saved;
     saved.insert(saved.find("\nQ0.2 = M0.") + 8, "/");
-    const auto edited = blocks::readProjectWithInstances(saved, libraries());
-    ASSERT_EQ(edited.read.diagnostics.size(), 1u) << messages(edited.read.diagnostics);
+    const auto edited = blocks::readProjectWithInstances(saved, expansionLibraries());
+    ASSERT_EQ(edited.read.diagnostics.size(), 1u) << diagnosticsText(edited.read.diagnostics);
     EXPECT_EQ(edited.read.diagnostics[0].severity, lang::Severity::Warning);
     EXPECT_EQ(edited.read.diagnostics[0].line, 6);
     EXPECT_NE(edited.read.diagnostics[0].message.find("edited by hand"), std::string::npos);
@@ -251,16 +246,16 @@ TEST(InstanceExpansion, EditedStatementsAreKeptWithAWarningAndAnUnknownBlockWith
 
     std::string unknown = saved;
     unknown.replace(unknown.find(";@block Latch"), 13, ";@block Gone");
-    const auto kept = blocks::readProjectWithInstances(unknown, libraries());
-    EXPECT_TRUE(kept.read.diagnostics.empty()) << messages(kept.read.diagnostics);
+    const auto kept = blocks::readProjectWithInstances(unknown, expansionLibraries());
+    EXPECT_TRUE(kept.read.diagnostics.empty()) << diagnosticsText(kept.read.diagnostics);
 }
 
 TEST(InstanceExpansion, AnotherVersionOfTheBlockIsPointedOut) {
     const auto first = read(";@block Latch S=\"Start\" Q=\"Q0.2\"\n;@end\n");
     std::string saved = project::writeProject(first.read.project);
     saved.replace(saved.find("version=\"2.0\""), 13, "version=\"1.0\"");
-    const auto older = blocks::readProjectWithInstances(saved, libraries());
-    ASSERT_EQ(older.read.diagnostics.size(), 1u) << messages(older.read.diagnostics);
+    const auto older = blocks::readProjectWithInstances(saved, expansionLibraries());
+    ASSERT_EQ(older.read.diagnostics.size(), 1u) << diagnosticsText(older.read.diagnostics);
     EXPECT_EQ(older.read.diagnostics[0].message,
               "Latch is version 2.0 in its library; this instance was made by 1.0");
 }

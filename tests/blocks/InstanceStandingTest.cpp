@@ -10,7 +10,7 @@ using namespace rs;
 
 namespace {
 
-const char* kLibrary = R"(rungsmith-library 1
+const char* kStandingLibrary = R"(rungsmith-library 1
 library Test
 version 1.0
 block Latch
@@ -26,9 +26,9 @@ block Latch
     body {Q} = {#q}
 )";
 
-blocks::LibrarySet libraries() {
+blocks::LibrarySet standingLibraries() {
     blocks::LibrarySet set;
-    const auto read = blocks::readLibrary(kLibrary);
+    const auto read = blocks::readLibrary(kStandingLibrary);
     EXPECT_TRUE(read.ok());
     set.libraries.push_back(
         {read.library, QStringLiteral("test.rslib"), blocks::LibraryOrigin::User});
@@ -38,14 +38,14 @@ blocks::LibrarySet libraries() {
 // The project as reading it from a file gives it: instances expanded.
 project::Project expanded(const std::string& code) {
     auto read = blocks::readProjectWithInstances(
-        "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n" + code, libraries());
+        "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\n" + code, standingLibraries());
     EXPECT_TRUE(read.read.ok());
     return read.read.project;
 }
 
 std::vector<blocks::Standing> standings(const project::Project& project) {
     std::vector<blocks::Standing> found;
-    const auto set = libraries();
+    const auto set = standingLibraries();
     for (const auto& status : blocks::instanceStatuses(project.program, 0, set))
         found.push_back(status.standing);
     return found;
@@ -60,7 +60,7 @@ TEST(InstanceStanding, AnExpandedInstanceIsAsItsBlockMakesIt) {
                                   ";@block Latch S=\"I0.1\" Q=\"Q0.3\"\n;@end\n");
     EXPECT_EQ(standings(project),
               (std::vector{blocks::Standing::AsMade, blocks::Standing::AsMade}));
-    const auto set = libraries(); // the statuses point into it
+    const auto set = standingLibraries(); // the statuses point into it
     const auto statuses = blocks::instanceStatuses(project.program, 0, set);
     ASSERT_NE(statuses[0].block, nullptr);
     EXPECT_EQ(statuses[0].block->name, "Latch");
@@ -96,7 +96,7 @@ TEST(InstanceStanding, AnotherVersionOrAMissingBlockOrNoStatementsIsSaid) {
 
 TEST(InstanceStanding, ACallIsCheckedAsItsExpansionWouldBe) {
     const auto project = expanded("Q0.5 = I0.4\n");
-    const auto set = libraries();
+    const auto set = standingLibraries();
     const blocks::BlockDefinition& latch = *set.libraries[0].library.findBlock("Latch");
     blocks::BlockInstance call;
     call.type = "Latch";

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "blocks/InstanceVariables.h"
+#include "DiagnosticsText.h"
 #include "project/ProjectFile.h"
 #include "project/UnitText.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
+
+using rs::test::addressOf;
 
 // Which of a unit's variables its block instances take, and where each
 // instance stands in the unit's text.
@@ -16,10 +19,10 @@ using Role = InstanceVariable::Role;
 
 namespace {
 
-const std::string kHead = "! id_pluto:00=000000000000\n"
-                          "! type_pluto:00=A20,is3\n"
-                          "! I0.0=Door1A\n"
-                          "! pgm_pluto:00\n";
+const std::string kVariablesHead = "! id_pluto:00=000000000000\n"
+                                   "! type_pluto:00=A20,is3\n"
+                                   "! I0.0=Door1A\n"
+                                   "! pgm_pluto:00\n";
 
 // EquivalentInputs as Rungsmith_Basics expands it, with its Fault left open.
 const std::string kDoors =
@@ -32,14 +35,10 @@ const std::string kDoors =
     "M0.599 = M0.598\n"
     ";@end\n";
 
-project::Project projectOf(const std::string& code) {
-    project::ProjectReadResult read = project::readProject(kHead + code);
+project::Project variablesProject(const std::string& code) {
+    project::ProjectReadResult read = project::readProject(kVariablesHead + code);
     EXPECT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : read.diagnostics[0].message);
     return read.project;
-}
-
-lang::Address address(const char* text) {
-    return lang::readAddressWord(text).address;
 }
 
 std::string shown(const std::vector<InstanceVariable>& variables) {
@@ -60,7 +59,7 @@ std::string lineOfUnitText(const project::Project& project, int line) {
 }
 
 TEST(InstanceVariables, PinsAndPrivatesWithTheBlockAndTheLineOfItsRecord) {
-    const project::Project project = projectOf("S0.0_0\nQ0.3 = I0.5\n" + kDoors);
+    const project::Project project = variablesProject("S0.0_0\nQ0.3 = I0.5\n" + kDoors);
     const auto variables = blocks::instanceVariables(project, 0);
     EXPECT_EQ(shown(variables), "I0.0 pin Channel1 EquivalentInputs:4\n"
                                 "I0.1 pin Channel2 EquivalentInputs:4\n"
@@ -74,25 +73,25 @@ TEST(InstanceVariables, PinsAndPrivatesWithTheBlockAndTheLineOfItsRecord) {
 TEST(InstanceVariables, LinesFollowTheUnitsTextAcrossStepsAndBrokenRecords) {
     // The first record has no ;@end in its step: it is no instance, but it
     // is a line of the text all the same.
-    const project::Project project =
-        projectOf("S0.0_0\n;@block ResetLatch Enable=\"I0.3\"\n\nS0.1_00\n;comment\n" + kDoors +
-                  "S0.1_01\n;@block ResetLatch Enable=\"I0.4\" Reset=\"I0.5\" Out=\"Q0.3\" "
-                  "#on=\"M0.597\"\n;@end\n");
+    const project::Project project = variablesProject(
+        "S0.0_0\n;@block ResetLatch Enable=\"I0.3\"\n\nS0.1_00\n;comment\n" + kDoors +
+        "S0.1_01\n;@block ResetLatch Enable=\"I0.4\" Reset=\"I0.5\" Out=\"Q0.3\" "
+        "#on=\"M0.597\"\n;@end\n");
     const auto variables = blocks::instanceVariables(project, 0);
     ASSERT_EQ(variables.size(), 9u) << shown(variables);
     for (const auto& variable : variables)
         EXPECT_TRUE(
             lineOfUnitText(project, variable.line).starts_with(";@block " + variable.blockType))
             << shown(variables);
-    EXPECT_EQ(variables.back(), (InstanceVariable{address("M0.597"), Role::Private, "on",
+    EXPECT_EQ(variables.back(), (InstanceVariable{addressOf("M0.597"), Role::Private, "on",
                                                   "ResetLatch", variables.back().line}));
     EXPECT_GT(variables.back().line, variables.front().line);
 }
 
 TEST(InstanceVariables, AreListedAsTheVariablesPageListsThem) {
-    const project::Project project =
-        projectOf("S0.0_0\n;@block Counter Up=\"R0.5.3\" #count=\"DR0.146\" #other=\"M1.2\"\n"
-                  ";@end\n");
+    const project::Project project = variablesProject(
+        "S0.0_0\n;@block Counter Up=\"R0.5.3\" #count=\"DR0.146\" #other=\"M1.2\"\n"
+        ";@end\n");
     EXPECT_EQ(shown(blocks::instanceVariables(project, 0)),
               "R0.5 pin Up Counter:3\nDR0.146 #count Counter:3\n")
         << "a register bit is its register; another unit's variable is not this unit's";

@@ -12,17 +12,17 @@ using namespace rs::blocks;
 
 namespace {
 
-const std::string kHead = "rungsmith-library 1\nlibrary Test\nversion 1.0\n";
+const std::string kLibraryHead = "rungsmith-library 1\nlibrary Test\nversion 1.0\n";
 
 // A block that reads without problems; tests change one line of it.
-const std::string kBlock = "block Copy\n"
-                           "    kind macro\n"
-                           "    version 2.1\n"
-                           "    description en Copies In to Out.\n"
-                           "    pin In in bit primary\n"
-                           "    pin Out out bit primary\n"
-                           "    timers 0\n"
-                           "    body {Out} = {In}\n";
+const std::string kCopyBlock = "block Copy\n"
+                               "    kind macro\n"
+                               "    version 2.1\n"
+                               "    description en Copies In to Out.\n"
+                               "    pin In in bit primary\n"
+                               "    pin Out out bit primary\n"
+                               "    timers 0\n"
+                               "    body {Out} = {In}\n";
 
 std::string problems(std::string_view text) {
     std::string out;
@@ -31,9 +31,9 @@ std::string problems(std::string_view text) {
     return out;
 }
 
-// kHead + kBlock with `from` replaced by `to`.
+// kLibraryHead + kCopyBlock with `from` replaced by `to`.
 std::string changed(const std::string& from, const std::string& to) {
-    std::string text = kHead + kBlock;
+    std::string text = kLibraryHead + kCopyBlock;
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     return text.replace(at, from.size(), to);
@@ -159,12 +159,12 @@ TEST(LibraryReader, ReadsEveryField) {
 }
 
 TEST(LibraryReader, AcceptsByteOrderMarkAndCrLf) {
-    std::string text = "\xEF\xBB\xBF" + kHead + kBlock;
+    std::string text = "\xEF\xBB\xBF" + kLibraryHead + kCopyBlock;
     std::string crlf;
     for (char c : text)
         crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
     EXPECT_EQ(problems(crlf), "");
-    EXPECT_EQ(readLibrary(crlf).library, readLibrary(kHead + kBlock).library);
+    EXPECT_EQ(readLibrary(crlf).library, readLibrary(kLibraryHead + kCopyBlock).library);
 }
 
 struct BadCase {
@@ -280,7 +280,7 @@ TEST(LibraryReader, NeedsTheHeaderNameAndVersion) {
               "t.rslib:1:1: error: the library has no version: write 'version N.N'\n");
     EXPECT_EQ(problems("rungsmith-library 1\nlibrary A\nlibrary B\nversion 1\n"),
               "t.rslib:3:1: error: 'library' given twice (first at line 2)\n");
-    EXPECT_EQ(problems(kHead + "block X\n"),
+    EXPECT_EQ(problems(kLibraryHead + "block X\n"),
               "t.rslib:4:7: error: block 'X' has no kind: write 'kind macro' or 'kind system'\n"
               "t.rslib:4:7: error: block 'X' has no version: write 'version N.N'\n"
               "t.rslib:4:7: error: block 'X' has no English description: write 'description en "
@@ -297,7 +297,7 @@ TEST(LibraryReader, ReportsColumnsInCharacters) {
 TEST(LibraryReader, EnforcesItsLimits) {
     EXPECT_EQ(problems(std::string(kMaxLibraryBytes + 1, '#')),
               "t.rslib:1:1: error: the library is larger than 4194304 bytes\n");
-    EXPECT_EQ(problems(kHead + "#" + std::string(kMaxLineBytes, 'x') + "\n"),
+    EXPECT_EQ(problems(kLibraryHead + "#" + std::string(kMaxLineBytes, 'x') + "\n"),
               "t.rslib:4:4001: error: the line is longer than 4000 bytes\n");
     EXPECT_EQ(problems(changed("block Copy", "block " + std::string(41, 'B'))),
               "t.rslib:4:7: error: block name '" + std::string(41, 'B') +
@@ -306,7 +306,7 @@ TEST(LibraryReader, EnforcesItsLimits) {
               "t.rslib:8:9: error: pin name '" + std::string(33, 'P') +
                   "' is longer than 32 characters\n");
 
-    std::string blocks = kHead;
+    std::string blocks = kLibraryHead;
     for (std::size_t i = 0; i <= kMaxBlocks; ++i)
         blocks += "block B" + std::to_string(i) +
                   "\nkind macro\nversion 1\ndescription en x\nbody Q0.0 = I0.0\n";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // System blocks (docs/block-libraries.md): an instance expands to a ;@system
 // call with every pin bound, which compiles and simulates.
+#include "DiagnosticsText.h"
 #include "blocks/LibraryReader.h"
 #include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
@@ -13,6 +14,7 @@
 #include <sstream>
 
 using namespace rs;
+using rs::test::diagnosticsText;
 
 namespace {
 
@@ -49,13 +51,6 @@ std::string twoUnits(const std::string& unitOneCode) {
            unitOneCode;
 }
 
-std::string messages(const lang::Diagnostics& diagnostics) {
-    std::string text;
-    for (const auto& d : diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message + "\n";
-    return text;
-}
-
 sim::ScenarioReport simulate(const blocks::ProjectWithInstances& read,
                              const std::vector<compiler::UnitImage>& images,
                              const std::string& scenario) {
@@ -73,7 +68,7 @@ TEST(SystemBlock, ABodylessRegisterValidIsExpandedCompiledAndSimulated) {
                  ";@block DRegisterValid Input=\"DR0.10\" Valid=\"M1.2\" Value=\"DR1.20\"\n"
                  ";@end\n"),
         shipped());
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     EXPECT_TRUE(result.expanded);
     const std::string text = project::writeProject(result.read.project);
     // Every pin bound: the open Value to a register of the instance's own.
@@ -91,7 +86,7 @@ TEST(SystemBlock, ABodylessRegisterValidIsExpandedCompiledAndSimulated) {
 
     const compiler::CompileResult compiled =
         blocks::compileProject(result.read.project, result.read.diagnostics);
-    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     const sim::ScenarioReport report =
         simulate(result, compiled.images,
                  "scans 2\nexpect M1.1 1\nexpect R1.149 42\nexpect M1.2 1\n"
@@ -104,7 +99,7 @@ TEST(SystemBlock, ABodylessRegisterValidIsExpandedCompiledAndSimulated) {
     EXPECT_EQ(compiler::compileText(text).images, compiled.images);
     for (const auto& set : {shipped(), blocks::LibrarySet{}}) {
         const auto again = blocks::readProjectWithInstances(text, set);
-        EXPECT_TRUE(again.read.diagnostics.empty()) << messages(again.read.diagnostics);
+        EXPECT_TRUE(again.read.diagnostics.empty()) << diagnosticsText(again.read.diagnostics);
         EXPECT_FALSE(again.expanded);
         EXPECT_EQ(project::writeProject(again.read.project), text);
     }
@@ -116,7 +111,7 @@ TEST(SystemBlock, AnAddressACallAlreadyWritesIsNoInstancesPrivateVariable) {
                  ";@block RegisterValid Input=\"R0.5\" Valid=\"M1.1\"\n"
                  ";@end\n"),
         shipped());
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     EXPECT_NE(project::writeProject(result.read.project).find("#pin.Value=\"R1.148\""),
               std::string::npos);
 }
@@ -165,7 +160,7 @@ TEST(SystemBlock, ABodyFollowsTheCall) {
         twoUnits(";@block Lamp Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\" Lamp=\"Q1.10\"\n"
                  ";@end\n"),
         testLibrary());
-    ASSERT_TRUE(result.read.ok()) << messages(result.read.diagnostics);
+    ASSERT_TRUE(result.read.ok()) << diagnosticsText(result.read.diagnostics);
     const std::string text = project::writeProject(result.read.project);
     EXPECT_NE(text.find(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"
                         "Q1.10 = /M1.1\n"
@@ -174,7 +169,7 @@ TEST(SystemBlock, ABodyFollowsTheCall) {
         << text;
     const compiler::CompileResult compiled =
         blocks::compileProject(result.read.project, result.read.diagnostics, {false});
-    ASSERT_EQ(compiled.errors(), 0) << messages(compiled.diagnostics);
+    ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     const sim::ScenarioReport report =
         simulate(result, compiled.images, "scans 2\nexpect M1.1 1\nexpect Q1.10 0\n");
     EXPECT_EQ(report.failed, 0) << (report.failures.empty() ? "" : report.failures.front());
@@ -198,6 +193,6 @@ TEST(SystemBlock, ABlockWhoseCallCannotBeMadeIsAnErrorAtTheRecord) {
     for (const auto& c : cases) {
         const auto result =
             blocks::readProjectWithInstances(twoUnits(c.record + "\n;@end\n"), testLibrary());
-        EXPECT_EQ(messages(result.read.diagnostics), c.expected) << c.record;
+        EXPECT_EQ(diagnosticsText(result.read.diagnostics), c.expected) << c.record;
     }
 }

@@ -11,7 +11,7 @@ using blocks::ResourceUse;
 
 namespace {
 
-project::Project projectOf(const std::string& code) {
+project::Project resourcesProject(const std::string& code) {
     project::ProjectReadResult read = project::readProject("! id_pluto:00=000000000000\n"
                                                            "! type_pluto:00=A20,is3\n"
                                                            "! pgm_pluto:00\n"
@@ -23,13 +23,14 @@ project::Project projectOf(const std::string& code) {
 
 TEST(UnitResources, CountTheInstancesStatementsAndTheirPrivateVariables) {
     const auto resources = blocks::unitResources(
-        projectOf("M0.1 = I0.0 * TON(1s00) + I0.1 * /TOF(2s00)\n"
-                  "(R0.4 = 2)\n"
-                  ";@block EquivalentInputs Channel1=\"I0.0\" Channel2=\"I0.1\" Out=\"M0.1\" "
-                  "#pin.Fault=\"M0.599\" #fault=\"M0.598\" #count=\"DR0.148\"\n"
-                  "S(M0.598) = (I0.0 * /I0.1 + /I0.0 * I0.1) * TON(0s50)\n"
-                  "Q0.2 = M0.1 * /M0.598\n"
-                  ";@end\n"),
+        resourcesProject(
+            "M0.1 = I0.0 * TON(1s00) + I0.1 * /TOF(2s00)\n"
+            "(R0.4 = 2)\n"
+            ";@block EquivalentInputs Channel1=\"I0.0\" Channel2=\"I0.1\" Out=\"M0.1\" "
+            "#pin.Fault=\"M0.599\" #fault=\"M0.598\" #count=\"DR0.148\"\n"
+            "S(M0.598) = (I0.0 * /I0.1 + /I0.0 * I0.1) * TON(0s50)\n"
+            "Q0.2 = M0.1 * /M0.598\n"
+            ";@end\n"),
         0);
     EXPECT_EQ(resources.timers, (ResourceUse{3, 1, 50}));
     EXPECT_EQ(resources.memories, (ResourceUse{3, 2, 600}))
@@ -38,7 +39,7 @@ TEST(UnitResources, CountTheInstancesStatementsAndTheirPrivateVariables) {
 }
 
 TEST(UnitResources, AUnitWithoutCodeTakesNothing) {
-    const auto resources = blocks::unitResources(projectOf(""), 0);
+    const auto resources = blocks::unitResources(resourcesProject(""), 0);
     EXPECT_EQ(resources.timers, (ResourceUse{0, 0, 50}));
     EXPECT_EQ(resources.memories.used, 0);
     EXPECT_EQ(resources.registers.used, 0);

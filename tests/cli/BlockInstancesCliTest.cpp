@@ -72,16 +72,16 @@ TEST(BlockInstancesCli, ABadCallIsAnErrorAtItsRecordAndNothingIsWritten) {
     EXPECT_EQ(rs::test::readFile(path), text);
 }
 
-const QByteArray kUserLibrary = "rungsmith-library 1\n"
-                                "library Mine\n"
-                                "version 1\n"
-                                "block Invert\n"
-                                "    kind macro\n"
-                                "    version 1\n"
-                                "    description en Out is the inverse of In.\n"
-                                "    pin In in bit primary\n"
-                                "    pin Out out bit primary\n"
-                                "    body {Out} = /{In}\n";
+const QByteArray kInstancesUserLibrary = "rungsmith-library 1\n"
+                                         "library Mine\n"
+                                         "version 1\n"
+                                         "block Invert\n"
+                                         "    kind macro\n"
+                                         "    version 1\n"
+                                         "    description en Out is the inverse of In.\n"
+                                         "    pin In in bit primary\n"
+                                         "    pin Out out bit primary\n"
+                                         "    body {Out} = /{In}\n";
 
 const QByteArray kInvert = "! id_pluto:00=000000000000\n"
                            "! pgm_pluto:00\n"
@@ -98,13 +98,13 @@ TEST(BlockInstancesCli, UserLibrariesComeFromTheProjectsFolderAndFromLib) {
     EXPECT_TRUE(unknown.errText().contains(path + ":4:1: error: unknown block 'Invert'"))
         << unknown.err.toStdString();
 
-    const QString library = writeFile(elsewhere, "mine.rslib", kUserLibrary);
+    const QString library = writeFile(elsewhere, "mine.rslib", kInstancesUserLibrary);
     const auto given = runCli({"format", path, "--lib", library});
     EXPECT_EQ(given.exitCode, 0) << given.err.toStdString();
     EXPECT_TRUE(given.out.contains("lib=\"Mine\" version=\"1\"\nQ0.2 = /I0.0\n;@end\n"))
         << given.out.toStdString();
 
-    writeFile(project, "mine.rslib", kUserLibrary);
+    writeFile(project, "mine.rslib", kInstancesUserLibrary);
     const auto found = runCli({"format", path});
     EXPECT_EQ(found.exitCode, 0) << found.err.toStdString();
     EXPECT_EQ(found.out, given.out);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramRun.h"
+#include "QtPrinting.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -7,24 +8,19 @@
 
 #include <gtest/gtest.h>
 
-// Readable failure messages.
-inline void PrintTo(const QString& text, std::ostream* os) {
-    *os << text.toStdString();
-}
-
 namespace {
 
-const QByteArray kUserLibrary = "rungsmith-library 1\n"
-                                "library Mine\n"
-                                "version 0.1\n"
-                                "block Invert\n"
-                                "    kind macro\n"
-                                "    version 1\n"
-                                "    description en Out is the inverse of In.\n"
-                                "    description de Out ist die Umkehrung von In.\n"
-                                "    pin In in bit primary default=0\n"
-                                "    pin Out out bit primary\n"
-                                "    body {Out} = /{In}\n";
+const QByteArray kBlocksUserLibrary = "rungsmith-library 1\n"
+                                      "library Mine\n"
+                                      "version 0.1\n"
+                                      "block Invert\n"
+                                      "    kind macro\n"
+                                      "    version 1\n"
+                                      "    description en Out is the inverse of In.\n"
+                                      "    description de Out ist die Umkehrung von In.\n"
+                                      "    pin In in bit primary default=0\n"
+                                      "    pin Out out bit primary\n"
+                                      "    body {Out} = /{In}\n";
 
 } // namespace
 
@@ -49,7 +45,7 @@ TEST(BlocksCli, ListsTheStandardLibraryOneLinePerBlock) {
 
 TEST(BlocksCli, AUserLibraryGivenAsAFileIsListedAndShown) {
     QTemporaryDir dir;
-    const QString path = rs::test::writeFile(dir, "mine.rslib", kUserLibrary);
+    const QString path = rs::test::writeFile(dir, "mine.rslib", kBlocksUserLibrary);
     const rs::test::ProgramRun list = rs::test::runCli({"blocks", "list", "--lib", path});
     EXPECT_EQ(list.exitCode, 0);
     EXPECT_EQ(list.outText(), "Mine Invert(In -> Out)\n");
@@ -120,7 +116,7 @@ TEST(BlocksCli, ShowsAStateMachinesStatesAndTransitionsInTheChosenLanguage) {
 
 TEST(BlocksCli, ABadLibraryIsReportedAtItsLineAndColumnWithExit1) {
     QTemporaryDir dir;
-    QByteArray text = kUserLibrary;
+    QByteArray text = kBlocksUserLibrary;
     text.replace("{Out} = /{In}", "{Out} = /{Inn}");
     const QString path = rs::test::writeFile(dir, "bad.rslib", text);
     const rs::test::ProgramRun run = rs::test::runCli({"blocks", "list", "--lib", path});

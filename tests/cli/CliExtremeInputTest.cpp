@@ -3,14 +3,11 @@
 // with a message and an exit code of the contract, never a crash.
 
 #include "ProgramRun.h"
+#include "QtPrinting.h"
 #include <QFile>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
-
-inline void PrintTo(const QString& text, std::ostream* os) {
-    *os << text.toStdString();
-}
 
 namespace {
 

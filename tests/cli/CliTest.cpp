@@ -1,31 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramRun.h"
+#include "QtPrinting.h"
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
-// Readable failure messages.
-inline void PrintTo(const QString& text, std::ostream* os) {
-    *os << text.toStdString();
-}
-
 namespace {
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kCliMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
 } // namespace
 
 TEST(Cli, CheckOfAGoodProjectSaysResultOk) {
-    rs::test::ProgramRun run = rs::test::runCli({"check", kMuting});
+    rs::test::ProgramRun run = rs::test::runCli({"check", kCliMuting});
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_EQ(run.outText(), "0 Error(s) detected Result=OK\n");
     // The manual's own example leaves the muting lamp Q0.17 without an I/O declaration.
-    EXPECT_EQ(run.errText(), kMuting +
+    EXPECT_EQ(run.errText(), kCliMuting +
                                  ":37:1: warning: unconfigured I/O: Q0.17 has no I/O declaration "
                                  "in the code of unit 0\n");
-    rs::test::ProgramRun quiet = rs::test::runCli({"check", "--no-io-warnings", kMuting});
+    rs::test::ProgramRun quiet = rs::test::runCli({"check", "--no-io-warnings", kCliMuting});
     EXPECT_EQ(quiet.exitCode, 0);
     EXPECT_EQ(quiet.errText(), "");
 }
@@ -44,7 +40,7 @@ TEST(Cli, CheckReportsEveryErrorWithFileLineAndColumn) {
 }
 
 TEST(Cli, FormatPrintsCanonicalTextAndIsIdempotent) {
-    rs::test::ProgramRun first = rs::test::runCli({"format", kMuting});
+    rs::test::ProgramRun first = rs::test::runCli({"format", kCliMuting});
     ASSERT_EQ(first.exitCode, 0);
     EXPECT_TRUE(
         first.outText().contains("Q0.2 = I0.12 * (I0.13 + M0.0) * (P(I0.14) * I0.2 + Q0.2)\n"));
@@ -70,14 +66,14 @@ TEST(Cli, UnreadableFilesAndUsageErrorsExitWithTwo) {
     EXPECT_TRUE(missing.errText().contains("cannot read /nonexistent/x.sps"))
         << missing.errText().toStdString();
     EXPECT_EQ(rs::test::runCli({}).exitCode, 2);
-    EXPECT_EQ(rs::test::runCli({"frobnicate", kMuting}).exitCode, 2);
+    EXPECT_EQ(rs::test::runCli({"frobnicate", kCliMuting}).exitCode, 2);
     EXPECT_EQ(rs::test::runCli({"check"}).exitCode, 2);
-    EXPECT_EQ(rs::test::runCli({"check", "--bogus", kMuting}).exitCode, 2);
+    EXPECT_EQ(rs::test::runCli({"check", "--bogus", kCliMuting}).exitCode, 2);
 }
 
 TEST(Cli, CompileWritesTheImageBesideTheProjectOrWhereAsked) {
     QTemporaryDir dir;
-    QFile::copy(kMuting, dir.filePath("muting.sps"));
+    QFile::copy(kCliMuting, dir.filePath("muting.sps"));
     rs::test::ProgramRun beside = rs::test::runCli({"compile", dir.filePath("muting.sps")});
     EXPECT_EQ(beside.exitCode, 0);
     EXPECT_EQ(beside.outText(), "0 Error(s) detected Result=OK\n");
@@ -88,7 +84,7 @@ TEST(Cli, CompileWritesTheImageBesideTheProjectOrWhereAsked) {
     EXPECT_TRUE(hex.endsWith(":00000001FF\n"));
 
     rs::test::ProgramRun asked =
-        rs::test::runCli({"compile", kMuting, "-o", dir.filePath("out.hps")});
+        rs::test::runCli({"compile", kCliMuting, "-o", dir.filePath("out.hps")});
     EXPECT_EQ(asked.exitCode, 0);
     QFile out(dir.filePath("out.hps"));
     ASSERT_TRUE(out.open(QIODevice::ReadOnly));
@@ -106,7 +102,7 @@ TEST(Cli, CompileWritesNothingWhenThereAreErrors) {
         << run.errText().toStdString();
     EXPECT_FALSE(QFile::exists(dir.filePath("bad.hps")));
     rs::test::ProgramRun unwritable =
-        rs::test::runCli({"compile", kMuting, "-o", "/nonexistent/dir/x.hps"});
+        rs::test::runCli({"compile", kCliMuting, "-o", "/nonexistent/dir/x.hps"});
     EXPECT_EQ(unwritable.exitCode, 2);
     EXPECT_TRUE(unwritable.errText().contains("cannot write /nonexistent/dir/x.hps"));
 }

@@ -15,14 +15,14 @@ using rs::test::FullFileSystem;
 
 namespace {
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kOutputMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 const QByteArray kOld = "the validated version\n";
 
-const QByteArray kProject = "! id_pluto:00=000000000000\n"
-                            "! I0.0=Start\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "Q0.2 = Start\n";
+const QByteArray kOutputProject = "! id_pluto:00=000000000000\n"
+                                  "! I0.0=Start\n"
+                                  "! pgm_pluto:00\n"
+                                  "S0.0_0\n"
+                                  "Q0.2 = Start\n";
 
 // Runs a writing verb against FILE on a full disk that already holds an old
 // FILE, and checks the verb's failure and the old bytes.
@@ -45,13 +45,13 @@ void expectOldFileKept(const QString& name,
 
 TEST(FileOutputCli, CompileToAFullDiskKeepsTheOldImage) {
     expectOldFileKept("image.hps", [](const QString& target) {
-        return QStringList{"compile", kMuting, "-o", target};
+        return QStringList{"compile", kOutputMuting, "-o", target};
     });
 }
 
 TEST(FileOutputCli, VarsImportToAFullDiskKeepsTheOldProject) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kOutputProject);
     const QString csv =
         rs::test::writeFile(dir, "in.csv", "Variable,Symbolic Name,Description\nI0.0,Go,\n");
     expectOldFileKept("out.sps", [&](const QString& target) {
@@ -61,13 +61,13 @@ TEST(FileOutputCli, VarsImportToAFullDiskKeepsTheOldProject) {
 
 TEST(FileOutputCli, VarsExportToAFullDiskKeepsTheOldCsv) {
     expectOldFileKept("vars.csv", [](const QString& target) {
-        return QStringList{"vars", "export", kMuting, "-o", target};
+        return QStringList{"vars", "export", kOutputMuting, "-o", target};
     });
 }
 
 TEST(FileOutputCli, TestTraceToAFullDiskKeepsTheOldTrace) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kOutputProject);
     const QString scenario =
         rs::test::writeFile(dir, "s.scn", "set I0.0 1\nscans 1\nexpect Q0.2 1\n");
     expectOldFileKept("run.vcd", [&](const QString& target) {
@@ -78,13 +78,14 @@ TEST(FileOutputCli, TestTraceToAFullDiskKeepsTheOldTrace) {
 TEST(FileOutputCli, LadderPictureToAFullDiskKeepsTheOldPicture) {
     for (const char* name : {"network.svg", "network.png"})
         expectOldFileKept(name, [](const QString& target) {
-            return QStringList{"ladder", kMuting, "--unit", "0", "--network", "1", "-o", target};
+            return QStringList{"ladder",    kOutputMuting, "--unit", "0",
+                               "--network", "1",           "-o",     target};
         });
 }
 
 TEST(FileOutputCli, StandardOutputThatCannotBeWrittenIsAnError) {
     for (const QStringList& arguments :
-         {QStringList{"format", kMuting}, QStringList{"roundtrip", kMuting}}) {
+         {QStringList{"format", kOutputMuting}, QStringList{"roundtrip", kOutputMuting}}) {
         const rs::test::ProgramRun run = rs::test::runCli(arguments, {QStringLiteral("/dev/full")});
         EXPECT_EQ(run.exitCode, 2) << arguments.join(' ').toStdString();
         EXPECT_EQ(run.errText(),
@@ -94,7 +95,7 @@ TEST(FileOutputCli, StandardOutputThatCannotBeWrittenIsAnError) {
 
 TEST(FileOutputCli, EndlessInputsAreRefusedWithTheLimit) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kOutputProject);
     const QString limit = ": larger than 64 MB, the most Rungsmith reads from one file\n";
     const std::pair<QStringList, QString> cases[] = {
         {{"check", "/dev/zero"}, "/dev/zero"},
@@ -116,7 +117,7 @@ TEST(FileOutputCli, Utf16ProjectsAreRefusedAndAByteOrderMarkIsAccepted) {
     EXPECT_EQ(refused.exitCode, 2);
     EXPECT_EQ(refused.errText(),
               "rungsmith-cli: " + wide + ": UTF-16 text is not supported; save it as UTF-8\n");
-    const QString marked = rs::test::writeFile(dir, "marked.sps", "\xEF\xBB\xBF" + kProject);
+    const QString marked = rs::test::writeFile(dir, "marked.sps", "\xEF\xBB\xBF" + kOutputProject);
     const rs::test::ProgramRun accepted = rs::test::runCli({"check", marked});
     EXPECT_EQ(accepted.exitCode, 0) << accepted.errText().toStdString();
     EXPECT_EQ(accepted.outText(), "0 Error(s) detected Result=OK\n");

@@ -15,13 +15,13 @@
 
 namespace {
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kLadderMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
 TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
     QTemporaryDir dir;
     const QString png = dir.filePath("net1.png");
     rs::test::ProgramRun run =
-        rs::test::runCli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", png});
+        rs::test::runCli({"ladder", kLadderMuting, "--unit", "0", "--network", "1", "-o", png});
     ASSERT_EQ(run.exitCode, 0) << run.errText().toStdString();
     EXPECT_TRUE(run.out.isEmpty());
     const QImage image(png);
@@ -31,7 +31,8 @@ TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
 
     const QString svg = dir.filePath("net1.svg");
     ASSERT_EQ(
-        rs::test::runCli({"ladder", kMuting, "--unit", "0", "--network", "1", "-o", svg}).exitCode,
+        rs::test::runCli({"ladder", kLadderMuting, "--unit", "0", "--network", "1", "-o", svg})
+            .exitCode,
         0);
     QFile file(svg);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
@@ -43,8 +44,9 @@ TEST(LadderCli, DrawsANetworkOfThePlcCodeAsPngAndSvg) {
 TEST(LadderCli, DrawsANetworkOfASequenceStep) {
     QTemporaryDir dir;
     const QString svg = dir.filePath("jump.svg");
-    rs::test::ProgramRun run = rs::test::runCli({"ladder", kMuting, "--unit", "0", "--sequence",
-                                                 "1", "--step", "2", "--network", "3", "-o", svg});
+    rs::test::ProgramRun run =
+        rs::test::runCli({"ladder", kLadderMuting, "--unit", "0", "--sequence", "1", "--step", "2",
+                          "--network", "3", "-o", svg});
     ASSERT_EQ(run.exitCode, 0) << run.errText().toStdString();
     QFile file(svg);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
@@ -57,16 +59,17 @@ TEST(LadderCli, UsageErrorsExitWith2) {
     QTemporaryDir dir;
     const QString png = dir.filePath("x.png");
     const QStringList bad[] = {
-        {"ladder", kMuting, "--network", "1", "-o", png},                 // no unit
-        {"ladder", kMuting, "--unit", "0", "-o", png},                    // no network
-        {"ladder", kMuting, "--unit", "0", "--network", "0", "-o", png},  // networks count from 1
-        {"ladder", kMuting, "--unit", "40", "--network", "1", "-o", png}, // no such station
-        {"ladder", kMuting, "--unit", "0", "--network", "1"},             // no output
-        {"ladder", kMuting, "--unit", "0", "--network", "1", "-o", dir.filePath("x.pdf")},
-        {"ladder", kMuting, "--unit", "0", "--sequence", "1", "--network", "1", "-o", png},
+        {"ladder", kLadderMuting, "--network", "1", "-o", png}, // no unit
+        {"ladder", kLadderMuting, "--unit", "0", "-o", png},    // no network
+        {"ladder", kLadderMuting, "--unit", "0", "--network", "0", "-o",
+         png}, // networks count from 1
+        {"ladder", kLadderMuting, "--unit", "40", "--network", "1", "-o", png}, // no such station
+        {"ladder", kLadderMuting, "--unit", "0", "--network", "1"},             // no output
+        {"ladder", kLadderMuting, "--unit", "0", "--network", "1", "-o", dir.filePath("x.pdf")},
+        {"ladder", kLadderMuting, "--unit", "0", "--sequence", "1", "--network", "1", "-o", png},
         {"ladder", "--unit", "0", "--network", "1", "-o", png}, // no file
         {"ladder", dir.filePath("missing.sps"), "--unit", "0", "--network", "1", "-o", png},
-        {"ladder", kMuting, "--unit", "0", "--network", "1", "-o", "/nonexistent-dir/x.png"},
+        {"ladder", kLadderMuting, "--unit", "0", "--network", "1", "-o", "/nonexistent-dir/x.png"},
         {"roundtrip"},
     };
     for (const auto& arguments : bad) {
@@ -92,7 +95,7 @@ TEST(LadderCli, WhatTheProjectDoesNotHaveExits1) {
     };
     for (const auto& c : cases) {
         rs::test::ProgramRun run =
-            rs::test::runCli(QStringList{"ladder", kMuting, "-o", png} + c.arguments);
+            rs::test::runCli(QStringList{"ladder", kLadderMuting, "-o", png} + c.arguments);
         EXPECT_EQ(run.exitCode, 1) << c.message;
         EXPECT_TRUE(run.errText().contains(c.message)) << run.errText().toStdString();
     }

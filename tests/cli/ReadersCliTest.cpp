@@ -8,17 +8,17 @@
 // What `test` and `vars import` say about scenario and CSV files they refuse.
 namespace {
 
-const QByteArray kProject = "! id_pluto:00=000000000000\n"
-                            "! I0.0=Start\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "Q0.2 = Start\n";
+const QByteArray kReadersProject = "! id_pluto:00=000000000000\n"
+                                   "! I0.0=Start\n"
+                                   "! pgm_pluto:00\n"
+                                   "S0.0_0\n"
+                                   "Q0.2 = Start\n";
 
 } // namespace
 
 TEST(ReadersCli, AScenarioThatExpectsNothingFails) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kReadersProject);
     for (const QByteArray& text : {QByteArray(), QByteArray("\r\r"), QByteArray("set I0.0 1\n")}) {
         const QString scenario = rs::test::writeFile(dir, "s.scn", text);
         const rs::test::ProgramRun run = rs::test::runCli({"test", project, scenario});
@@ -32,7 +32,7 @@ TEST(ReadersCli, AScenarioThatExpectsNothingFails) {
 
 TEST(ReadersCli, AnEndlessScenarioIsRefusedBeforeItRuns) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kReadersProject);
     const QString scenario = rs::test::writeFile(dir, "s.scn",
                                                  "\xEF\xBB\xBF"
                                                  "cycle 0ms\rrun 999999999min\rexpect Q0.2 0\r");
@@ -47,7 +47,7 @@ TEST(ReadersCli, AnEndlessScenarioIsRefusedBeforeItRuns) {
 
 TEST(ReadersCli, CsvProblemsSayLineAndColumnAndNothingIsWritten) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kReadersProject);
     const QString csv = rs::test::writeFile(dir, "in.csv",
                                             QByteArray("Variable,Symbolic Name,Description\n"
                                                        "I0.1,Stop,a\0b\n",

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramRun.h"
+#include "QtPrinting.h"
 #include <QDir>
 #include <QFile>
 #include <QRegularExpression>
@@ -13,10 +14,6 @@
 using rs::test::ProgramRun;
 using rs::test::runCli;
 
-inline void PrintTo(const QString& text, std::ostream* os) {
-    *os << text.toStdString();
-}
-
 // For the messages of failed expectations.
 inline std::ostream& operator<<(std::ostream& os, const QString& text) {
     return os << text.toStdString();
@@ -24,21 +21,21 @@ inline std::ostream& operator<<(std::ostream& os, const QString& text) {
 
 namespace {
 
-const QByteArray kProject = "$name Review\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! type_pluto:00=A20,is3\n"
-                            "! id_pluto:01=000000000001\n"
-                            "! type_pluto:01=A20,is3\n"
-                            "! pgm_pluto:00\n"
-                            "! I0.0,a_pulse,non_inv\n"
-                            "! Q0.10,a_pulse\n"
-                            "! I0.1=Start\n"
-                            "S0.0_0\n"
-                            "Q0.2 = I0.0 * Start     ; the motor\n"
-                            "M0.1 = I0.2 + /I0.3\n"
-                            "! pgm_pluto:01\n"
-                            "S1.0_0\n"
-                            "Q1.2 = I1.0 * I1.1\n";
+const QByteArray kReviewProject = "$name Review\n"
+                                  "! id_pluto:00=000000000000\n"
+                                  "! type_pluto:00=A20,is3\n"
+                                  "! id_pluto:01=000000000001\n"
+                                  "! type_pluto:01=A20,is3\n"
+                                  "! pgm_pluto:00\n"
+                                  "! I0.0,a_pulse,non_inv\n"
+                                  "! Q0.10,a_pulse\n"
+                                  "! I0.1=Start\n"
+                                  "S0.0_0\n"
+                                  "Q0.2 = I0.0 * Start     ; the motor\n"
+                                  "M0.1 = I0.2 + /I0.3\n"
+                                  "! pgm_pluto:01\n"
+                                  "S1.0_0\n"
+                                  "Q1.2 = I1.0 * I1.1\n";
 
 QByteArray replaced(QByteArray text, const QByteArray& from, const QByteArray& to) {
     EXPECT_TRUE(text.contains(from)) << from.toStdString();
@@ -65,8 +62,8 @@ ProgramRun diff(const QByteArray& before, const QByteArray& after) {
 
 TEST(SignatureCli, OneLinePerUnitThenTheProject) {
     QTemporaryDir dir;
-    const ProgramRun run =
-        runCli({"signature", "--no-io-warnings", rs::test::writeFile(dir, "p.sps", kProject)});
+    const ProgramRun run = runCli(
+        {"signature", "--no-io-warnings", rs::test::writeFile(dir, "p.sps", kReviewProject)});
     EXPECT_EQ(run.exitCode, 0) << run.errText();
     const QStringList lines = run.outText().split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 3) << run.outText();
@@ -82,12 +79,12 @@ TEST(SignatureCli, OneOperandChangesItsUnitOnlyAndACommentNothing) {
             .outText()
             .split('\n');
     };
-    const QStringList before = signature(kProject);
-    const QStringList operand = signature(replaced(kProject, "I0.2 +", "I0.4 +"));
+    const QStringList before = signature(kReviewProject);
+    const QStringList operand = signature(replaced(kReviewProject, "I0.2 +", "I0.4 +"));
     EXPECT_NE(operand[0], before[0]);
     EXPECT_EQ(operand[1], before[1]);
     EXPECT_NE(operand[2], before[2]);
-    EXPECT_EQ(signature(replaced(kProject, "the motor", "the pump")), before);
+    EXPECT_EQ(signature(replaced(kReviewProject, "the motor", "the pump")), before);
 }
 
 TEST(SignatureCli, FormatKeepsTheImageAndEverySignatureOfEveryExample) {
@@ -121,7 +118,7 @@ TEST(SignatureCli, FormatKeepsTheImageAndEverySignatureOfEveryExample) {
 TEST(SignatureCli, BadInputIsADiagnosticOrAUsageError) {
     QTemporaryDir dir;
     const QString bad =
-        rs::test::writeFile(dir, "bad.sps", replaced(kProject, "I0.2 +", "I0.2 + +"));
+        rs::test::writeFile(dir, "bad.sps", replaced(kReviewProject, "I0.2 +", "I0.2 + +"));
     const ProgramRun errors = runCli({"signature", "--no-io-warnings", bad});
     EXPECT_EQ(errors.exitCode, 1);
     EXPECT_EQ(errors.outText(), "");
@@ -142,33 +139,34 @@ TEST(SignatureCli, BadInputIsADiagnosticOrAUsageError) {
 }
 
 TEST(DiffCli, IdenticalAndFormattedProjectsHaveNoChangeInBehaviour) {
-    const ProgramRun same = diff(kProject, kProject);
+    const ProgramRun same = diff(kReviewProject, kReviewProject);
     EXPECT_EQ(same.exitCode, 0);
     EXPECT_EQ(same.outText(), "no change in behaviour\n");
 
     QTemporaryDir dir;
-    const QString original = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString original = rs::test::writeFile(dir, "p.sps", kReviewProject);
     const ProgramRun formatted = runCli({"format", original});
     ASSERT_EQ(formatted.exitCode, 0);
-    const ProgramRun run = diff(kProject, formatted.out);
+    const ProgramRun run = diff(kReviewProject, formatted.out);
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_EQ(run.outText(), "no change in behaviour\n");
 
     const ProgramRun spaced =
-        diff(kProject, replaced(kProject, "M0.1 = I0.2 + /I0.3", "   m0.1=i0.2+/I0.3"));
+        diff(kReviewProject, replaced(kReviewProject, "M0.1 = I0.2 + /I0.3", "   m0.1=i0.2+/I0.3"));
     EXPECT_EQ(spaced.exitCode, 0);
     EXPECT_EQ(spaced.outText(), "no change in behaviour\n");
 }
 
 TEST(DiffCli, ACommentIsOnlyText) {
-    const ProgramRun run = diff(kProject, replaced(kProject, "the motor", "the pump"));
+    const ProgramRun run = diff(kReviewProject, replaced(kReviewProject, "the motor", "the pump"));
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_EQ(run.outText(),
               "Pluto 00 comments: changed\nno change in behaviour; only the text changed\n");
 }
 
 TEST(DiffCli, AnInsertedNetworkIsOneAddedLine) {
-    const ProgramRun run = diff(kProject, replaced(kProject, "S0.0_0\n", "S0.0_0\nM0.5 = I0.5\n"));
+    const ProgramRun run =
+        diff(kReviewProject, replaced(kReviewProject, "S0.0_0\n", "S0.0_0\nM0.5 = I0.5\n"));
     EXPECT_EQ(run.exitCode, 1);
     const QStringList lines = run.outText().split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 2) << run.outText();
@@ -178,7 +176,8 @@ TEST(DiffCli, AnInsertedNetworkIsOneAddedLine) {
 }
 
 TEST(DiffCli, AChangedOperandIsOneChangedNetwork) {
-    const ProgramRun run = diff(kProject, replaced(kProject, "I1.0 * I1.1", "I1.0 * I1.2"));
+    const ProgramRun run =
+        diff(kReviewProject, replaced(kReviewProject, "I1.0 * I1.1", "I1.0 * I1.2"));
     EXPECT_EQ(run.exitCode, 1);
     const QStringList lines = run.outText().split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 2) << run.outText();
@@ -187,7 +186,8 @@ TEST(DiffCli, AChangedOperandIsOneChangedNetwork) {
 }
 
 TEST(DiffCli, AChangedIoOptionIsItsOwnLine) {
-    const ProgramRun run = diff(kProject, replaced(kProject, "a_pulse,non_inv", "a_pulse"));
+    const ProgramRun run =
+        diff(kReviewProject, replaced(kReviewProject, "a_pulse,non_inv", "a_pulse"));
     EXPECT_EQ(run.exitCode, 1);
     const QStringList lines = run.outText().split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 2) << run.outText();
@@ -197,9 +197,9 @@ TEST(DiffCli, AChangedIoOptionIsItsOwnLine) {
 
 TEST(DiffCli, AProjectWithErrorsCannotBeCompared) {
     QTemporaryDir dir;
-    const QString good = rs::test::writeFile(dir, "good.sps", kProject);
+    const QString good = rs::test::writeFile(dir, "good.sps", kReviewProject);
     const QString bad =
-        rs::test::writeFile(dir, "bad.sps", replaced(kProject, "I0.2 +", "I0.2 + +"));
+        rs::test::writeFile(dir, "bad.sps", replaced(kReviewProject, "I0.2 +", "I0.2 + +"));
     const ProgramRun run = runCli({"diff", "--no-io-warnings", good, bad});
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(run.outText(), "");
@@ -212,13 +212,13 @@ TEST(DiffCli, AProjectWithErrorsCannotBeCompared) {
 
 TEST(ValidateCli, AValidatedProjectReviewsAsUnchangedUntilItChanges) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kReviewProject);
     const QString validated = dir.filePath("validated.sps");
     const ProgramRun validate =
         runCli({"validate", "--no-io-warnings", project, "--by", "A. Reviewer", "--comment",
                 "Release 1, report R-17", "--date", "2026-12-01", "-o", validated});
     ASSERT_EQ(validate.exitCode, 0) << validate.errText();
-    EXPECT_EQ(rs::test::readFile(project), kProject); // the input is not touched
+    EXPECT_EQ(rs::test::readFile(project), kReviewProject); // the input is not touched
 
     const ProgramRun review = runCli({"review", "--no-io-warnings", validated});
     EXPECT_EQ(review.exitCode, 0) << review.errText();
@@ -241,14 +241,14 @@ TEST(ValidateCli, AValidatedProjectReviewsAsUnchangedUntilItChanges) {
 
 TEST(ValidateCli, BadInputIsRefusedWithoutWriting) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kReviewProject);
     const QString out = dir.filePath("out.sps");
     EXPECT_EQ(runCli({"validate", project, "-o", out}).exitCode, 2);   // no --by
     EXPECT_EQ(runCli({"validate", project, "--by", "X"}).exitCode, 2); // no -o
     EXPECT_EQ(runCli({"validate", project, "--by", "X", "--date", "1.12.2026", "-o", out}).exitCode,
               2);
     const QString bad =
-        rs::test::writeFile(dir, "bad.sps", replaced(kProject, "I0.2 +", "I0.2 + +"));
+        rs::test::writeFile(dir, "bad.sps", replaced(kReviewProject, "I0.2 +", "I0.2 + +"));
     const ProgramRun errors = runCli({"validate", bad, "--by", "X", "-o", out});
     EXPECT_EQ(errors.exitCode, 1);
     EXPECT_TRUE(errors.errText().startsWith(bad + ":12:")) << errors.errText();
@@ -260,7 +260,7 @@ TEST(ValidateCli, BadInputIsRefusedWithoutWriting) {
 
     const QString broken = rs::test::writeFile(
         dir, "broken.sps",
-        replaced(kProject, "$name Review\n", "$name Review\n;@validated signature=\"1\"\n"));
+        replaced(kReviewProject, "$name Review\n", "$name Review\n;@validated signature=\"1\"\n"));
     const ProgramRun record = runCli({"review", broken});
     EXPECT_EQ(record.exitCode, 1);
     EXPECT_TRUE(record.errText().startsWith(broken + ":2:")) << record.errText();
@@ -268,9 +268,9 @@ TEST(ValidateCli, BadInputIsRefusedWithoutWriting) {
 
 TEST(DiffCli, PdfDrawsTheReviewAndKeepsTheExitStatus) {
     QTemporaryDir dir;
-    const QString before = rs::test::writeFile(dir, "old.sps", kProject);
+    const QString before = rs::test::writeFile(dir, "old.sps", kReviewProject);
     const QString after = rs::test::writeFile(
-        dir, "new.sps", replaced(kProject, "S0.0_0\n", "S0.0_0\nM0.5 = I0.5\n"));
+        dir, "new.sps", replaced(kReviewProject, "S0.0_0\n", "S0.0_0\nM0.5 = I0.5\n"));
     const QString pdf = dir.filePath("review.pdf");
     const ProgramRun run = runCli({"diff", "--no-io-warnings", before, after, "--pdf", pdf});
     EXPECT_EQ(run.exitCode, 1) << run.errText();

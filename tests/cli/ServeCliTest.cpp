@@ -20,18 +20,18 @@
 
 namespace {
 
-const QByteArray kProject = "$name Gateway line\n"
-                            ";@gateway 0 type=\"GATE-E1\"\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! id_pluto:01=000000000001\n"
-                            "! type_pluto:00=A20,is3\n"
-                            "! type_pluto:01=A20,is3\n"
-                            "! pgm_pluto:00\n"
-                            "! I0.0,static\n"
-                            "S0.0_0\n"
-                            "GM0.0 = I0.0\n"
-                            "! pgm_pluto:01\n"
-                            "S1.0_0\n";
+const QByteArray kServeProject = "$name Gateway line\n"
+                                 ";@gateway 0 type=\"GATE-E1\"\n"
+                                 "! id_pluto:00=000000000000\n"
+                                 "! id_pluto:01=000000000001\n"
+                                 "! type_pluto:00=A20,is3\n"
+                                 "! type_pluto:01=A20,is3\n"
+                                 "! pgm_pluto:00\n"
+                                 "! I0.0,static\n"
+                                 "S0.0_0\n"
+                                 "GM0.0 = I0.0\n"
+                                 "! pgm_pluto:01\n"
+                                 "S1.0_0\n";
 
 // The inputs come on after 200 ms of simulated time.
 const QByteArray kScenario = "run 200ms\nset I0.0 1\nrun 100ms\nexpect GM0.0 1\n";
@@ -60,7 +60,7 @@ protected:
         if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
             GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
         ASSERT_TRUE(directory.isValid());
-        write(QStringLiteral("line.sps"), kProject);
+        write(QStringLiteral("line.sps"), kServeProject);
         write(QStringLiteral("line.scn"), kScenario);
     }
 

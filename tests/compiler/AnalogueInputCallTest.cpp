@@ -2,6 +2,7 @@
 // The analogue input instructions (ReadVoltage, ReadCurrent and their _32
 // forms, docs/image-format.md): what the compiler makes of a call and what
 // it refuses, each at its line and column.
+#include "DiagnosticsText.h"
 #include "compiler/Compiler.h"
 #include "compiler/SystemInstruction.h"
 
@@ -12,12 +13,13 @@
 
 using namespace rs;
 using compiler::Op;
+using rs::test::problemsText;
 
 namespace {
 
 // A D45 whose IA0.0 is configured 0-10 V, IA0.1 4-20 mA, IA0.2 as an
 // ordinary input and IA0.3 not at all.
-std::string d45(const std::string& code) {
+std::string analogueD45(const std::string& code) {
     return "! id_pluto_Double:00=000000000000\n"
            "! type_pluto:00=D45,is3\n"
            "! pgm_pluto:00\n"
@@ -28,22 +30,13 @@ std::string d45(const std::string& code) {
            code;
 }
 
-std::string problems(const compiler::CompileResult& result) {
-    std::string text;
-    for (const auto& d : result.diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
-                (d.severity == lang::Severity::Error ? "error" : "warning") + ": " + d.message +
-                "\n";
-    return text;
-}
-
 } // namespace
 
 TEST(AnalogueInputCall, TheInputIsReadAsAValueAndTheScaleMayBeNumbers) {
-    const auto result = compiler::compileText(
-        d45(";@system ReadCurrent_32 Input=\"IA0.1\" Value_4mA=\"-100000\" Value_20mA=\"DR0.2\" "
-            "Q=\"M0.1\" Current=\"DR0.4\" Scaled_Value=\"DR0.6\"\n"));
-    ASSERT_EQ(problems(result), "");
+    const auto result = compiler::compileText(analogueD45(
+        ";@system ReadCurrent_32 Input=\"IA0.1\" Value_4mA=\"-100000\" Value_20mA=\"DR0.2\" "
+        "Q=\"M0.1\" Current=\"DR0.4\" Scaled_Value=\"DR0.6\"\n"));
+    ASSERT_EQ(problemsText(result), "");
     const auto& code = result.images.front().code;
     ASSERT_EQ(code.size(), 7u);
     EXPECT_EQ(code[0].op, Op::System);
@@ -104,7 +97,8 @@ TEST(AnalogueInputCall, WrongCallsAreErrorsAtTheOperand) {
          "8:1: error: ReadVoltage: operand Scaled_Value is not given\n"},
     };
     for (const auto& c : cases)
-        EXPECT_EQ(problems(compiler::compileText(d45(c.call + "\n"))), c.expected) << c.call;
+        EXPECT_EQ(problemsText(compiler::compileText(analogueD45(c.call + "\n"))), c.expected)
+            << c.call;
 }
 
 TEST(AnalogueInputCall, AUnitWithoutAnalogueInputsCannotReadOne) {
@@ -112,5 +106,5 @@ TEST(AnalogueInputCall, AUnitWithoutAnalogueInputsCannotReadOne) {
         "! id_pluto:00=000000000000\n! type_pluto:00=A20,is3\n! pgm_pluto:00\nS0.0_0\n"
         ";@system ReadVoltage Input=\"IA0.0\" Value_0V=\"0\" Value_10V=\"100\" Q=\"M0.1\" "
         "Voltage=\"R0.1\" Scaled_Value=\"R0.2\"\n");
-    EXPECT_EQ(problems(result), "5:22: error: IA0.0 does not exist on unit 0, an A20\n");
+    EXPECT_EQ(problemsText(result), "5:22: error: IA0.0 does not exist on unit 0, an A20\n");
 }

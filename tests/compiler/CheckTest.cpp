@@ -840,7 +840,7 @@ TEST(AccessCheck, UnitNotInTheProject) {
 
 namespace {
 // Units 0 and 1; the code of unit 0 starts at line 4.
-Lines twoUnits(const Lines& code0) {
+Lines twoUnitsLines(const Lines& code0) {
     Lines lines{"! id_pluto:00=000000000000", "! id_pluto:01=000000000001", "! pgm_pluto:00"};
     lines.insert(lines.end(), code0.begin(), code0.end());
     lines.push_back("! pgm_pluto:01");
@@ -852,8 +852,8 @@ Lines twoUnits(const Lines& code0) {
 TEST(AccessCheck, WritingAnotherUnitsVariable) {
     const std::string own = "; a unit writes only its own variables";
     EXPECT_EQ(
-        check(twoUnits({"S0.0_0", "Q1.2 = M0.0", "M1.0 = M0.0", "GM1.0 = M0.0", "(R1.0 = 1)",
-                        "S(M1.0) = M0.0", "R(Q1.2) = M0.0", "T(GM1.1) = M0.0"})),
+        check(twoUnitsLines({"S0.0_0", "Q1.2 = M0.0", "M1.0 = M0.0", "GM1.0 = M0.0", "(R1.0 = 1)",
+                             "S(M1.0) = M0.0", "R(Q1.2) = M0.0", "T(GM1.1) = M0.0"})),
         (Lines{
             "5:1: error: Q1.2 belongs to unit 1" + own, "6:1: error: M1.0 belongs to unit 1" + own,
             "7:1: error: GM1.0 belongs to unit 1" + own, "8:2: error: R1.0 belongs to unit 1" + own,
@@ -863,12 +863,12 @@ TEST(AccessCheck, WritingAnotherUnitsVariable) {
 
 TEST(AccessCheck, ReadingAnotherUnitsVariables) {
     // Global: inputs, safety outputs Q0..Q3, global memories.
-    EXPECT_EQ(
-        check(twoUnits({"S0.0_0", "M0.0 = I1.0 * Q1.2 * GM1.3 * I1.17 * IQ1.10 * Q1.0"}), kQuiet),
-        Lines{});
+    EXPECT_EQ(check(twoUnitsLines({"S0.0_0", "M0.0 = I1.0 * Q1.2 * GM1.3 * I1.17 * IQ1.10 * Q1.0"}),
+                    kQuiet),
+              Lines{});
     const std::string local = " and not exported; other units cannot read it";
-    EXPECT_EQ(check(twoUnits({"S0.0_0", "M0.1 = M1.0", "M0.2 = Q1.10", "M0.3 = (R1.0 > 1)",
-                              "M0.4 = SM1.9", "M0.5 = (SR1.10 > 0)"}),
+    EXPECT_EQ(check(twoUnitsLines({"S0.0_0", "M0.1 = M1.0", "M0.2 = Q1.10", "M0.3 = (R1.0 > 1)",
+                                   "M0.4 = SM1.9", "M0.5 = (SR1.10 > 0)"}),
                     kQuiet),
               (Lines{"5:8: error: M1.0 is local to unit 1" + local,
                      "6:8: error: Q1.10 is local to unit 1" + local,

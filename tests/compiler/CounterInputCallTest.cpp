@@ -2,6 +2,7 @@
 // The counter input instructions (HS_SpeedCount_Up, HS_SpeedCount_Dir,
 // docs/image-format.md): what the compiler makes of a call and what it
 // refuses, each at its line and column.
+#include "DiagnosticsText.h"
 #include "compiler/Compiler.h"
 #include "compiler/SystemInstruction.h"
 
@@ -12,12 +13,13 @@
 
 using namespace rs;
 using compiler::Op;
+using rs::test::problemsText;
 
 namespace {
 
 // A D45 whose IA0.0 counts up, IA0.2 and IA0.3 up and down, IA0.1 reads
 // 4-20 mA and IA0.4 is an ordinary input.
-std::string d45(const std::string& code) {
+std::string counterD45(const std::string& code) {
     return "! id_pluto_Double:00=000000000000\n"
            "! type_pluto:00=D45,is3\n"
            "! pgm_pluto:00\n"
@@ -30,22 +32,13 @@ std::string d45(const std::string& code) {
            code;
 }
 
-std::string problems(const compiler::CompileResult& result) {
-    std::string text;
-    for (const auto& d : result.diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
-                (d.severity == lang::Severity::Error ? "error" : "warning") + ": " + d.message +
-                "\n";
-    return text;
-}
-
 } // namespace
 
 TEST(CounterInputCall, TheUpDownPairIsReadAsValuesAndTheSpeedsWritten) {
     const auto result = compiler::compileText(
-        d45(";@system HS_SpeedCount_Dir Input_A=\"IA0.2\" Input_B=\"IA0.3\" Valid=\"M0.1\" "
-            "EdgePer10ms=\"R0.4\" PulsePerSec=\"R0.5\"\n"));
-    ASSERT_EQ(problems(result), "");
+        counterD45(";@system HS_SpeedCount_Dir Input_A=\"IA0.2\" Input_B=\"IA0.3\" Valid=\"M0.1\" "
+                   "EdgePer10ms=\"R0.4\" PulsePerSec=\"R0.5\"\n"));
+    ASSERT_EQ(problemsText(result), "");
     const auto& code = result.images.front().code;
     ASSERT_EQ(code.size(), 6u);
     EXPECT_EQ(code[0].op, Op::System);
@@ -64,9 +57,9 @@ TEST(CounterInputCall, TheUpDownPairIsReadAsValuesAndTheSpeedsWritten) {
 
 TEST(CounterInputCall, TheUpCounterIsInstructionSeven) {
     const auto result = compiler::compileText(
-        d45(";@system HS_SpeedCount_Up Input=\"IA0.0\" Valid=\"M0.1\" EdgePer10ms=\"R0.4\" "
-            "PulsePerSec=\"R0.5\"\n"));
-    ASSERT_EQ(problems(result), "");
+        counterD45(";@system HS_SpeedCount_Up Input=\"IA0.0\" Valid=\"M0.1\" EdgePer10ms=\"R0.4\" "
+                   "PulsePerSec=\"R0.5\"\n"));
+    ASSERT_EQ(problemsText(result), "");
     const auto& code = result.images.front().code;
     ASSERT_EQ(code.size(), 5u);
     EXPECT_EQ(code[0].aux, 7);
@@ -102,5 +95,6 @@ TEST(CounterInputCall, WrongCallsAreErrorsAtTheOperand) {
          "10:1: error: HS_SpeedCount_Up: operand PulsePerSec is not given\n"},
     };
     for (const auto& c : cases)
-        EXPECT_EQ(problems(compiler::compileText(d45(c.call + "\n"))), c.expected) << c.call;
+        EXPECT_EQ(problemsText(compiler::compileText(counterD45(c.call + "\n"))), c.expected)
+            << c.call;
 }

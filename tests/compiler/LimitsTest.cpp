@@ -29,7 +29,7 @@ compiler::CheckOptions quiet() {
 
 // Unit 0 with `statements` lines of code, each a series of 40 contacts (1,176
 // bytes of image), then unit 1 with one line.
-std::string twoUnits(int statements) {
+std::string twoUnitsOfSize(int statements) {
     std::string series = "I0.0";
     for (int i = 1; i < 40; ++i)
         series += " * I0." + std::to_string(i % 8);
@@ -43,7 +43,7 @@ std::string twoUnits(int statements) {
 } // namespace
 
 TEST(ProgramSize, AProgramThatFitsItsUnitCompiles) {
-    const compiler::CompileResult result = compiler::compileText(twoUnits(14000), quiet());
+    const compiler::CompileResult result = compiler::compileText(twoUnitsOfSize(14000), quiet());
     EXPECT_EQ(result.errors(), 0);
     ASSERT_EQ(result.images.size(), 2u);
     EXPECT_LE(compiler::encodeImage(result.images[0]).size(), compiler::kMaxUnitImageBytes);
@@ -52,7 +52,7 @@ TEST(ProgramSize, AProgramThatFitsItsUnitCompiles) {
 
 TEST(ProgramSize, AProgramTooLargeForItsUnitIsAnErrorAtItsPgmPlutoLine) {
     // 15,000 lines take 17,640,000 bytes and more.
-    const compiler::CompileResult result = compiler::compileText(twoUnits(15000), quiet());
+    const compiler::CompileResult result = compiler::compileText(twoUnitsOfSize(15000), quiet());
     ASSERT_EQ(result.errors(), 1) << lines(result.diagnostics).front();
     const auto& error = result.diagnostics.front();
     EXPECT_EQ(error.line, 3);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // ;@system records (docs/file-format.md): what the compiler makes of them and
 // every error it gives at a call, at its line and column.
+#include "DiagnosticsText.h"
 #include "compiler/Compiler.h"
 #include "compiler/ImageCodec.h"
 #include "compiler/SystemInstruction.h"
@@ -13,11 +14,13 @@
 
 using namespace rs;
 using compiler::Op;
+using rs::test::problemsText;
 
 namespace {
 
 // Unit 1 reads the register and double register unit 0 exports.
-std::string twoUnits(const std::string& unitOneCode, const std::string& unitOneNames = "") {
+std::string twoUnitsExporting(const std::string& unitOneCode,
+                              const std::string& unitOneNames = "") {
     return "! id_pluto:00=000000000000\n"
            ";@var R0.5 export=\"yes\"\n"
            ";@var DR0.10 export=\"yes\"\n"
@@ -31,15 +34,6 @@ std::string twoUnits(const std::string& unitOneCode, const std::string& unitOneN
            unitOneNames + "S1.0_0\n" + unitOneCode;
 }
 
-std::string problems(const compiler::CompileResult& result) {
-    std::string text;
-    for (const auto& d : result.diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
-                (d.severity == lang::Severity::Error ? "error" : "warning") + ": " + d.message +
-                "\n";
-    return text;
-}
-
 const compiler::UnitImage& unitOne(const compiler::CompileResult& result) {
     return result.images.back();
 }
@@ -49,12 +43,12 @@ const compiler::UnitImage& unitOne(const compiler::CompileResult& result) {
 TEST(SystemCall, ACallIsASystemInstructionAndItsOperandsInTheParametersOrder) {
     // Operands in another order than the instruction's, a name, lower case.
     const auto result = compiler::compileText(
-        twoUnits("M1.0 = I1.0\n"
-                 ";@system registervalid value=\"Speed\" Valid=\"m1.1\" Input=\"R0.5\"\n"
-                 "Q1.10 = M1.1\n",
-                 "! R1.7=Speed\n"),
+        twoUnitsExporting("M1.0 = I1.0\n"
+                          ";@system registervalid value=\"Speed\" Valid=\"m1.1\" Input=\"R0.5\"\n"
+                          "Q1.10 = M1.1\n",
+                          "! R1.7=Speed\n"),
         {false});
-    ASSERT_EQ(problems(result), "");
+    ASSERT_EQ(problemsText(result), "");
     const auto& code = unitOne(result).code;
     // M1.0 = I1.0: Rung, Contact, Coil; then the call; then Q1.10 = M1.1.
     ASSERT_EQ(code.size(), 3u + 4u + 3u);
@@ -125,18 +119,18 @@ TEST(SystemCall, WrongCallsAreErrorsAtTheRecord) {
          "12:50: error: R0.6 belongs to unit 0; a unit writes only its own variables\n"},
     };
     for (const auto& c : cases) {
-        const auto result = compiler::compileText(twoUnits(c.call + "\n"), {false});
-        EXPECT_EQ(problems(result), c.expected) << c.call;
+        const auto result = compiler::compileText(twoUnitsExporting(c.call + "\n"), {false});
+        EXPECT_EQ(problemsText(result), c.expected) << c.call;
         EXPECT_TRUE(result.images.empty()) << c.call;
     }
 }
 
 TEST(SystemCall, AnOutputWrittenElsewhereTooIsWarnedAboutAsACoilIs) {
     const auto result = compiler::compileText(
-        twoUnits(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"
-                 "M1.1 = I1.0\n"),
+        twoUnitsExporting(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"
+                          "M1.1 = I1.0\n"),
         {false});
-    EXPECT_EQ(problems(result),
+    EXPECT_EQ(problemsText(result),
               "13:1: warning: M1.1 is also written at line 12; the write that runs last in each "
               "scan wins\n");
 }
@@ -145,7 +139,8 @@ TEST(SystemCall, AnOutputWrittenElsewhereTooIsWarnedAboutAsACoilIs) {
 // image that says otherwise is refused when read.
 TEST(SystemCall, ADamagedCallIsRefusedWhenTheImageIsRead) {
     const auto result = compiler::compileText(
-        twoUnits(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"), {false});
+        twoUnitsExporting(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"),
+        {false});
     ASSERT_EQ(result.errors(), 0);
     const compiler::UnitImage& image = unitOne(result);
     std::size_t call = 0;

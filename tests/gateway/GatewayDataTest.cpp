@@ -1,16 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gateway/GatewayData.h"
+#include "DiagnosticsText.h"
 #include "compiler/Compiler.h"
 
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
 
 namespace {
-
-lang::Address address(const char* word) {
-    return lang::readAddressWord(word).address;
-}
 
 sim::Simulation simulate(const std::string& text) {
     const auto compiled = compiler::compileText(text);
@@ -30,8 +28,8 @@ TEST(GatewayData, AnA20sGlobalDataInTheFamilyLayout) {
                                           "GM2.0 = I2.17\n"
                                           "GM2.11 = I2.17\n");
     EXPECT_EQ(gateway::globalData(simulation, 2), 0u);
-    simulation.set(address("I2.0"), 1);
-    simulation.set(address("I2.17"), 1);
+    simulation.set(addressOf("I2.0"), 1);
+    simulation.set(addressOf("I2.17"), 1);
     simulation.scan();
     // I2.0 bit 0, I2.17 bit 15, Q2.1 bit 17, GM2.0 bit 20, GM2.11 bit 31.
     EXPECT_EQ(gateway::globalData(simulation, 2),

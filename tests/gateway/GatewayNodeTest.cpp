@@ -4,29 +4,21 @@
 // Data to Pluto in the units' External Comm Blocks, the configuration and
 // local data units of the Modbus map.
 #include "gateway/GatewayNode.h"
+#include "DiagnosticsText.h"
 #include "compiler/Compiler.h"
 #include "project/ProjectFile.h"
 
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
+using rs::test::diagnosticsText;
 
 namespace {
 
-lang::Address address(const char* word) {
-    return lang::readAddressWord(word).address;
-}
-
-std::string messages(const lang::Diagnostics& diagnostics) {
-    std::string text;
-    for (const auto& d : diagnostics)
-        text += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message + "\n";
-    return text;
-}
-
 compiler::CompileResult compiled(const std::string& text) {
     const auto read = project::readProject(text);
-    EXPECT_TRUE(read.ok()) << messages(read.diagnostics);
+    EXPECT_TRUE(read.ok()) << diagnosticsText(read.diagnostics);
     return compiler::compile(read.project);
 }
 
@@ -40,7 +32,7 @@ struct Plant {
                           "! pgm_pluto:01\n" +
                           records + "S1.0_0\n" + code)),
           simulation(result.images), node(0, project::readProject(gateway).project.gateways.at(0)) {
-        EXPECT_EQ(result.errors(), 0) << messages(result.diagnostics);
+        EXPECT_EQ(result.errors(), 0) << diagnosticsText(result.diagnostics);
         node.exchange(simulation);
     }
     void scan(int scans = 1) {
@@ -49,7 +41,7 @@ struct Plant {
             node.exchange(simulation);
         }
     }
-    std::int64_t value(const char* word) const { return simulation.value(address(word)); }
+    std::int64_t value(const char* word) const { return simulation.value(addressOf(word)); }
     std::uint32_t unit33(int address) const {
         return std::uint32_t{node.dataFromPluto()[static_cast<std::size_t>(address)]} << 16 |
                node.dataFromPluto()[static_cast<std::size_t>(address) + 1];
@@ -82,7 +74,7 @@ TEST(GatewayNode, AUserBlocksTelegramFillsTheFirstAreaConfiguredForIt) {
     plant.scan();
     EXPECT_EQ(plant.value("Q1.10"), 0); // Send is 0
     EXPECT_EQ(plant.unit33(67), 0u);
-    plant.simulation.set(address("I1.0"), 1);
+    plant.simulation.set(addressOf("I1.0"), 1);
     plant.scan();
     EXPECT_EQ(plant.value("Q1.10"), 1);
     // Bytes 0-1 Reg_0 (0x1234), bytes 2-3 Reg_1 (-2): MSW first at 67.
@@ -94,10 +86,10 @@ TEST(GatewayNode, AUserBlocksTelegramFillsTheFirstAreaConfiguredForIt) {
 
 TEST(GatewayNode, AnAreaReadsZeroAfter300msWithoutATelegram) {
     Plant plant(kGateway, "(R1.0 = 1) = /M1.99\n" + kUserA);
-    plant.simulation.set(address("I1.0"), 1);
+    plant.simulation.set(addressOf("I1.0"), 1);
     plant.scan();
     ASSERT_EQ(plant.unit33(67), 0xFFFE0001u);
-    plant.simulation.set(address("I1.0"), 0);
+    plant.simulation.set(addressOf("I1.0"), 0);
     plant.scan(30); // 300 ms after the last telegram: still within the timeout
     EXPECT_EQ(plant.unit33(67), 0xFFFE0001u);
     plant.scan();
@@ -106,8 +98,8 @@ TEST(GatewayNode, AnAreaReadsZeroAfter300msWithoutATelegram) {
 
 TEST(GatewayNode, StandardBlocksSendTheirLayout) {
     Plant plant(kGateway, ";@system ToGateway_ErrorCode Send=\"I1.0\" Q=\"M1.0\"\n");
-    plant.simulation.force(address("SR1.11"), 42); // SR_ErrorCode
-    plant.simulation.set(address("I1.0"), 1);
+    plant.simulation.force(addressOf("SR1.11"), 42); // SR_ErrorCode
+    plant.simulation.set(addressOf("I1.0"), 1);
     plant.scan(2);
     // IO-type 100: byte 3 the error code, the rest undefined (0).
     EXPECT_EQ(plant.unit33(69), 42u << 24);
@@ -120,10 +112,11 @@ TEST(GatewayNode, AUnitSendsAtMostFourTelegramsAScan) {
                 "\" Send=\"I1.0\" Reg_0=\"" + std::to_string(no) + "\" Reg_1=\"0\" Q=\"M1." +
                 std::to_string(no) + "\"\n";
     Plant plant(kGateway, code);
-    EXPECT_NE(messages(plant.result.diagnostics).find("5 ToGateway blocks of unit 1 can send"),
-              std::string::npos)
-        << messages(plant.result.diagnostics);
-    plant.simulation.set(address("I1.0"), 1);
+    EXPECT_NE(
+        diagnosticsText(plant.result.diagnostics).find("5 ToGateway blocks of unit 1 can send"),
+        std::string::npos)
+        << diagnosticsText(plant.result.diagnostics);
+    plant.simulation.set(addressOf("I1.0"), 1);
     plant.scan();
     for (const char* q : {"M1.1", "M1.2", "M1.3", "M1.4"})
         EXPECT_EQ(plant.value(q), 1) << q;
@@ -215,7 +208,7 @@ TEST(GatewayNode, TheConfigurationUnitTakesOnlyTheManualsRanges) {
 
 TEST(GatewayNode, ALocalDataRequestIsAnsweredWithTheFlagSequence) {
     Plant plant(kGateway, "M1.5 = I1.0\n(R1.2 = 1234) = /M1.99\n");
-    plant.simulation.set(address("I1.0"), 1);
+    plant.simulation.set(addressOf("I1.0"), 1);
     plant.scan();
     // M5 of an A20 is local bit address 216 + 5.
     ASSERT_EQ(plant.write(2, 0, {3, 1, 1, 221}).exception, gateway::ModbusException::None);
@@ -265,7 +258,7 @@ TEST(GatewayNode, TheCompilerChecksWhatTheManualStates) {
                             "Q=\"M1.3\"\n"
                             ";@system Ext_Val BlockNo=\"3\" Valid=\"M1.4\" Reg_0=\"R1.0\" "
                             "Reg_1=\"R1.1\"\n");
-    const std::string text = messages(result.diagnostics);
+    const std::string text = diagnosticsText(result.diagnostics);
     EXPECT_EQ(result.errors(), 2) << text;
     for (const char* expected :
          {"user block number 5 is already used at line 12", "No must be a number 1-99",
@@ -291,10 +284,10 @@ std::uint32_t telegramOf(const std::string& type, const std::string& block,
                                  "S0.0_0\n"
                                  ";@system " +
                                  block + " Send=\"M0.1\" Q=\"M0.2\"\nM0.1 = /M0.99\n");
-    EXPECT_EQ(result.errors(), 0) << messages(result.diagnostics);
+    EXPECT_EQ(result.errors(), 0) << diagnosticsText(result.diagnostics);
     sim::Simulation simulation(result.images);
     for (const char* input : inputs)
-        simulation.set(address(input), 1);
+        simulation.set(addressOf(input), 1);
     simulation.scan(); // M0.1 comes on
     simulation.scan();
     const auto& telegrams = simulation.unit(0)->telegrams();

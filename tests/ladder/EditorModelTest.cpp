@@ -22,7 +22,7 @@ using namespace rs::ladder;
 using rs::lang::Address;
 using rs::lang::AddressKind;
 
-rs::lang::Document documentWithNames() {
+rs::lang::Document editorDocument() {
     return rs::lang::parse("! id_pluto:00=000034AD4AE1\n"
                            "! I0.12=EStop\n"
                            "! pgm_pluto:00\n"
@@ -32,7 +32,7 @@ rs::lang::Document documentWithNames() {
 }
 
 TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
-    const auto document = documentWithNames();
+    const auto document = editorDocument();
     for (const char* text :
          {"EStop", "/I0.2", "R0.3.7", "P(I0.14)", "N(/I0.1)", "/P(I0.3)", "TON(2s50)", "/TPS(R0.5)",
           "TOF(1s50)", "(Count>=5)", "/(R0.4=R0.2)"}) {
@@ -47,7 +47,7 @@ TEST(ElementText, ReadsEveryElementKindWithTheUnitsNames) {
 }
 
 TEST(ElementText, ReadsEveryOutputKind) {
-    const auto document = documentWithNames();
+    const auto document = editorDocument();
     for (const char* text : {"Q0.2", "S(Q0.2)", "R(M0.1)", "T(Q0.3)", "J(+1)", "J(0)", "J(-2)",
                              "R(S0.1)", "(Count += 2)", "(R0.4++)", "(R0.4 = R0.2 + R0.3)"}) {
         const OutputReading read = readOutput(document, 0, text);
@@ -57,7 +57,7 @@ TEST(ElementText, ReadsEveryOutputKind) {
 }
 
 TEST(ElementText, AnAddressTypedWhereTheUnitHasANameIsWrittenWithTheName) {
-    const auto document = documentWithNames();
+    const auto document = editorDocument();
     const ElementReading contact = readElement(document, 0, "/i0.12");
     ASSERT_TRUE(contact.element) << contact.error;
     EXPECT_EQ(elementText(*contact.element), "/EStop");
@@ -73,7 +73,7 @@ TEST(ElementText, AnAddressTypedWhereTheUnitHasANameIsWrittenWithTheName) {
 }
 
 TEST(ElementText, RefusesWhatIsNotOneElementWithAReason) {
-    const auto document = documentWithNames();
+    const auto document = editorDocument();
     EXPECT_FALSE(readElement(document, 0, "I0.1 * I0.2").error.empty());
     EXPECT_FALSE(readElement(document, 0, "NoSuchName").error.empty());
     EXPECT_FALSE(readElement(document, 0, "").error.empty());

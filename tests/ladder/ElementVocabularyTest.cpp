@@ -24,7 +24,7 @@ using rs::lang::Operand;
 using rs::lang::printOperand;
 using rs::lang::Value;
 
-rs::lang::Document documentWithNames() {
+rs::lang::Document vocabularyDocument() {
     return rs::lang::parse("! id_pluto:00=000034AD4AE1\n"
                            "! type_pluto:00=B46,is3\n"
                            "! I0.12=EStop\n"
@@ -212,7 +212,7 @@ TEST(ElementVocabulary, ListsEveryKindOnceWithItsOwnKey) {
 }
 
 TEST(ElementVocabulary, EveryKindMakesANodeThatPrintsAsTheKindAndReadsBack) {
-    const auto document = documentWithNames();
+    const auto document = vocabularyDocument();
     RandomParts random(14);
     for (int round = 0; round < 60; ++round)
         for (const ElementKindInfo& info : elementKinds()) {

@@ -14,7 +14,7 @@ using namespace rs::lang;
 
 namespace {
 
-constexpr const char* kHeader = "! pgm_pluto:00\nS0.0_0\n";
+constexpr const char* kExtremeHeader = "! pgm_pluto:00\nS0.0_0\n";
 
 // "I0.1 + I0.2 * (I0.3 + I0.4 * (...))": each level of parentheses adds an OR
 // and an AND to the tree, the deepest tree a given nesting can make.
@@ -40,7 +40,7 @@ const Statement& onlyStatement(const ParseResult& result) {
 
 TEST(ExtremeInput, ParenthesesNestUpToTheLimit) {
     const ParseResult result =
-        parse(std::string(kHeader) + "Q0.0 = " + alternating(kMaxExpressionDepth) + "\n");
+        parse(std::string(kExtremeHeader) + "Q0.0 = " + alternating(kMaxExpressionDepth) + "\n");
     ASSERT_TRUE(result.diagnostics.empty()) << result.diagnostics.front().message;
     EXPECT_EQ(depthOf(*onlyStatement(result).condition), 2 * kMaxExpressionDepth + 1);
     // The canonical text keeps the nesting, so it reads back.
@@ -51,7 +51,7 @@ TEST(ExtremeInput, ParenthesesNestUpToTheLimit) {
 TEST(ExtremeInput, OneLevelMoreIsAnErrorAtTheParenthesisThatGoesTooDeep) {
     const std::string statement =
         "Q0.0 = " + std::string(101, '(') + "I0.0" + std::string(101, ')') + "\nQ0.1 = I0.1\n";
-    const ParseResult result = parse(std::string(kHeader) + statement);
+    const ParseResult result = parse(std::string(kExtremeHeader) + statement);
     ASSERT_EQ(result.diagnostics.size(), 1u);
     EXPECT_EQ(result.diagnostics[0].line, 3);
     EXPECT_EQ(result.diagnostics[0].column, 8 + 100);
@@ -61,8 +61,9 @@ TEST(ExtremeInput, OneLevelMoreIsAnErrorAtTheParenthesisThatGoesTooDeep) {
 }
 
 TEST(ExtremeInput, TenThousandParenthesesAreOneErrorNotAStackOverflow) {
-    const ParseResult result = parse(std::string(kHeader) + "Q0.0 = " + std::string(10000, '(') +
-                                     "I0.0" + std::string(10000, ')') + "\n");
+    const ParseResult result =
+        parse(std::string(kExtremeHeader) + "Q0.0 = " + std::string(10000, '(') + "I0.0" +
+              std::string(10000, ')') + "\n");
     ASSERT_EQ(result.diagnostics.size(), 1u);
     EXPECT_EQ(result.diagnostics[0].column, 108);
 }
@@ -71,7 +72,7 @@ TEST(ExtremeInput, ALongChainIsOneFlatNode) {
     std::string chain = "I0.0";
     for (int i = 1; i < 100000; ++i)
         chain += " + I0." + std::to_string(i % 8);
-    ParseResult result = parse(std::string(kHeader) + "Q0.0 = " + chain + "\n");
+    ParseResult result = parse(std::string(kExtremeHeader) + "Q0.0 = " + chain + "\n");
     ASSERT_TRUE(result.diagnostics.empty());
     const Expr& condition = *onlyStatement(result).condition;
     EXPECT_EQ(condition.kind, ExprKind::Or);
@@ -103,7 +104,7 @@ TEST(ExtremeInput, ACarriageReturnAloneEndsALineAsLfAndCrLfDo) {
 
 TEST(ExtremeInput, ControlCharactersInAMessageAreShownVisibly) {
     const ParseResult result =
-        parse(std::string(kHeader) + "Q0.0 = I0.0 " + std::string("\0\x01\x7F", 3) + "\n");
+        parse(std::string(kExtremeHeader) + "Q0.0 = I0.0 " + std::string("\0\x01\x7F", 3) + "\n");
     ASSERT_EQ(result.diagnostics.size(), 1u);
     EXPECT_EQ(result.diagnostics[0].message, "unexpected '\\0' after the statement");
     EXPECT_EQ(visibleText(std::string("a\0b\tc\x01\x7F\r\n", 9)), "a\\0b\\tc\\x01\\x7F\\r\\n");

@@ -16,10 +16,10 @@ using namespace rs::lang;
 
 namespace {
 
-constexpr const char* kHeader = "! pgm_pluto:00\nS0.0_0\n";
+constexpr const char* kKeywordsHeader = "! pgm_pluto:00\nS0.0_0\n";
 
-std::string canonicalStatement(const std::string& statement) {
-    ParseResult result = parse(std::string(kHeader) + statement + "\n");
+std::string canonicalKeywordStatement(const std::string& statement) {
+    ParseResult result = parse(std::string(kKeywordsHeader) + statement + "\n");
     if (!result.diagnostics.empty())
         return "error: " + result.diagnostics.front().message;
     const auto& lines = result.document.units.at(0).steps.at(0).lines;
@@ -47,25 +47,26 @@ TEST(Keywords, EveryInstructionWordIsParsedAndPrintedBack) {
         const std::string lower = toLower(word);
         bool read = false;
         if (word == kRisingEdgeWord || word == kFallingEdgeWord) {
-            EXPECT_EQ(canonicalStatement("Q0.1 = " + lower + "(I0.0)"), "Q0.1 = " + w + "(I0.0)");
+            EXPECT_EQ(canonicalKeywordStatement("Q0.1 = " + lower + "(I0.0)"),
+                      "Q0.1 = " + w + "(I0.0)");
             read = true;
         }
         if (timerSpellingOf(word)) {
-            EXPECT_EQ(canonicalStatement("Q0.1 = I0.5 * " + lower + "(1s00)"),
+            EXPECT_EQ(canonicalKeywordStatement("Q0.1 = I0.5 * " + lower + "(1s00)"),
                       "Q0.1 = I0.5 * " + w + "(1s00)");
             read = true;
         }
         if (word == statementWord(StatementKind::Set) ||
             word == statementWord(StatementKind::Reset) ||
             word == statementWord(StatementKind::Toggle)) {
-            EXPECT_EQ(canonicalStatement(lower + "(q0.1) = i0.0"), w + "(Q0.1) = I0.0");
+            EXPECT_EQ(canonicalKeywordStatement(lower + "(q0.1) = i0.0"), w + "(Q0.1) = I0.0");
             read = true;
         }
         if (word == statementWord(StatementKind::SequenceReset)) {
-            EXPECT_EQ(canonicalStatement(lower + "(s0.2) = i0.7"), w + "(S0.2) = I0.7");
+            EXPECT_EQ(canonicalKeywordStatement(lower + "(s0.2) = i0.7"), w + "(S0.2) = I0.7");
         }
         if (word == statementWord(StatementKind::Jump)) {
-            EXPECT_EQ(canonicalStatement(lower + "(+1) = I0.0"), w + "(+1) = I0.0");
+            EXPECT_EQ(canonicalKeywordStatement(lower + "(+1) = I0.0"), w + "(+1) = I0.0");
             read = true;
         }
         EXPECT_TRUE(read) << w << " is in the table but no form of the language uses it here";
@@ -102,21 +103,22 @@ TEST(Keywords, EveryOperatorIsParsedAndPrintedBack) {
     for (auto op : {CompareOp::Equal, CompareOp::Greater, CompareOp::Less, CompareOp::GreaterEqual,
                     CompareOp::LessEqual}) {
         const std::string w = spelled(compareWord(op));
-        EXPECT_EQ(canonicalStatement("Q0.1 = (R0.1 " + w + " 4)"), "Q0.1 = (R0.1" + w + "4)");
+        EXPECT_EQ(canonicalKeywordStatement("Q0.1 = (R0.1 " + w + " 4)"),
+                  "Q0.1 = (R0.1" + w + "4)");
         EXPECT_EQ(compareOpOf(w), op);
     }
     for (auto op : {AssignOp::Increment, AssignOp::Decrement}) {
         const std::string w = spelled(assignWord(op));
-        EXPECT_EQ(canonicalStatement("(R0.100 " + w + ")"), "(R0.100" + w + ")");
+        EXPECT_EQ(canonicalKeywordStatement("(R0.100 " + w + ")"), "(R0.100" + w + ")");
     }
     for (auto op : {AssignOp::AddAssign, AssignOp::SubAssign, AssignOp::MulAssign,
                     AssignOp::DivAssign, AssignOp::Copy}) {
         const std::string w = spelled(assignWord(op));
-        EXPECT_EQ(canonicalStatement("(R0.100" + w + "7)"), "(R0.100 " + w + " 7)");
+        EXPECT_EQ(canonicalKeywordStatement("(R0.100" + w + "7)"), "(R0.100 " + w + " 7)");
     }
     for (auto op : {BinaryOp::Add, BinaryOp::Sub, BinaryOp::Mul, BinaryOp::Div}) {
         const std::string w = spelled(binaryWord(op));
-        EXPECT_EQ(canonicalStatement("(R0.100=R0.1" + w + "R0.2)"),
+        EXPECT_EQ(canonicalKeywordStatement("(R0.100=R0.1" + w + "R0.2)"),
                   "(R0.100 = R0.1 " + w + " R0.2)");
     }
 }

@@ -42,8 +42,6 @@ std::vector<std::string> commentsOf(std::string_view text) {
 
 class ManualExample : public ::testing::TestWithParam<fs::path> {};
 
-} // namespace
-
 TEST(ManualExamples, AreAllThere) {
     EXPECT_GE(manualExamples().size(), 40u);
 }
@@ -78,3 +76,5 @@ INSTANTIATE_TEST_SUITE_P(Manuals, ManualExample, ::testing::ValuesIn(manualExamp
                                      c = '_';
                              return name;
                          });
+
+} // namespace

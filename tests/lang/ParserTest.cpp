@@ -8,11 +8,11 @@ using namespace rs::lang;
 
 namespace {
 
-constexpr const char* kHeader = "! pgm_pluto:00\nS0.0_0\n";
+constexpr const char* kParserHeader = "! pgm_pluto:00\nS0.0_0\n";
 
 // The canonical text of one statement written in the main code of unit 0.
 std::string canonicalStatement(const std::string& statement) {
-    ParseResult result = parse(std::string(kHeader) + statement + "\n");
+    ParseResult result = parse(std::string(kParserHeader) + statement + "\n");
     if (!result.diagnostics.empty())
         return "error: " + result.diagnostics.front().message;
     const auto& lines = result.document.units.at(0).steps.at(0).lines;
@@ -167,7 +167,7 @@ TEST(Parser, CommentsAndBlankLinesAreKept) {
 
 TEST(Parser, LongCodeGetsOneSpaceBeforeItsComment) {
     ParseResult result =
-        parse(std::string(kHeader) + "J(+1) = /I0.0 * /I0.1 * (SR0.43<100) ; both sensors\n");
+        parse(std::string(kParserHeader) + "J(+1) = /I0.0 * /I0.1 * (SR0.43<100) ; both sensors\n");
     ASSERT_TRUE(result.diagnostics.empty());
     EXPECT_NE(print(result.document).find("(SR0.43<100) ; both sensors\n"), std::string::npos);
 }

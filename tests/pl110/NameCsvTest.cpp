@@ -14,7 +14,7 @@ const char* const kProgram = "$target PL110\n"
                              "MAIN\n"
                              "Pump = Start * /I2\n";
 
-Program read(std::string_view text) {
+Program readNamedProgram(std::string_view text) {
     ProgramReading reading = readProgram(text);
     EXPECT_TRUE(reading.diagnostics.empty());
     return reading.program;
@@ -22,16 +22,16 @@ Program read(std::string_view text) {
 
 TEST(Pl110NameCsv, ExportsEveryNameWithItsDescription) {
     EXPECT_EQ(
-        exportNamesCsv(read(kProgram)),
+        exportNamesCsv(readNamedProgram(kProgram)),
         "\xEF\xBB\xBFVariable,Symbolic Name,Description\r\nI1,Start,green button\r\nQ1,Pump,\r\n");
 }
 
 TEST(Pl110NameCsv, ImportRenamesAddsAndRemovesAndTheRungsFollow) {
     const NameCsvImport imported =
-        importNamesCsv(read(kProgram), "Variable;Symbolic Name;Description\n"
-                                       "I1;StartButton;\"green; lit\"\n"
-                                       "i2;Stop;red\n"
-                                       "Q1;;\n");
+        importNamesCsv(readNamedProgram(kProgram), "Variable;Symbolic Name;Description\n"
+                                                   "I1;StartButton;\"green; lit\"\n"
+                                                   "i2;Stop;red\n"
+                                                   "Q1;;\n");
     ASSERT_TRUE(imported.problems.empty()) << imported.problems.front().message;
     EXPECT_EQ(imported.changed, 3);
     // A new name is declared; operands written as addresses stay as written.
@@ -44,13 +44,14 @@ TEST(Pl110NameCsv, ImportRenamesAddsAndRemovesAndTheRungsFollow) {
 }
 
 TEST(Pl110NameCsv, BadRowsAreReportedAtTheirFieldAndLeftOut) {
-    const NameCsvImport imported = importNamesCsv(read(kProgram), "I300,Far,\n"
-                                                                  "Motor,Pump2,\n"
-                                                                  "I3,NOT,\n"
-                                                                  "I4,Q7,\n"
-                                                                  "I5,Pump,\n"
-                                                                  "I6,,only a description\n"
-                                                                  "I7,Fine,\n");
+    const NameCsvImport imported =
+        importNamesCsv(readNamedProgram(kProgram), "I300,Far,\n"
+                                                   "Motor,Pump2,\n"
+                                                   "I3,NOT,\n"
+                                                   "I4,Q7,\n"
+                                                   "I5,Pump,\n"
+                                                   "I6,,only a description\n"
+                                                   "I7,Fine,\n");
     std::string text;
     for (const auto& p : imported.problems)
         text += std::to_string(p.line) + ":" + std::to_string(p.column) + ": " + p.message + "\n";
@@ -62,7 +63,7 @@ TEST(Pl110NameCsv, BadRowsAreReportedAtTheirFieldAndLeftOut) {
                     "6:4: a description needs a name: the text form keeps it on the name's line\n");
     EXPECT_EQ(imported.changed, 1);
     // What export writes, import reads back to the same program.
-    const Program program = read(kProgram);
+    const Program program = readNamedProgram(kProgram);
     const NameCsvImport again = importNamesCsv(program, exportNamesCsv(program));
     EXPECT_TRUE(again.problems.empty());
     EXPECT_EQ(again.changed, 0);

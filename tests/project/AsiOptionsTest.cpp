@@ -23,7 +23,7 @@ constexpr std::string_view kAsiUnit = "$name Asi\n"
                                       "! pgm_pluto:00\n"
                                       "S0.0_0\n";
 
-std::vector<std::string> labels(const std::vector<lang::Address>& list) {
+std::vector<std::string> asiLabels(const std::vector<lang::Address>& list) {
     std::vector<std::string> text;
     for (const auto& a : list)
         text.push_back(lang::toString(a));
@@ -34,9 +34,9 @@ std::vector<std::string> labels(const std::vector<lang::Address>& list) {
 
 TEST(AsiOptions, SlaveVariablesFollowTheManualsTable) {
     const auto& asi = target::unitTypeInfo(target::UnitType::ASi);
-    EXPECT_EQ(labels(project::slaveVariables(asi, 0, {3, false}, AsiSlaveType::SafeInput)),
+    EXPECT_EQ(asiLabels(project::slaveVariables(asi, 0, {3, false}, AsiSlaveType::SafeInput)),
               (std::vector<std::string>{"ASi0.3", "ASq0.3.1", "ASq0.3.2", "ASq0.3.3", "ASq0.3.4"}));
-    EXPECT_EQ(labels(project::slaveVariables(asi, 0, {5, true}, AsiSlaveType::NonsafeAB)),
+    EXPECT_EQ(asiLabels(project::slaveVariables(asi, 0, {5, true}, AsiSlaveType::NonsafeAB)),
               (std::vector<std::string>{"ASi0.5B.1", "ASi0.5B.2", "ASi0.5B.3", "ASi0.5B.4",
                                         "ASq0.5B.1", "ASq0.5B.2", "ASq0.5B.3"}));
     EXPECT_EQ(project::slaveVariables(asi, 0, {7, false}, AsiSlaveType::NonsafeStandard).size(),

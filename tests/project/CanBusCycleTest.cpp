@@ -11,16 +11,16 @@ using namespace rs;
 
 namespace {
 
-constexpr std::string_view kTwoUnits = "! id_pluto:00=000000000000\n"
-                                       "! id_pluto:01=000000000001\n"
-                                       "! type_pluto:00=A20,is3\n"
-                                       "! type_pluto:01=A20,is3\n"
-                                       "! pgm_pluto:00\n"
-                                       "S0.0_0\n"
-                                       "Q0.14 = I1.0\n";
+constexpr std::string_view kCanTwoUnits = "! id_pluto:00=000000000000\n"
+                                          "! id_pluto:01=000000000001\n"
+                                          "! type_pluto:00=A20,is3\n"
+                                          "! type_pluto:01=A20,is3\n"
+                                          "! pgm_pluto:00\n"
+                                          "S0.0_0\n"
+                                          "Q0.14 = I1.0\n";
 
 std::string firstError(std::string_view unitRecord) {
-    std::string text(kTwoUnits);
+    std::string text(kCanTwoUnits);
     text.insert(text.find("! type_pluto"), std::string(unitRecord) + "\n");
     for (const auto& d : project::readProject(text).diagnostics)
         if (d.severity == lang::Severity::Error)
@@ -31,7 +31,7 @@ std::string firstError(std::string_view unitRecord) {
 } // namespace
 
 TEST(CanBusCycle, KeptAsAUnitRecordOnlyWhenNotTheDefault) {
-    auto read = project::readProject(kTwoUnits);
+    auto read = project::readProject(kCanTwoUnits);
     EXPECT_EQ(project::canCycleOf(read.project, 1), 0);
     ASSERT_FALSE(project::setCanCycle(read.project, 1, 40));
     const std::string text = project::writeProject(read.project);
@@ -63,8 +63,8 @@ TEST(CanBusCycle, AValueOutsideTheLimitsIsRefused) {
 }
 
 TEST(CanBusCycle, TheImageCarriesItAndTheSignatureChangesOnlyWhenSet) {
-    const auto plain = compiler::compileText(std::string(kTwoUnits));
-    auto read = project::readProject(kTwoUnits);
+    const auto plain = compiler::compileText(std::string(kCanTwoUnits));
+    auto read = project::readProject(kCanTwoUnits);
     ASSERT_FALSE(project::setCanCycle(read.project, 0, 30));
     const auto slow = compiler::compile(read.project);
     ASSERT_EQ(slow.errors(), 0);

@@ -16,7 +16,7 @@ using project::TerminalSetting;
 
 namespace {
 
-std::vector<std::string> labels(const std::vector<Terminal>& terminals) {
+std::vector<std::string> terminalLabels(const std::vector<Terminal>& terminals) {
     std::vector<std::string> list;
     for (const auto& t : terminals)
         list.push_back(t.label());
@@ -80,7 +80,7 @@ std::vector<TerminalSetting> offeredSettings(const target::UnitTypeInfo& type,
 TEST(IoOptions, TheA20ListsItsInputsItsConfigurableTerminalsAndQ2Q3) {
     const auto& a20 = target::unitTypeInfo(target::UnitType::A20);
     const auto terminals = project::terminalsOf(a20, 0);
-    EXPECT_EQ(labels(terminals),
+    EXPECT_EQ(terminalLabels(terminals),
               (std::vector<std::string>{"I0.0", "I0.1", "I0.2", "I0.3", "I0.4", "I0.5", "I0.6",
                                         "I0.7", "IQ0.10", "IQ0.11", "IQ0.12", "IQ0.13", "IQ0.14",
                                         "IQ0.15", "IQ0.16", "IQ0.17", "Q0.2", "Q0.3"}));
@@ -95,15 +95,17 @@ TEST(IoOptions, TheA20ListsItsInputsItsConfigurableTerminalsAndQ2Q3) {
 
 TEST(IoOptions, OtherTypesListWhatTheirTablesSay) {
     // A B22 has no safety outputs, so its list ends with its local inputs.
-    const auto b22 = labels(project::terminalsOf(target::unitTypeInfo(target::UnitType::B22), 1));
+    const auto b22 =
+        terminalLabels(project::terminalsOf(target::unitTypeInfo(target::UnitType::B22), 1));
     EXPECT_EQ(b22.back(), "I1.25");
     const auto d45 = project::terminalsOf(target::unitTypeInfo(target::UnitType::D45), 0);
     EXPECT_EQ(d45.front().label(), "IA0.0");
-    EXPECT_EQ(labels(d45).at(8), "IQ0.10");
+    EXPECT_EQ(terminalLabels(d45).at(8), "IQ0.10");
     const auto& d45Info = target::unitTypeInfo(target::UnitType::D45);
     EXPECT_EQ(project::signalTypes(d45Info, {TerminalKind::Analogue, 0, 3}).size(), 6u);
     EXPECT_EQ(project::signalTypes(d45Info, {TerminalKind::Analogue, 0, 4}).size(), 4u);
-    const auto b46 = labels(project::terminalsOf(target::unitTypeInfo(target::UnitType::B46), 0));
+    const auto b46 =
+        terminalLabels(project::terminalsOf(target::unitTypeInfo(target::UnitType::B46), 0));
     EXPECT_EQ(std::count(b46.begin(), b46.end(), "Q0.2"), 0); // no test-pulse option
 }
 

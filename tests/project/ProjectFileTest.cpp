@@ -11,25 +11,26 @@ using namespace rs;
 
 namespace {
 
-const char* kProject = "$name Press line\n"
-                       ";@project description=\"Two presses, one \\\"safe\\\" stop\\nsecond line\" "
-                       "include_source=yes\n"
-                       "! id_pluto:00=000000000000\n"
-                       ";@unit 00 description=\"Cabinet A\"\n"
-                       ";@var I0.0 description=\"Emergency stop, NC\"\n"
-                       "! id_pluto:01=000000000000\n"
-                       "! I0.0=EStop\n"
-                       "! pgm_pluto:00\n"
-                       ";@var M0.1 description=\"Latched fault\"\n"
-                       "S0.0_0\n"
-                       ";@network comment=\"Outputs\"\n"
-                       "Q0.2 = EStop\n"
-                       "Q0.3 = Q0.2\n";
+const char* kFileProject =
+    "$name Press line\n"
+    ";@project description=\"Two presses, one \\\"safe\\\" stop\\nsecond line\" "
+    "include_source=yes\n"
+    "! id_pluto:00=000000000000\n"
+    ";@unit 00 description=\"Cabinet A\"\n"
+    ";@var I0.0 description=\"Emergency stop, NC\"\n"
+    "! id_pluto:01=000000000000\n"
+    "! I0.0=EStop\n"
+    "! pgm_pluto:00\n"
+    ";@var M0.1 description=\"Latched fault\"\n"
+    "S0.0_0\n"
+    ";@network comment=\"Outputs\"\n"
+    "Q0.2 = EStop\n"
+    "Q0.3 = Q0.2\n";
 
 } // namespace
 
 TEST(ProjectFile, RecordsBecomeProjectFields) {
-    auto result = project::readProject(kProject);
+    auto result = project::readProject(kFileProject);
     ASSERT_TRUE(result.diagnostics.empty()) << result.diagnostics.front().message;
     const auto& p = result.project;
     EXPECT_EQ(p.name(), "Press line");
@@ -42,7 +43,7 @@ TEST(ProjectFile, RecordsBecomeProjectFields) {
 }
 
 TEST(ProjectFile, SaveOpenSaveIsByteIdentical) {
-    auto first = project::readProject(kProject);
+    auto first = project::readProject(kFileProject);
     const std::string saved = project::writeProject(first.project);
     auto second = project::readProject(saved);
     ASSERT_TRUE(second.diagnostics.empty());
@@ -61,7 +62,7 @@ TEST(ProjectFile, SaveOpenSaveIsByteIdentical) {
 }
 
 TEST(ProjectFile, EditedFieldsAreWritten) {
-    auto result = project::readProject(kProject);
+    auto result = project::readProject(kFileProject);
     result.project.description.clear();
     result.project.includeSource = false;
     result.project.unitDescriptions[1] = "Cabinet B";
@@ -77,7 +78,7 @@ TEST(ProjectFile, EditedFieldsAreWritten) {
 }
 
 TEST(ProjectFile, NetworksGroupStatements) {
-    auto result = project::readProject(kProject);
+    auto result = project::readProject(kFileProject);
     const auto& step = result.project.program.units.at(0).steps.at(0);
     auto networks = project::networksOf(step);
     ASSERT_EQ(networks.size(), 1u);

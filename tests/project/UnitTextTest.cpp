@@ -11,26 +11,26 @@ using namespace rs;
 
 namespace {
 
-const char* kTwoUnits = "$name Two\n"
-                        "\n"
-                        "! id_pluto:00=000000000000\n"
-                        ";@var M0.0 description=\"Muting\"\n"
-                        "! id_pluto:01=000000000000\n"
-                        "! I0.12=EStop\n"
-                        "\n"
-                        "! pgm_pluto:00\n"
-                        "! M0.0=Muting\n"
-                        "S0.0_0\n"
-                        "Q0.2 = EStop * Muting\n"
-                        "\n"
-                        "! pgm_pluto:01\n"
-                        "S1.0_0\n"
-                        "Q1.2 = EStop\n";
+const char* kTextTwoUnits = "$name Two\n"
+                            "\n"
+                            "! id_pluto:00=000000000000\n"
+                            ";@var M0.0 description=\"Muting\"\n"
+                            "! id_pluto:01=000000000000\n"
+                            "! I0.12=EStop\n"
+                            "\n"
+                            "! pgm_pluto:00\n"
+                            "! M0.0=Muting\n"
+                            "S0.0_0\n"
+                            "Q0.2 = EStop * Muting\n"
+                            "\n"
+                            "! pgm_pluto:01\n"
+                            "S1.0_0\n"
+                            "Q1.2 = EStop\n";
 
 } // namespace
 
 TEST(UnitText, IsTheUnitsPartOfTheProjectText) {
-    const project::Project p = projectFrom(kTwoUnits);
+    const project::Project p = projectFrom(kTextTwoUnits);
     EXPECT_EQ(project::unitText(p, 0), "! pgm_pluto:00\n"
                                        "! M0.0=Muting\n"
                                        "S0.0_0\n"
@@ -40,7 +40,7 @@ TEST(UnitText, IsTheUnitsPartOfTheProjectText) {
 }
 
 TEST(UnitText, ReadingItBackReplacesOnlyThatUnit) {
-    const project::Project p = projectFrom(kTwoUnits);
+    const project::Project p = projectFrom(kTextTwoUnits);
     const auto read = project::readUnitText(p, 0,
                                             "! pgm_pluto:00\n"
                                             "! M0.0=Muting\n"
@@ -75,7 +75,7 @@ TEST(UnitText, ReadingItBackReplacesOnlyThatUnit) {
 }
 
 TEST(UnitText, ErrorsAreReportedAtTheirLineInTheUnitsText) {
-    const project::Project p = projectFrom(kTwoUnits);
+    const project::Project p = projectFrom(kTextTwoUnits);
     const auto read = project::readUnitText(p, 1,
                                             "! pgm_pluto:01\n"
                                             "S1.0_0\n"
@@ -90,7 +90,7 @@ TEST(UnitText, ErrorsAreReportedAtTheirLineInTheUnitsText) {
 }
 
 TEST(UnitText, TheTextIsOneUnitsCodeAndNothingElse) {
-    const project::Project p = projectFrom(kTwoUnits);
+    const project::Project p = projectFrom(kTextTwoUnits);
     auto read = project::readUnitText(p, 1, "S1.0_0\nQ1.2 = EStop\n");
     ASSERT_FALSE(read.ok());
     EXPECT_EQ(read.diagnostics.front().line, 1);
@@ -104,7 +104,7 @@ TEST(UnitText, TheTextIsOneUnitsCodeAndNothingElse) {
 }
 
 TEST(TextPlace, LinesOfTheProjectTextLeadToTheirPage) {
-    const project::Project p = projectFrom(kTwoUnits);
+    const project::Project p = projectFrom(kTextTwoUnits);
     using Kind = project::TextPlace::Kind;
     // 1 $name, 2 blank, 3 id 00, 4 @var, 5 id 01, 6 I0.12=EStop, 7 blank,
     // 8 pgm 00, 9 M0.0=Muting, 10 S0.0_0, 11 Q0.2, 12 blank, 13 pgm 01, 14 S1.0_0, 15 Q1.2

@@ -10,13 +10,13 @@ using namespace std::string_literals;
 
 namespace {
 
-const char* kProject = "$name Csv\n"
-                       "! id_pluto:00=000000000000\n"
-                       "! type_pluto:00=A20,is3\n"
-                       "! I0.0=Start\n"
-                       "! pgm_pluto:00\n"
-                       "S0.0_0\n"
-                       "Q0.2 = Start\n";
+const char* kCsvReadingProject = "$name Csv\n"
+                                 "! id_pluto:00=000000000000\n"
+                                 "! type_pluto:00=A20,is3\n"
+                                 "! I0.0=Start\n"
+                                 "! pgm_pluto:00\n"
+                                 "S0.0_0\n"
+                                 "Q0.2 = Start\n";
 
 const std::string kHeading = "Variable,Symbolic Name,Description\r\n";
 
@@ -38,7 +38,7 @@ std::vector<Problem> problemsOf(const project::CsvImport& imported) {
 }
 
 project::CsvImport import(std::string_view csv) {
-    return project::importVariablesCsv(projectFrom(kProject), csv, {});
+    return project::importVariablesCsv(projectFrom(kCsvReadingProject), csv, {});
 }
 
 } // namespace

@@ -11,26 +11,26 @@ using lang::AddressKind;
 
 namespace {
 
-const char* kProject = "$name Csv\n"
-                       "! id_pluto:00=000000000000\n"
-                       ";@var I0.1 description=\"Sensor; \\\"left\\\"\"\n"
-                       ";@var M0.4 description=\"Two\\nlines\"\n"
-                       "! type_pluto:00=A20,is3\n"
-                       "! id_pluto:01=000000000000\n"
-                       "! type_pluto:01=A20,is3\n"
-                       "! I0.0=Zeta\n"
-                       "! pgm_pluto:00\n"
-                       "! M0.0=Alpha\n"
-                       "S0.0_0\n"
-                       "Q0.2 = Zeta * Alpha\n"
-                       "! pgm_pluto:01\n"
-                       "! M1.0=Other\n"
-                       "S1.0_0\n";
+const char* kCsvProject = "$name Csv\n"
+                          "! id_pluto:00=000000000000\n"
+                          ";@var I0.1 description=\"Sensor; \\\"left\\\"\"\n"
+                          ";@var M0.4 description=\"Two\\nlines\"\n"
+                          "! type_pluto:00=A20,is3\n"
+                          "! id_pluto:01=000000000000\n"
+                          "! type_pluto:01=A20,is3\n"
+                          "! I0.0=Zeta\n"
+                          "! pgm_pluto:00\n"
+                          "! M0.0=Alpha\n"
+                          "S0.0_0\n"
+                          "Q0.2 = Zeta * Alpha\n"
+                          "! pgm_pluto:01\n"
+                          "! M1.0=Other\n"
+                          "S1.0_0\n";
 
 } // namespace
 
 TEST(VariableCsv, ExportIsExcelCompatible) {
-    const project::Project p = projectFrom(kProject);
+    const project::Project p = projectFrom(kCsvProject);
     const std::string csv = project::exportVariablesCsv(p, {});
     EXPECT_EQ(csv, "\xEF\xBB\xBFVariable,Symbolic Name,Description\r\n"
                    "I0.0,Zeta,\r\n"
@@ -41,7 +41,7 @@ TEST(VariableCsv, ExportIsExcelCompatible) {
 }
 
 TEST(VariableCsv, ExportChoicesScopePrefixOrderAndSeparator) {
-    const project::Project p = projectFrom(kProject);
+    const project::Project p = projectFrom(kCsvProject);
     project::CsvExportOptions options;
     options.station = 0;
     options.scope = project::CsvScope::Local;
@@ -61,7 +61,7 @@ TEST(VariableCsv, ExportChoicesScopePrefixOrderAndSeparator) {
 }
 
 TEST(VariableCsv, ExportThenImportChangesNothing) {
-    const project::Project p = projectFrom(kProject);
+    const project::Project p = projectFrom(kCsvProject);
     for (char separator : {',', ';'}) {
         project::CsvExportOptions options;
         options.separator = separator;
@@ -76,7 +76,7 @@ TEST(VariableCsv, ExportThenImportChangesNothing) {
 }
 
 TEST(VariableCsv, ImportSetsNamesAndDescriptionsAndReportsBadRowsByLine) {
-    const project::Project p = projectFrom(kProject);
+    const project::Project p = projectFrom(kCsvProject);
     const std::string csv = "Symbolic Name;Variable;Description\n"      // 1
                             "Start;I0.2;\"Start button\nNO contact\"\n" // 2-3
                             "1bad;I0.3;\n"                              // 4
@@ -110,7 +110,7 @@ TEST(VariableCsv, ImportSetsNamesAndDescriptionsAndReportsBadRowsByLine) {
 }
 
 TEST(VariableCsv, ImportIntoOneUnitRefusesOtherUnitsAndTakesOffAPrefix) {
-    const project::Project p = projectFrom(kProject);
+    const project::Project p = projectFrom(kCsvProject);
     project::CsvImportOptions options;
     options.station = 1;
     options.prefix = "P1_";
@@ -123,7 +123,7 @@ TEST(VariableCsv, ImportIntoOneUnitRefusesOtherUnitsAndTakesOffAPrefix) {
 }
 
 TEST(VariableCsv, AnOpenQuoteIsReportedWhereItStarts) {
-    const auto imported = project::importVariablesCsv(projectFrom(kProject),
+    const auto imported = project::importVariablesCsv(projectFrom(kCsvProject),
                                                       "Variable,Symbolic Name\nM0.1,\"Fan\n", {});
     ASSERT_EQ(imported.problems.size(), 1u);
     EXPECT_EQ(imported.problems[0].line, 2);

@@ -9,18 +9,18 @@ namespace {
 
 const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
-const QByteArray kProject = "$name Vars\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! I0.0=MuteSensor1\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "Q0.2 = MuteSensor1\n";
+const QByteArray kVarsProject = "$name Vars\n"
+                                "! id_pluto:00=000000000000\n"
+                                "! I0.0=MuteSensor1\n"
+                                "! pgm_pluto:00\n"
+                                "S0.0_0\n"
+                                "Q0.2 = MuteSensor1\n";
 
 } // namespace
 
 TEST(VarsCli, ExportWritesTheCsv) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kVarsProject);
     const rs::test::ProgramRun run =
         rs::test::runCli({"vars", "export", project, "-o", dir.filePath("out.csv")});
     EXPECT_EQ(run.exitCode, 0) << run.errText().toStdString();
@@ -30,7 +30,7 @@ TEST(VarsCli, ExportWritesTheCsv) {
 
 TEST(VarsCli, ImportWritesTheProjectWithTheNewNames) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kVarsProject);
     const QString csv = rs::test::writeFile(dir, "in.csv",
                                             "Variable;Symbolic Name;Description\n"
                                             "I0.0;Sensor1;left sensor\n");
@@ -48,7 +48,7 @@ TEST(VarsCli, ImportWritesTheProjectWithTheNewNames) {
 
 TEST(VarsCli, BadRowsAreErrorsByLineAndNothingIsWritten) {
     QTemporaryDir dir;
-    const QString project = rs::test::writeFile(dir, "p.sps", kProject);
+    const QString project = rs::test::writeFile(dir, "p.sps", kVarsProject);
     const QString csv =
         rs::test::writeFile(dir, "in.csv", "Variable,Symbolic Name\nI0.0,ok\nI0.1,9lives\n");
     const QString out = dir.filePath("out.sps");

@@ -29,7 +29,7 @@ project::Project randomProject(unsigned seed) {
     return project;
 }
 
-project::Project read(const std::string& text) {
+project::Project networkProject(const std::string& text) {
     project::ProjectReadResult result = project::readProject(text);
     EXPECT_TRUE(result.ok());
     return std::move(result.project);
@@ -152,27 +152,28 @@ TEST(NetworkDiff, EachChangeIsReportedOnceOnItsSide) {
 }
 
 TEST(NetworkDiff, TheLinesOfTheContract) {
-    const auto before = read(kPress);
+    const auto before = networkProject(kPress);
     EXPECT_EQ(described(review::networkDifferences(
-                  before, read(replaced(kPress, "M0.1 = I0.2 + /I0.3\n",
-                                        "M0.1 = I0.2 + /I0.3\nM0.7 = I0.7\n")))),
+                  before, networkProject(replaced(kPress, "M0.1 = I0.2 + /I0.3\n",
+                                                  "M0.1 = I0.2 + /I0.3\nM0.7 = I0.7\n")))),
               std::vector<std::string>{"Pluto 00 S0.0_0 network 3: added"});
     EXPECT_EQ(described(review::networkDifferences(
-                  before, read(replaced(kPress, "M0.1 = I0.2 + /I0.3\n", "")))),
+                  before, networkProject(replaced(kPress, "M0.1 = I0.2 + /I0.3\n", "")))),
               std::vector<std::string>{"Pluto 00 S0.0_0 network 2: removed"});
-    EXPECT_EQ(described(review::networkDifferences(before, read(replaced(kPress, "I0.6", "I0.7")))),
+    EXPECT_EQ(described(review::networkDifferences(
+                  before, networkProject(replaced(kPress, "I0.6", "I0.7")))),
               std::vector<std::string>{"Pluto 00 S0.1_1 network 1: changed"});
 }
 
 TEST(NetworkDiff, CommentsLayoutNamesAndTimerSpellingsAreNoChange) {
-    const auto before = read(kPress);
+    const auto before = networkProject(kPress);
     for (const std::string& text :
          {replaced(kPress, "; the motor", "; the conveyor"),
           replaced(kPress, "M0.1 = I0.2 + /I0.3", "  m0.1=I0.2+/i0.3   ; now commented"),
           replaced(replaced(kPress, "! I0.1=Start", "! I0.1=Go"), "* Start", "* Go"),
           replaced(kPress, "* Start", "* I0.1"), replaced(kPress, "TON(2s10)", "T(2s10)"),
           replaced(kPress, "S0.0_0\n", "S0.0_0\n; a new comment\n\n")})
-        EXPECT_TRUE(review::networkDifferences(before, read(text)).empty()) << text;
+        EXPECT_TRUE(review::networkDifferences(before, networkProject(text)).empty()) << text;
 }
 
 TEST(NetworkDiff, ABlockInstanceIsOneNetworkAsTheEditorDrawsIt) {
@@ -187,11 +188,12 @@ TEST(NetworkDiff, ABlockInstanceIsOneNetworkAsTheEditorDrawsIt) {
                              "M0.2 = M0.1\n"
                              ";@end\n"
                              "Q0.3 = I0.4\n";
-    const auto before = read(text);
+    const auto before = networkProject(text);
     EXPECT_EQ(review::editorNetworks(before.program.units[0].steps[0]).size(), 3u);
     EXPECT_EQ(described(review::networkDifferences(
-                  before, read(replaced(text, "M0.2 = M0.1", "M0.2 = /M0.1")))),
+                  before, networkProject(replaced(text, "M0.2 = M0.1", "M0.2 = /M0.1")))),
               std::vector<std::string>{"Pluto 00 S0.0_0 network 2: changed"});
-    EXPECT_EQ(described(review::networkDifferences(before, read(replaced(text, "I0.4", "I0.5")))),
+    EXPECT_EQ(described(review::networkDifferences(before,
+                                                   networkProject(replaced(text, "I0.4", "I0.5")))),
               std::vector<std::string>{"Pluto 00 S0.0_0 network 3: changed"});
 }

@@ -27,7 +27,7 @@ const char* kTwoUnits = "$name Two units\n"
                         "S1.0_0\n"
                         "Q1.2 = I1.0 * I1.1\n";
 
-project::Project read(const std::string& text) {
+project::Project unitProject(const std::string& text) {
     project::ProjectReadResult result = project::readProject(text);
     EXPECT_TRUE(result.ok()) << text;
     return std::move(result.project);
@@ -35,7 +35,8 @@ project::Project read(const std::string& text) {
 
 std::vector<std::string> differences(const std::string& after) {
     std::vector<std::string> lines;
-    for (const auto& difference : review::unitDifferences(read(kTwoUnits), read(after)))
+    for (const auto& difference :
+         review::unitDifferences(unitProject(kTwoUnits), unitProject(after)))
         lines.push_back(difference.describe());
     return lines;
 }
@@ -46,7 +47,7 @@ using Lines = std::vector<std::string>;
 
 TEST(UnitDiff, TheSameProjectHasNone) {
     EXPECT_EQ(differences(kTwoUnits), Lines{});
-    EXPECT_EQ(differences(project::writeProject(read(kTwoUnits))), Lines{});
+    EXPECT_EQ(differences(project::writeProject(unitProject(kTwoUnits))), Lines{});
 }
 
 TEST(UnitDiff, EachKindOfChangeIsOneLineOfItsUnit) {
@@ -74,7 +75,7 @@ TEST(UnitDiff, AnAddedOrRemovedUnitIsOneLine) {
                                        "! id_pluto:02=000000000002\n! type_pluto:02=B20,is3\n"
                                        "! pgm_pluto:00\n");
     EXPECT_EQ(differences(three), Lines{"Pluto 02 unit: added"});
-    EXPECT_EQ(review::unitDifferences(read(three), read(kTwoUnits)).size(), 1u);
-    EXPECT_EQ(review::unitDifferences(read(three), read(kTwoUnits))[0].describe(),
+    EXPECT_EQ(review::unitDifferences(unitProject(three), unitProject(kTwoUnits)).size(), 1u);
+    EXPECT_EQ(review::unitDifferences(unitProject(three), unitProject(kTwoUnits))[0].describe(),
               "Pluto 02 unit: removed");
 }

@@ -19,7 +19,7 @@ using namespace rs;
 namespace {
 
 // A D45 reading each of its four instructions from an input of its own.
-const char* kProgram =
+const char* kAnalogueProgram =
     "! id_pluto_Double:00=000000000000\n"
     "! type_pluto:00=D45,is3\n"
     "! pgm_pluto:00\n"
@@ -40,7 +40,7 @@ const char* kProgram =
 
 class AnalogueInputCall : public testing::TestWithParam<SimulatorTier> {
 protected:
-    AnalogueInputCall() : m_setting(GetParam() == SimulatorTier::MachineCode), s(kProgram) {
+    AnalogueInputCall() : m_setting(GetParam() == SimulatorTier::MachineCode), s(kAnalogueProgram) {
         s.simulation->unit(0)->setEagerConduction(GetParam() == SimulatorTier::MarkingInterpreter);
     }
 
@@ -66,8 +66,6 @@ protected:
     MachineCodeSetting m_setting;
     Simulated s;
 };
-
-} // namespace
 
 // The manual's example (Part 1, 9.2): 4 mA is 0, 20 mA is 488, and a wire
 // break (0 mA) reads -122.
@@ -127,3 +125,5 @@ TEST_P(AnalogueInputCall, TheThirtyTwoBitFormsTakeDoubleRegisters) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTier, AnalogueInputCall, rs::test::kEveryTier, rs::test::tierName);
+
+} // namespace

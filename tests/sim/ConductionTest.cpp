@@ -13,7 +13,7 @@ namespace {
 // bits, edges, timers, latches, toggles, comparisons, arithmetic, parallel
 // branches, jumps, a sequence reset, SM_Ditto, system instructions and the
 // other unit's variables.
-const char* const kProgram = R"(! id_pluto:00=000000000000
+const char* const kConductionProgram = R"(! id_pluto:00=000000000000
 ;@var R0.2 export="yes"
 ! type_pluto:00=A20,is3
 ! id_pluto:01=000000000000
@@ -90,8 +90,8 @@ void expectSameUnits(const Simulated& eager, const Simulated& onDemand, int scan
 // A scan runs without marking conduction; conduction() replays it. What the
 // replay reports must be exactly what marking during the scan gives.
 TEST(Conduction, OnDemandIsWhatMarkingWhileScanningGives) {
-    Simulated eager(kProgram);
-    Simulated onDemand(kProgram);
+    Simulated eager(kConductionProgram);
+    Simulated onDemand(kConductionProgram);
     for (int unit = 0; unit < 2; ++unit)
         eager.simulation->unit(unit)->setEagerConduction(true);
     for (int scan = 0; scan < 600; ++scan) {
@@ -104,8 +104,8 @@ TEST(Conduction, OnDemandIsWhatMarkingWhileScanningGives) {
 }
 
 TEST(Conduction, IsThatOfTheLastScanWhenReadOnlyNowAndThen) {
-    Simulated eager(kProgram);
-    Simulated onDemand(kProgram);
+    Simulated eager(kConductionProgram);
+    Simulated onDemand(kConductionProgram);
     for (int unit = 0; unit < 2; ++unit)
         eager.simulation->unit(unit)->setEagerConduction(true);
     for (int scan = 0; scan < 300; ++scan) {
@@ -119,8 +119,8 @@ TEST(Conduction, IsThatOfTheLastScanWhenReadOnlyNowAndThen) {
 }
 
 TEST(Conduction, DoesNotChangeWhenInputsAreSetAfterTheScan) {
-    Simulated eager(kProgram);
-    Simulated onDemand(kProgram);
+    Simulated eager(kConductionProgram);
+    Simulated onDemand(kConductionProgram);
     eager.simulation->unit(0)->setEagerConduction(true);
     for (int scan = 0; scan < 40; ++scan) {
         drive(eager, scan);

@@ -17,21 +17,21 @@ using namespace rs;
 namespace {
 
 // A D45 counting up on IA0.0 and up and down on the pair IA0.2, IA0.3.
-const char* kProgram = "! id_pluto_Double:00=000000000000\n"
-                       "! type_pluto:00=D45,is3\n"
-                       "! pgm_pluto:00\n"
-                       "! IA0.0,counter_up\n"
-                       "! IA0.2,counter_updown\n"
-                       "! IA0.3,counter_updown\n"
-                       "S0.0_0\n"
-                       ";@system HS_SpeedCount_Up Input=\"IA0.0\" Valid=\"M0.0\" "
-                       "EdgePer10ms=\"R0.0\" PulsePerSec=\"R0.1\"\n"
-                       ";@system HS_SpeedCount_Dir Input_A=\"IA0.2\" Input_B=\"IA0.3\" "
-                       "Valid=\"M0.1\" EdgePer10ms=\"R0.2\" PulsePerSec=\"R0.3\"\n";
+const char* kCounterProgram = "! id_pluto_Double:00=000000000000\n"
+                              "! type_pluto:00=D45,is3\n"
+                              "! pgm_pluto:00\n"
+                              "! IA0.0,counter_up\n"
+                              "! IA0.2,counter_updown\n"
+                              "! IA0.3,counter_updown\n"
+                              "S0.0_0\n"
+                              ";@system HS_SpeedCount_Up Input=\"IA0.0\" Valid=\"M0.0\" "
+                              "EdgePer10ms=\"R0.0\" PulsePerSec=\"R0.1\"\n"
+                              ";@system HS_SpeedCount_Dir Input_A=\"IA0.2\" Input_B=\"IA0.3\" "
+                              "Valid=\"M0.1\" EdgePer10ms=\"R0.2\" PulsePerSec=\"R0.3\"\n";
 
 class CounterInputCall : public testing::TestWithParam<SimulatorTier> {
 protected:
-    CounterInputCall() : m_setting(GetParam() == SimulatorTier::MachineCode), s(kProgram) {
+    CounterInputCall() : m_setting(GetParam() == SimulatorTier::MachineCode), s(kCounterProgram) {
         s.simulation->unit(0)->setEagerConduction(GetParam() == SimulatorTier::MarkingInterpreter);
     }
 
@@ -57,8 +57,6 @@ protected:
     MachineCodeSetting m_setting;
     Simulated s;
 };
-
-} // namespace
 
 // The manual's photocell (Part 1, 9.2): 20 pulses a revolution at 24.4
 // revolutions a second.
@@ -102,3 +100,5 @@ TEST_P(CounterInputCall, ASpeedBeyondARegisterSaturates) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTier, CounterInputCall, rs::test::kEveryTier, rs::test::tierName);
+
+} // namespace

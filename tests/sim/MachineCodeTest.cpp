@@ -18,7 +18,7 @@ namespace {
 // loads, comparisons, register arithmetic with saturation) and the ones it
 // calls (timers, toggles, divisions, double registers, jumps, sequence
 // reset, system instructions).
-const char* const kProgram = R"(! id_pluto:00=000000000000
+const char* const kMachineCodeProgram = R"(! id_pluto:00=000000000000
 ;@var R0.2 export="yes"
 ! type_pluto:00=A20,is3
 ! id_pluto:01=000000000000
@@ -102,9 +102,9 @@ template <typename Result> Result withMachineCode(bool on, const std::function<R
 // forces.
 TEST(MachineCodeTest, DoesWhatTheInterpreterDoes) {
     auto compiled = withMachineCode<std::unique_ptr<Simulated>>(
-        true, [] { return std::make_unique<Simulated>(kProgram); });
+        true, [] { return std::make_unique<Simulated>(kMachineCodeProgram); });
     auto interpreted = withMachineCode<std::unique_ptr<Simulated>>(
-        false, [] { return std::make_unique<Simulated>(kProgram); });
+        false, [] { return std::make_unique<Simulated>(kMachineCodeProgram); });
     std::mt19937 random(20260101);
     const auto pick = [&random](int n) {
         return static_cast<std::size_t>(std::uniform_int_distribution<int>(0, n - 1)(random));

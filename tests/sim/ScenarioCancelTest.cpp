@@ -9,21 +9,21 @@ using namespace rs;
 
 namespace {
 
-const char* kProgram = "! id_pluto:00=000000000000\n"
-                       "! pgm_pluto:00\n"
-                       "S0.0_0\n"
-                       "Q0.2 = I0.0\n";
+const char* kCancelProgram = "! id_pluto:00=000000000000\n"
+                             "! pgm_pluto:00\n"
+                             "S0.0_0\n"
+                             "Q0.2 = I0.0\n";
 
 struct CancelledRun {
     sim::ScenarioReport report;
     std::int64_t endMs = 0;
 };
 
-CancelledRun run(const std::string& text, const sim::CancelRequest& cancelled) {
-    const auto compiled = compiler::compileText(kProgram);
+CancelledRun runCancellable(const std::string& text, const sim::CancelRequest& cancelled) {
+    const auto compiled = compiler::compileText(kCancelProgram);
     EXPECT_EQ(compiled.errors(), 0);
     const sim::Scenario scenario =
-        sim::parseScenario(text, sim::OperandNames(project::readProject(kProgram).project));
+        sim::parseScenario(text, sim::OperandNames(project::readProject(kCancelProgram).project));
     sim::Simulation simulation(compiled.images);
     CancelledRun result{sim::runScenario("t.scn", scenario, simulation, nullptr, {}, cancelled), 0};
     result.endMs = simulation.timeMs();
@@ -35,7 +35,7 @@ CancelledRun run(const std::string& text, const sim::CancelRequest& cancelled) {
 TEST(ScenarioCancel, StopsAtTheScanItIsAskedAfterAndSaysSo) {
     int asked = 0;
     const CancelledRun cancelled =
-        run("set I0.0 1\nrun 20000min\nexpect Q0.2 1\n", [&] { return ++asked == 5; });
+        runCancellable("set I0.0 1\nrun 20000min\nexpect Q0.2 1\n", [&] { return ++asked == 5; });
     EXPECT_TRUE(cancelled.report.cancelled);
     EXPECT_EQ(cancelled.endMs, 50); // five scans of 10 ms
     EXPECT_EQ(cancelled.report.passed + cancelled.report.failed, 0);
@@ -43,15 +43,16 @@ TEST(ScenarioCancel, StopsAtTheScanItIsAskedAfterAndSaysSo) {
 
 TEST(ScenarioCancel, AnExpectationWaitingWhenCancelledCountsNeither) {
     int asked = 0;
-    const CancelledRun cancelled = run("expect Q0.2 1 within 10s\n", [&] { return ++asked == 3; });
+    const CancelledRun cancelled =
+        runCancellable("expect Q0.2 1 within 10s\n", [&] { return ++asked == 3; });
     EXPECT_TRUE(cancelled.report.cancelled);
     EXPECT_EQ(cancelled.report.passed + cancelled.report.failed, 0);
 }
 
 TEST(ScenarioCancel, ARunNeverCancelledGivesTheSameReport) {
     const std::string text = "set I0.0 1\nscans 3\nexpect Q0.2 1\nexpect Q0.2 0 within 50ms\n";
-    const CancelledRun plain = run(text, {});
-    const CancelledRun asked = run(text, [] { return false; });
+    const CancelledRun plain = runCancellable(text, {});
+    const CancelledRun asked = runCancellable(text, [] { return false; });
     EXPECT_FALSE(asked.report.cancelled);
     EXPECT_EQ(asked.report.passed, plain.report.passed);
     EXPECT_EQ(asked.report.failures, plain.report.failures);
@@ -61,7 +62,7 @@ TEST(ScenarioCancel, ARunNeverCancelledGivesTheSameReport) {
 }
 
 TEST(ScenarioLength, CountsRunsScansAtTheirCycleAndWaits) {
-    const auto project = project::readProject(kProgram).project;
+    const auto project = project::readProject(kCancelProgram).project;
     const sim::OperandNames names(project);
     const sim::Scenario plain = sim::parseScenario("run 1s\nscans 10\nexpect Q0.2 0\n", names);
     ASSERT_TRUE(plain.diagnostics.empty());

@@ -9,11 +9,11 @@ using namespace rs;
 
 namespace {
 
-const char* kProgram = "! id_pluto:00=000000000000\n"
-                       "! pgm_pluto:00\n"
-                       "! I0.0,a_pulse\n"
-                       "S0.0_0\n"
-                       "Q0.2 = I0.0 * TON(0s05)\n";
+const char* kObserverProgram = "! id_pluto:00=000000000000\n"
+                               "! pgm_pluto:00\n"
+                               "! I0.0,a_pulse\n"
+                               "S0.0_0\n"
+                               "Q0.2 = I0.0 * TON(0s05)\n";
 
 struct Compiled {
     project::Project project;
@@ -21,9 +21,9 @@ struct Compiled {
 };
 
 Compiled compileProgram() {
-    auto compiled = compiler::compileText(kProgram);
+    auto compiled = compiler::compileText(kObserverProgram);
     EXPECT_EQ(compiled.errors(), 0);
-    return {project::readProject(kProgram).project, compiled.images};
+    return {project::readProject(kObserverProgram).project, compiled.images};
 }
 
 } // namespace

@@ -9,17 +9,17 @@ using namespace rs;
 
 namespace {
 
-const char* kProgram = "! id_pluto:00=000000000000\n"
-                       "! type_pluto:00=A20,is3\n"
-                       "! I0.12=EStop\n"
-                       "! pgm_pluto:00\n"
-                       "! I0.12,a_pulse\n"
-                       "S0.0_0\n"
-                       "Q0.2 = EStop\n";
+const char* kReadingProgram = "! id_pluto:00=000000000000\n"
+                              "! type_pluto:00=A20,is3\n"
+                              "! I0.12=EStop\n"
+                              "! pgm_pluto:00\n"
+                              "! I0.12,a_pulse\n"
+                              "S0.0_0\n"
+                              "Q0.2 = EStop\n";
 
 // The scenario's diagnostics as the CLI prints them, for a scenario that is not run.
 std::vector<std::string> diagnostics(std::string_view scenarioText) {
-    const auto read = project::readProject(kProgram);
+    const auto read = project::readProject(kReadingProgram);
     const sim::Scenario scenario =
         sim::parseScenario(scenarioText, sim::OperandNames(read.project));
     std::vector<std::string> lines;
@@ -28,9 +28,9 @@ std::vector<std::string> diagnostics(std::string_view scenarioText) {
     return lines;
 }
 
-sim::ScenarioReport run(std::string_view scenarioText) {
-    const auto read = project::readProject(kProgram);
-    const auto compiled = compiler::compileText(kProgram);
+sim::ScenarioReport runReadScenario(std::string_view scenarioText) {
+    const auto read = project::readProject(kReadingProgram);
+    const auto compiled = compiler::compileText(kReadingProgram);
     EXPECT_EQ(compiled.errors(), 0);
     const sim::Scenario scenario =
         sim::parseScenario(scenarioText, sim::OperandNames(read.project));
@@ -104,7 +104,8 @@ TEST(ScenarioReading, ALoneCarriageReturnEndsALine) {
     EXPECT_EQ(diagnostics("set EStop 1\rwait 5s\r\nrun 10ms\rexpect Q0.2 1\r"),
               Lines{"t.scn:2:1: error: unknown line 'wait'; expected set, release, run, scans, "
                     "expect, cycle, disconnect or connect"});
-    const sim::ScenarioReport report = run("set EStop 1\rrun 10ms\rexpect Q0.2 1\rexpect Q0.2 1\r");
+    const sim::ScenarioReport report =
+        runReadScenario("set EStop 1\rrun 10ms\rexpect Q0.2 1\rexpect Q0.2 1\r");
     EXPECT_EQ(report.passed, 2);
     EXPECT_EQ(report.failed, 0);
 }
@@ -113,7 +114,7 @@ TEST(ScenarioReading, AScenarioThatExpectsNothingFailsOnce) {
     const Lines nothing{"t.scn:1:1: error: no expectation: a scenario must check something"};
     for (const char* text : {"", "\r", "\r\r\r", "; only a comment\n\n", "set EStop 1\nrun 1s\n"})
         EXPECT_EQ(diagnostics(text), nothing) << text;
-    const sim::ScenarioReport report = run("\r\r");
+    const sim::ScenarioReport report = runReadScenario("\r\r");
     EXPECT_EQ(report.passed, 0);
     EXPECT_EQ(report.failed, 1);
     EXPECT_EQ(report.diagnostics, nothing);

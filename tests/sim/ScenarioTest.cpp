@@ -10,24 +10,25 @@ using namespace rs;
 
 namespace {
 
-const char* kProgram = "! id_pluto:00=000000000000\n"
-                       "! type_pluto:00=A20,is3\n"
-                       "! I0.12=EStop\n"
-                       "! pgm_pluto:00\n"
-                       "! I0.12,a_pulse\n"
-                       "! I0.13,a_pulse\n"
-                       "! M0.5=Running\n"
-                       "S0.0_0\n"
-                       "Q0.2 = EStop * I0.13\n"
-                       "Running = Q0.2 * TON(0s50)\n"
-                       "(R0.5 += 1) = P(I0.13)\n";
+const char* kScenarioProgram = "! id_pluto:00=000000000000\n"
+                               "! type_pluto:00=A20,is3\n"
+                               "! I0.12=EStop\n"
+                               "! pgm_pluto:00\n"
+                               "! I0.12,a_pulse\n"
+                               "! I0.13,a_pulse\n"
+                               "! M0.5=Running\n"
+                               "S0.0_0\n"
+                               "Q0.2 = EStop * I0.13\n"
+                               "Running = Q0.2 * TON(0s50)\n"
+                               "(R0.5 += 1) = P(I0.13)\n";
 
 struct ScenarioRun {
     sim::ScenarioReport report;
     std::string vcd;
 };
 
-ScenarioRun run(const std::string& scenarioText, const char* program = kProgram) {
+ScenarioRun runScenarioText(const std::string& scenarioText,
+                            const char* program = kScenarioProgram) {
     auto read = project::readProject(program);
     auto compiled = compiler::compileText(program);
     EXPECT_EQ(compiled.errors(), 0);
@@ -63,9 +64,9 @@ TEST(Scenario, DurationsInEveryNotation) {
 }
 
 TEST(Scenario, PassingExpectationsCountOnceEach) {
-    ScenarioRun r =
-        run("; both channels\nset EStop 1\nset I0.13 1   # and the beam\nrun 30ms\n"
-            "expect Q0.2 1\nexpect Running 0\nexpect Running 1 within 1s\nexpect R0.5 0\n");
+    ScenarioRun r = runScenarioText(
+        "; both channels\nset EStop 1\nset I0.13 1   # and the beam\nrun 30ms\n"
+        "expect Q0.2 1\nexpect Running 0\nexpect Running 1 within 1s\nexpect R0.5 0\n");
     EXPECT_EQ(r.report.passed, 4);
     EXPECT_EQ(r.report.failed, 0);
     EXPECT_TRUE(r.report.failures.empty());
@@ -73,7 +74,8 @@ TEST(Scenario, PassingExpectationsCountOnceEach) {
 
 TEST(Scenario, FailuresSayWhereWhatAndWhen) {
     // The value after the last scan counts: setting an input changes nothing until a scan.
-    ScenarioRun r = run("set EStop 1\nset I0.13 1\nrun 20ms\nexpect Q0.2 0\nset EStop 0\n"
+    ScenarioRun r =
+        runScenarioText("set EStop 1\nset I0.13 1\nrun 20ms\nexpect Q0.2 0\nset EStop 0\n"
                         "expect Q0.2 1\nrun 10ms\nexpect Q0.2 1 within 30ms\n");
     EXPECT_EQ(r.report.passed, 1);
     EXPECT_EQ(r.report.failed, 2);
@@ -84,13 +86,14 @@ TEST(Scenario, FailuresSayWhereWhatAndWhen) {
 }
 
 TEST(Scenario, WithinWaitsOnlyAsLongAsNeeded) {
-    ScenarioRun r = run("set EStop 1\nset I0.13 1\nexpect Q0.2 1 within 1s\nexpect R0.5 0\n");
+    ScenarioRun r =
+        runScenarioText("set EStop 1\nset I0.13 1\nexpect Q0.2 1 within 1s\nexpect R0.5 0\n");
     EXPECT_EQ(r.report.passed, 2);
 }
 
 TEST(Scenario, ForcingAndReleasingAnOutput) {
-    ScenarioRun r =
-        run("set Q0.2 1\nscans 2\nexpect Q0.2 1\nrelease Q0.2\nscans 1\nexpect Q0.2 0\n");
+    ScenarioRun r = runScenarioText(
+        "set Q0.2 1\nscans 2\nexpect Q0.2 1\nrelease Q0.2\nscans 1\nexpect Q0.2 0\n");
     EXPECT_EQ(r.report.passed, 2);
     EXPECT_EQ(r.report.failed, 0);
 }
@@ -98,13 +101,14 @@ TEST(Scenario, ForcingAndReleasingAnOutput) {
 TEST(Scenario, SequenceStepsAndTheCycle) {
     const char* program = "! id_pluto:00=000000000000\n! pgm_pluto:00\nS0.0_0\nS0.1_0\n"
                           "J(+1) = TON(0s10)\nS0.1_1\n";
-    ScenarioRun r = run(
+    ScenarioRun r = runScenarioText(
         "cycle 20ms\nexpect S0.1 0\nrun 100ms\nexpect S0.1 0\nrun 20ms\nexpect S0.1 1\n", program);
     EXPECT_EQ(r.report.passed, 3) << (r.report.failures.empty() ? "" : r.report.failures[0]);
 }
 
 TEST(Scenario, SyntaxErrorsAreReportedAndCountAsOneFailure) {
-    ScenarioRun r = run("set EStop 2\nrun 10 ms\nexpect Nothing 1\nwait 5s\nrun 10ms\ncycle 5ms\n"
+    ScenarioRun r =
+        runScenarioText("set EStop 2\nrun 10 ms\nexpect Nothing 1\nwait 5s\nrun 10ms\ncycle 5ms\n"
                         "expect Q0.2 1 inside 5s\nset\n");
     EXPECT_EQ(r.report.failed, 1);
     EXPECT_EQ(r.report.passed, 0);
@@ -125,8 +129,8 @@ TEST(Scenario, SyntaxErrorsAreReportedAndCountAsOneFailure) {
 TEST(Scenario, TraceIsStandardVcdAndTheSameEveryRun) {
     const char* scenario =
         "set EStop 1\nset I0.13 1\nrun 100ms\nset EStop 0\nrun 20ms\nexpect EStop 0\n";
-    ScenarioRun first = run(scenario);
-    ScenarioRun second = run(scenario);
+    ScenarioRun first = runScenarioText(scenario);
+    ScenarioRun second = runScenarioText(scenario);
     EXPECT_EQ(first.vcd, second.vcd);
     EXPECT_NE(first.vcd.find("$timescale 1ms $end"), std::string::npos);
     EXPECT_NE(first.vcd.find("$scope module pluto0 $end"), std::string::npos);
@@ -154,7 +158,8 @@ TEST(Scenario, AUnitOffTheBusSeesNoOtherAndIsSeenByNone) {
                            "! I1.0,static\n"
                            "S1.0_0\n"
                            "Q1.2 = I0.0\n";
-    ScenarioRun r = run("set I0.0 1\nset I1.0 1\nscans 3\n"
+    ScenarioRun r =
+        runScenarioText("set I0.0 1\nset I1.0 1\nscans 3\n"
                         "expect Q0.2 1\nexpect Q1.2 1\nexpect SM0.101 1\nexpect SM1.100 1\n"
                         "disconnect 1\nscans 2\n"
                         "expect Q0.2 0\nexpect Q1.2 0\nexpect SM0.101 0\nexpect SM1.100 0\n"
@@ -164,9 +169,9 @@ TEST(Scenario, AUnitOffTheBusSeesNoOtherAndIsSeenByNone) {
     EXPECT_EQ(r.report.failed, 0) << (r.report.failures.empty() ? "" : r.report.failures[0]);
     EXPECT_EQ(r.report.passed, 11);
     // A new run starts with every unit on the bus.
-    ScenarioRun again = run("disconnect 0\nscans 2\nexpect Q1.2 0\n", twoUnits);
+    ScenarioRun again = runScenarioText("disconnect 0\nscans 2\nexpect Q1.2 0\n", twoUnits);
     EXPECT_EQ(again.report.passed, 1);
-    ScenarioRun unknown = run("disconnect 7\nexpect Q0.2 0\n", twoUnits);
+    ScenarioRun unknown = runScenarioText("disconnect 7\nexpect Q0.2 0\n", twoUnits);
     ASSERT_EQ(unknown.report.diagnostics.size(), 1U);
     EXPECT_EQ(unknown.report.diagnostics[0],
               "t.scn:1:12: error: expected the number of one of the project's units, found '7'");
@@ -182,9 +187,9 @@ TEST(Scenario, SetsAnIqButtonNotItsLamp) {
                           "S0.0_0\n"
                           "Q0.2 = Reset\n"
                           "Q0.14 = /Q0.2\n";
-    const auto result = run("set Reset 1\nscans 1\nexpect Q0.2 1\nexpect Q0.14 0\n"
-                            "set IQ0.14 0\nscans 2\nexpect Q0.2 0\nexpect Q0.14 1\n",
-                            program);
+    const auto result = runScenarioText("set Reset 1\nscans 1\nexpect Q0.2 1\nexpect Q0.14 0\n"
+                                        "set IQ0.14 0\nscans 2\nexpect Q0.2 0\nexpect Q0.14 1\n",
+                                        program);
     EXPECT_EQ(result.report.failed, 0) << result.report.failures.front();
     EXPECT_EQ(result.report.passed, 4);
 }

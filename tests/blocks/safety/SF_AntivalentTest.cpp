@@ -14,21 +14,22 @@ using rs::safetytest::holdsOnBothInstructionSets;
 
 namespace {
 
-const std::string kNames = "! I0.0=Act\n! I0.1=ChannelNC\n! I0.2=ChannelNO\n! M0.0=Ready\n"
-                           "! M0.1=Out\n! M0.2=Error\n! R0.0=DiagCode\n! R0.1=Limit\n";
+const std::string kAntivalentNames =
+    "! I0.0=Act\n! I0.1=ChannelNC\n! I0.2=ChannelNO\n! M0.0=Ready\n"
+    "! M0.1=Out\n! M0.2=Error\n! R0.0=DiagCode\n! R0.1=Limit\n";
 
 // DiscrepancyTime 0s05 (50 ms); Activate open (on).
-const std::string kBlock =
+const std::string kAntivalentBlock =
     ";@block SF_Antivalent S_ChannelNC=\"ChannelNC\" S_ChannelNO=\"ChannelNO\" "
     "DiscrepancyTime=\"0s05\" Ready=\"Ready\" S_AntivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
 
-const std::string kActivatedBlock =
+const std::string kActivatedAntivalent =
     ";@block SF_Antivalent Activate=\"Act\" S_ChannelNC=\"ChannelNC\" S_ChannelNO=\"ChannelNO\" "
     "DiscrepancyTime=\"0s05\" Ready=\"Ready\" S_AntivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
 
-const std::string kRegisterTimeBlock =
+const std::string kAntivalentRegisterTime =
     ";@block SF_Antivalent S_ChannelNC=\"ChannelNC\" S_ChannelNO=\"ChannelNO\" "
     "DiscrepancyTime=\"Limit\" S_AntivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
@@ -36,7 +37,7 @@ const std::string kRegisterTimeBlock =
 } // namespace
 
 TEST(SF_Antivalent, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kActivatedBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kActivatedAntivalent, R"(
 set ChannelNC 1
 scans 3
 expect DiagCode 0
@@ -74,7 +75,7 @@ expect Ready 0
 }
 
 TEST(SF_Antivalent, AnOpenActivateIsOnFromTheFirstScan) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 expect DiagCode -32767
@@ -87,7 +88,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_Antivalent, BothChannelsTogetherEnableAndTheSafePositionPasses8005) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNC 1
@@ -111,7 +112,7 @@ expect Error 0
 }
 
 TEST(SF_Antivalent, NoFollowingNcExactlyDiscrepancyTimeLaterEnables) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNC 1
@@ -129,7 +130,7 @@ expect Out 1
 }
 
 TEST(SF_Antivalent, NoOneScanLateIsErrorC001UntilTheSafePosition) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNC 1
@@ -155,7 +156,7 @@ expect Error 0
 }
 
 TEST(SF_Antivalent, NcDroppingBackWaitsAgainAndStopsTheTimer) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNC 1
@@ -179,7 +180,7 @@ expect DiagCode -16383
 }
 
 TEST(SF_Antivalent, NcFollowingNoExactlyDiscrepancyTimeLaterEnables) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNO 0
@@ -197,7 +198,7 @@ expect Out 1
 }
 
 TEST(SF_Antivalent, NcOneScanLateIsErrorC002UntilTheSafePosition) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNO 0
@@ -220,7 +221,7 @@ expect Error 0
 }
 
 TEST(SF_Antivalent, NoComingBackWaitsAgain) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNO 1
 scans 1
 set ChannelNO 0
@@ -237,7 +238,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_Antivalent, NcOffFollowedExactlyDiscrepancyTimeLaterWaitsAgain) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNC 1
 scans 2
 expect Out 1
@@ -256,7 +257,7 @@ expect Error 0
 }
 
 TEST(SF_Antivalent, NoOnNotFollowedIsErrorC003UntilTheSafePosition) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentBlock, R"(
 set ChannelNC 1
 scans 2
 set ChannelNO 1
@@ -284,7 +285,7 @@ expect Error 0
 TEST(SF_Antivalent, WithNoDiscrepancyTimeEvenASimultaneousSwitchOffIsErrorC003) {
     // The public model's 8000 always passes 8005, whose timer of 0 has
     // elapsed in the next scan.
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kRegisterTimeBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kAntivalentNames, kAntivalentRegisterTime, R"(
 set Limit 0
 set ChannelNO 1
 scans 1

@@ -28,8 +28,8 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kTime = "MonitoringTime=\"0s05\" ";
-const std::string kReset = kTime + "Reset=\"ResetButton\"";
+const std::string kEdmTime = "MonitoringTime=\"0s05\" ";
+const std::string kEdmReset = kEdmTime + "Reset=\"ResetButton\"";
 
 // From activation to 8810 with both feedbacks in the actuator's initial state.
 const std::string kToSwitchedOff = R"(
@@ -55,7 +55,7 @@ expect Out 1
 } // namespace
 
 TEST(SF_EDM, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(edmHolds(kReset + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(edmHolds(kEdmReset + " Activate=\"Act\"", R"(
 set Edm1 1
 set Edm2 1
 scans 2
@@ -103,7 +103,7 @@ expect Ready 0
 }
 
 TEST(SF_EDM, OpenInputsMeanActiveAndNoAcknowledgement) {
-    EXPECT_TRUE(edmHolds(kTime, R"(
+    EXPECT_TRUE(edmHolds(kEdmTime, R"(
 set Edm1 1
 set Edm2 1
 set Control 1
@@ -118,7 +118,7 @@ expect Out 0
 }
 
 TEST(SF_EDM, StartResetAcknowledgesAtStartAndMakesAHeldResetNoError) {
-    EXPECT_TRUE(edmHolds(kReset + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(edmHolds(kEdmReset + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set ResetButton 1
 set Edm1 1
@@ -135,7 +135,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_EDM, AResetHeldAtStartIsAStaticResetLeftByReleasingIt) {
-    EXPECT_TRUE(edmHolds(kReset, R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, R"(
 set ResetButton 1
 set Edm1 1
 set Edm2 1
@@ -159,7 +159,7 @@ expect DiagCode -30704
 }
 
 TEST(SF_EDM, AResetPressedWithTheControlsRisingEdgeIsC100LeftByAPressWithTheControlOff) {
-    EXPECT_TRUE(edmHolds(kReset, R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, R"(
 set Edm1 1
 set Edm2 1
 scans 1
@@ -187,7 +187,7 @@ expect Error 0
 }
 
 TEST(SF_EDM, APressWithTheControlAlreadyOnAcknowledgesAndSwitchesOnInTheNextScan) {
-    EXPECT_TRUE(edmHolds(kReset, R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, R"(
 set Edm1 1
 set Edm2 1
 set Control 1
@@ -204,7 +204,7 @@ expect Out 1
 }
 
 TEST(SF_EDM, TheOutputFollowsTheControlWhileTheFeedbacksSwitchInTime) {
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 expect Ready 1
 expect Error 0
 set Edm1 0
@@ -227,7 +227,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_EDM, SwitchingOnWithAFeedbackNotInItsInitialStateIsC010C020OrC030) {
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOff + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOff + R"(
 set Edm1 0
 set Control 1
 scans 1
@@ -235,14 +235,14 @@ expect DiagCode -16368
 expect Error 1
 expect Out 0
 )"));
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOff + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOff + R"(
 set Edm2 0
 set Control 1
 scans 1
 expect DiagCode -16352
 expect Error 1
 )"));
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOff + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOff + R"(
 set Edm1 0
 set Edm2 0
 set Control 1
@@ -253,7 +253,7 @@ expect Error 1
 }
 
 TEST(SF_EDM, AnErrorIsLeftOnlyByAPressOfResetWithTheControlOff) {
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOff + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOff + R"(
 set Edm1 0
 set Control 1
 set ResetButton 1
@@ -282,7 +282,7 @@ expect Error 0
 
 TEST(SF_EDM, FeedbacksOffExactlyMonitoringTimeAfterSwitchingOnPassAndOneScanLaterFail) {
     // 8000 entered in scan k: a feedback seen off in scan k + 5 passes.
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 scans 4
 set Edm1 0
 set Edm2 0
@@ -292,7 +292,7 @@ scans 50
 expect DiagCode -32768
 expect Error 0
 )"));
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 scans 5
 expect DiagCode -32768
 scans 1
@@ -300,7 +300,7 @@ expect DiagCode -16240
 expect Error 1
 expect Out 0
 )"));
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 set Edm2 0
 scans 5
 expect DiagCode -32768
@@ -308,7 +308,7 @@ scans 1
 expect DiagCode -16272
 expect Error 1
 )"));
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 set Edm1 0
 scans 5
 expect DiagCode -32768
@@ -319,7 +319,7 @@ expect Error 1
 }
 
 TEST(SF_EDM, AFeedbackComingBackWhileSwitchedOnAfterTheTimeIsAnError) {
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 set Edm1 0
 set Edm2 0
 scans 10
@@ -345,7 +345,7 @@ scans 1
 expect DiagCode -30704
 )";
     // 8810 entered in scan j: feedbacks seen back in scan j + 5 pass.
-    EXPECT_TRUE(edmHolds(kReset, switchedOffAgain + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, switchedOffAgain + R"(
 scans 4
 set Edm1 1
 set Edm2 1
@@ -355,14 +355,14 @@ scans 50
 expect DiagCode -30704
 expect Error 0
 )"));
-    EXPECT_TRUE(edmHolds(kReset, switchedOffAgain + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, switchedOffAgain + R"(
 scans 5
 expect DiagCode -30704
 scans 1
 expect DiagCode -16288
 expect Error 1
 )"));
-    EXPECT_TRUE(edmHolds(kReset, switchedOffAgain + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, switchedOffAgain + R"(
 set Edm2 1
 scans 5
 expect DiagCode -30704
@@ -370,7 +370,7 @@ scans 1
 expect DiagCode -16320
 expect Error 1
 )"));
-    EXPECT_TRUE(edmHolds(kReset, switchedOffAgain + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, switchedOffAgain + R"(
 set Edm1 1
 scans 5
 expect DiagCode -30704
@@ -381,7 +381,7 @@ expect Error 1
 }
 
 TEST(SF_EDM, TheMonitoringTimeErrorsTakePrecedenceOverSwitchingOn) {
-    EXPECT_TRUE(edmHolds(kReset, R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, R"(
 scans 1
 expect DiagCode -31743
 set ResetButton 1
@@ -400,7 +400,7 @@ expect DiagCode -16320
 }
 
 TEST(SF_EDM, AMonitoringTimeErrorIsLeftByAPressWithTheControlOff) {
-    EXPECT_TRUE(edmHolds(kReset, kToSwitchedOn + R"(
+    EXPECT_TRUE(edmHolds(kEdmReset, kToSwitchedOn + R"(
 scans 6
 expect DiagCode -16240
 set Control 0

@@ -28,7 +28,7 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kReset = "Reset=\"ResetButton\"";
+const std::string kEnableSwitchReset = "Reset=\"ResetButton\"";
 
 // From activation to 8006: the switch released, the safety function active.
 const std::string kToReleased = R"(
@@ -43,7 +43,7 @@ expect DiagCode -32762
 )";
 
 // From 8006 to 8000: the enable position.
-const std::string kToEnabled = kToReleased + R"(
+const std::string kToSwitchEnabled = kToReleased + R"(
 set Ch1 1
 scans 1
 expect DiagCode -32768
@@ -51,7 +51,7 @@ expect Out 1
 )";
 
 // From 8000 through the panic position to C030, enable again.
-const std::string kToPanicEnable = kToEnabled + R"(
+const std::string kToPanicEnable = kToSwitchEnabled + R"(
 set Ch1 0
 set Ch2 0
 scans 1
@@ -65,7 +65,7 @@ expect DiagCode -16336
 } // namespace
 
 TEST(SF_EnableSwitch, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(switchHolds(kReset + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset + " Activate=\"Act\"", R"(
 set Safety 1
 set Ch2 1
 scans 2
@@ -116,7 +116,7 @@ expect Out 0
 }
 
 TEST(SF_EnableSwitch, TheSafetyFunctionOffIs8004FromEveryState) {
-    EXPECT_TRUE(switchHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToSwitchEnabled + R"(
 set Safety 0
 scans 1
 expect DiagCode -32764
@@ -135,7 +135,7 @@ scans 1
 expect DiagCode -32764
 expect Error 0
 )"));
-    EXPECT_TRUE(switchHolds(kReset, kToPanicEnable + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToPanicEnable + R"(
 set Safety 0
 scans 1
 expect DiagCode -32764
@@ -143,7 +143,7 @@ expect DiagCode -32764
 }
 
 TEST(SF_EnableSwitch, TheEnablePositionFromTheReleasePositionSwitchesOn) {
-    EXPECT_TRUE(switchHolds(kReset, kToReleased + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToReleased + R"(
 expect Out 0
 expect Error 0
 scans 5
@@ -167,7 +167,7 @@ expect DiagCode -32768
 
 TEST(SF_EnableSwitch, ThePanicPositionSwitchesOffAndTheReleasePositionLeavesIt) {
     // from 8000: neither channel, or Ch1 only
-    EXPECT_TRUE(switchHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToSwitchEnabled + R"(
 set Ch1 0
 set Ch2 0
 scans 1
@@ -180,18 +180,18 @@ set Ch2 1
 scans 1
 expect DiagCode -32762
 )"));
-    EXPECT_TRUE(switchHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToSwitchEnabled + R"(
 set Ch2 0
 scans 1
 expect DiagCode -32761
 )"));
     // from 8006: neither channel, or Ch1 only
-    EXPECT_TRUE(switchHolds(kReset, kToReleased + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToReleased + R"(
 set Ch2 0
 scans 1
 expect DiagCode -32761
 )"));
-    EXPECT_TRUE(switchHolds(kReset, kToReleased + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToReleased + R"(
 set Ch1 1
 set Ch2 0
 scans 1
@@ -200,7 +200,7 @@ expect DiagCode -32761
 }
 
 TEST(SF_EnableSwitch, TheEnablePositionFromPanicIsC030AndLeavingItC040) {
-    EXPECT_TRUE(switchHolds(kReset, kToPanicEnable + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToPanicEnable + R"(
 expect Error 1
 expect Out 0
 scans 3
@@ -229,7 +229,7 @@ expect DiagCode -32762
 }
 
 TEST(SF_EnableSwitch, AResetHeldWhenC040IsReachedIsC002LeftByReleasingIt) {
-    EXPECT_TRUE(switchHolds(kReset, kToPanicEnable + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToPanicEnable + R"(
 set ResetButton 1
 scans 1
 expect DiagCode -16336
@@ -249,7 +249,7 @@ scans 1
 expect DiagCode -32761
 )"));
     // the enable position again comes before the static reset
-    EXPECT_TRUE(switchHolds(kReset, kToPanicEnable + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, kToPanicEnable + R"(
 set ResetButton 1
 set Ch1 0
 scans 1
@@ -261,7 +261,7 @@ expect DiagCode -16336
 }
 
 TEST(SF_EnableSwitch, NotReleasedWhenTheSafetyFunctionStartsIsC010) {
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 scans 2
 expect DiagCode -32763
@@ -269,13 +269,13 @@ scans 1
 expect DiagCode -16368
 expect Error 1
 )"));
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 set Ch1 1
 scans 3
 expect DiagCode -16368
 )"));
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 set Ch1 1
 set Ch2 1
@@ -286,7 +286,7 @@ expect Out 0
 }
 
 TEST(SF_EnableSwitch, C010IsLeftByTheReleasePositionAndAPressOfReset) {
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 scans 3
 expect DiagCode -16368
@@ -310,7 +310,7 @@ expect Error 0
 }
 
 TEST(SF_EnableSwitch, AResetHeldInC020IsC001LeftByReleasingIt) {
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 set ResetButton 1
 scans 3
@@ -331,7 +331,7 @@ scans 1
 expect DiagCode -32762
 )"));
     // leaving the release position comes before the static reset
-    EXPECT_TRUE(switchHolds(kReset, R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset, R"(
 set Safety 1
 set ResetButton 1
 scans 3
@@ -345,7 +345,7 @@ expect DiagCode -16368
 }
 
 TEST(SF_EnableSwitch, AutoResetLeavesC020AndC040WithoutAPress) {
-    EXPECT_TRUE(switchHolds(kReset + " S_AutoReset=\"AutoReset\"", R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset + " S_AutoReset=\"AutoReset\"", R"(
 set AutoReset 1
 set ResetButton 1
 set Safety 1
@@ -358,7 +358,7 @@ scans 1
 expect DiagCode -32762
 expect Error 0
 )"));
-    EXPECT_TRUE(switchHolds(kReset + " S_AutoReset=\"AutoReset\"", kToPanicEnable + R"(
+    EXPECT_TRUE(switchHolds(kEnableSwitchReset + " S_AutoReset=\"AutoReset\"", kToPanicEnable + R"(
 set AutoReset 1
 set ResetButton 1
 set Ch1 0

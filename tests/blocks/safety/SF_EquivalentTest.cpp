@@ -13,21 +13,21 @@ using rs::safetytest::holdsOnBothInstructionSets;
 
 namespace {
 
-const std::string kNames = "! I0.0=Act\n! I0.1=ChannelA\n! I0.2=ChannelB\n! M0.0=Ready\n"
-                           "! M0.1=Out\n! M0.2=Error\n! R0.0=DiagCode\n! R0.1=Limit\n";
+const std::string kEquivalentNames = "! I0.0=Act\n! I0.1=ChannelA\n! I0.2=ChannelB\n! M0.0=Ready\n"
+                                     "! M0.1=Out\n! M0.2=Error\n! R0.0=DiagCode\n! R0.1=Limit\n";
 
 // DiscrepancyTime 0s05 (50 ms); Activate open (on).
-const std::string kBlock =
+const std::string kEquivalentBlock =
     ";@block SF_Equivalent S_ChannelA=\"ChannelA\" S_ChannelB=\"ChannelB\" "
     "DiscrepancyTime=\"0s05\" Ready=\"Ready\" S_EquivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
 
-const std::string kActivatedBlock =
+const std::string kActivatedEquivalent =
     ";@block SF_Equivalent Activate=\"Act\" S_ChannelA=\"ChannelA\" S_ChannelB=\"ChannelB\" "
     "DiscrepancyTime=\"0s05\" Ready=\"Ready\" S_EquivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
 
-const std::string kRegisterTimeBlock =
+const std::string kEquivalentRegisterTime =
     ";@block SF_Equivalent S_ChannelA=\"ChannelA\" S_ChannelB=\"ChannelB\" "
     "DiscrepancyTime=\"Limit\" S_EquivalentOut=\"Out\" Error=\"Error\" "
     "DiagCode=\"DiagCode\"\n;@end\n";
@@ -40,7 +40,7 @@ const std::string kOpenTimeBlock =
 } // namespace
 
 TEST(SF_Equivalent, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kActivatedBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kActivatedEquivalent, R"(
 set ChannelA 1
 set ChannelB 1
 scans 3
@@ -79,7 +79,7 @@ expect Ready 0
 }
 
 TEST(SF_Equivalent, AnOpenActivateIsOnFromTheFirstScan) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 expect DiagCode -32767
 expect Ready 1
@@ -91,7 +91,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_Equivalent, BothChannelsTogetherEnableAndBothOffWaitAgain) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 set ChannelB 1
@@ -110,7 +110,7 @@ expect Error 0
 }
 
 TEST(SF_Equivalent, ChannelBFollowingAExactlyDiscrepancyTimeLaterEnables) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 scans 1
@@ -128,7 +128,7 @@ expect Out 1
 }
 
 TEST(SF_Equivalent, ChannelBOneScanLateIsErrorC001UntilBothAreOff) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 scans 1
@@ -156,7 +156,7 @@ expect Error 0
 }
 
 TEST(SF_Equivalent, ChannelADroppingBackWaitsAgainAndStopsTheTimer) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 scans 1
@@ -180,7 +180,7 @@ expect DiagCode -16383
 }
 
 TEST(SF_Equivalent, InWaitingForBTheFirstTrueConditionWins) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 scans 1
@@ -205,7 +205,7 @@ expect DiagCode -16383
 }
 
 TEST(SF_Equivalent, ChannelAFollowingBExactlyDiscrepancyTimeLaterEnables) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelB 1
 scans 1
@@ -222,7 +222,7 @@ expect Out 1
 }
 
 TEST(SF_Equivalent, ChannelAOneScanLateIsErrorC002UntilBothAreOff) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelB 1
 scans 1
@@ -246,7 +246,7 @@ expect Error 0
 }
 
 TEST(SF_Equivalent, ChannelBDroppingBackWaitsAgain) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelB 1
 scans 1
@@ -261,7 +261,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_Equivalent, OneChannelOffFollowedExactlyDiscrepancyTimeLaterWaitsAgain) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 set ChannelB 1
@@ -283,7 +283,7 @@ expect Error 0
 }
 
 TEST(SF_Equivalent, OneChannelOffNotFollowedIsErrorC003UntilBothAreOff) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentBlock, R"(
 scans 1
 set ChannelA 1
 set ChannelB 1
@@ -311,7 +311,7 @@ expect Error 0
 }
 
 TEST(SF_Equivalent, ADiscrepancyTimeInARegisterOfZeroWantsBothInOneScan) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kRegisterTimeBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kEquivalentRegisterTime, R"(
 set Limit 0
 scans 1
 set ChannelA 1
@@ -343,7 +343,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_Equivalent, AnOpenDiscrepancyTimeIsZeroAndWantsBothInOneScan) {
-    EXPECT_TRUE(holdsOnBothInstructionSets(kNames, kOpenTimeBlock, R"(
+    EXPECT_TRUE(holdsOnBothInstructionSets(kEquivalentNames, kOpenTimeBlock, R"(
 scans 1
 set ChannelA 1
 set ChannelB 1

@@ -30,7 +30,7 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kPress = "Reset=\"ResetButton\" UnlockRequest=\"Unlock\"";
+const std::string kLockingPress = "Reset=\"ResetButton\" UnlockRequest=\"Unlock\"";
 
 // Closed, locked and acknowledged at start with a press, the hazard safe.
 const std::string kLocked = R"(
@@ -47,7 +47,7 @@ set ResetButton 0
 } // namespace
 
 TEST(SF_GuardLocking, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(lockingHolds(kPress + " Activate=\"Act\" S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress + " Activate=\"Act\" S_StartReset=\"StartReset\"", R"(
 set Closed 1
 set Locked 1
 set Safe 1
@@ -104,7 +104,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_GuardLocking, AGuardClosedAndLockedAtStartNeedsAPress) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 expect GuardLocked 1
 expect UnlockGuard 0
 expect Error 0
@@ -115,7 +115,7 @@ expect GuardLocked 1
 }
 
 TEST(SF_GuardLocking, StartResetLocksAtStartWithoutAPressEvenWithResetHeld) {
-    EXPECT_TRUE(lockingHolds(kPress + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set ResetButton 1
 set Closed 1
@@ -127,7 +127,7 @@ expect GuardLocked 1
 }
 
 TEST(SF_GuardLocking, AResetHeldAtStartIsErrorC001UntilReleasedBeforeAnOpenGuard) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set ResetButton 1
 scans 2
 expect DiagCode -16383
@@ -150,7 +150,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_GuardLocking, AGuardUnlockedAtStartWaitsForClosedAndLockedThenAPress) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -175,7 +175,7 @@ expect GuardLocked 1
 }
 
 TEST(SF_GuardLocking, WaitingForThePressAGuardUnlockedOrOpenedWaitsAgain) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -195,7 +195,7 @@ expect DiagCode -32751
 }
 
 TEST(SF_GuardLocking, AResetHeldWhileThePressIsAwaitedIsErrorC003UntilReleased) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -225,7 +225,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_GuardLocking, AutoResetLocksWithoutAPressButNotAtStart) {
-    EXPECT_TRUE(lockingHolds(kPress + " S_AutoReset=\"AutoReset\"", R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress + " S_AutoReset=\"AutoReset\"", R"(
 set AutoReset 1
 set Safe 1
 set Closed 1
@@ -248,7 +248,7 @@ expect GuardLocked 1
 }
 
 TEST(SF_GuardLocking, ARequestWhileSafeUnlocksAndTheGuardClosedAndLockedAgainNeedsAPress) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 # not safe: a request does nothing, and held it is no request
 set Safe 0
 set Unlock 1
@@ -295,7 +295,7 @@ expect GuardLocked 1
 }
 
 TEST(SF_GuardLocking, OpeningAndReleasingTheRequestTogetherOpens) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 set Unlock 1
 scans 1
 expect DiagCode -32749
@@ -309,7 +309,7 @@ expect DiagCode -32750
 }
 
 TEST(SF_GuardLocking, WaitingUnlockedARequestOrAnOpeningWhileSafeUnlocks) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -331,7 +331,7 @@ expect DiagCode -32750
 }
 
 TEST(SF_GuardLocking, LosingTheLockWhileLockedIsErrorC004UntilSafeAndAPress) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 # the lost lock comes before a request
 set Locked 0
 set Unlock 1
@@ -362,7 +362,7 @@ expect DiagCode -32765
 }
 
 TEST(SF_GuardLocking, OpeningWhileLockedIsErrorC004) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 set Closed 0
 scans 1
 expect DiagCode -16380
@@ -371,7 +371,7 @@ expect GuardLocked 0
 }
 
 TEST(SF_GuardLocking, AResetHeldAfterAnErrorIsC002UntilReleasedAndNotSafeIsC004Again) {
-    EXPECT_TRUE(lockingHolds(kPress, kLocked + R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, kLocked + R"(
 set ResetButton 1
 scans 1
 expect DiagCode -32768
@@ -405,7 +405,7 @@ expect DiagCode -16380
 }
 
 TEST(SF_GuardLocking, WaitingUnlockedNotSafeAndOpenIsErrorC004BeforeUnlocking) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -414,7 +414,7 @@ set Safe 0
 scans 1
 expect DiagCode -16380
 )"));
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -425,7 +425,7 @@ scans 1
 expect DiagCode -16380
 )"));
     // open though locked, as a worn lock would report it
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 set Closed 1
 scans 2
@@ -439,7 +439,7 @@ expect DiagCode -16380
 }
 
 TEST(SF_GuardLocking, UnlockedAndOpenNotSafeIsErrorC004) {
-    EXPECT_TRUE(lockingHolds(kPress, R"(
+    EXPECT_TRUE(lockingHolds(kLockingPress, R"(
 set Safe 1
 scans 3
 expect DiagCode -32750

@@ -27,13 +27,13 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kTime = "DiscrepancyTime=\"0s05\" ";
-const std::string kReset = kTime + "Reset=\"ResetButton\"";
+const std::string kGuardTime = "DiscrepancyTime=\"0s05\" ";
+const std::string kGuardReset = kGuardTime + "Reset=\"ResetButton\"";
 
 } // namespace
 
 TEST(SF_GuardMonitoring, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(guardHolds(kReset + " Activate=\"Act\" S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(guardHolds(kGuardReset + " Activate=\"Act\" S_StartReset=\"StartReset\"", R"(
 set Switch1 1
 set Switch2 1
 set StartReset 1
@@ -76,7 +76,7 @@ expect Ready 0
 }
 
 TEST(SF_GuardMonitoring, OpenInputsMeanActiveWithoutStartResetAndNeverAPress) {
-    EXPECT_TRUE(guardHolds(kTime, R"(
+    EXPECT_TRUE(guardHolds(kGuardTime, R"(
 set Switch1 1
 set Switch2 1
 scans 1
@@ -93,7 +93,7 @@ expect Out 0
 }
 
 TEST(SF_GuardMonitoring, AGuardClosedAtStartNeedsAPressAndMustThenOpenFully) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 set Switch1 1
 set Switch2 1
 scans 2
@@ -125,7 +125,7 @@ expect Out 0
 }
 
 TEST(SF_GuardMonitoring, StartResetEnablesAGuardClosedAtStartWithoutAPress) {
-    EXPECT_TRUE(guardHolds(kReset + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(guardHolds(kGuardReset + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set Switch1 1
 set Switch2 1
@@ -138,7 +138,7 @@ expect Out 1
 }
 
 TEST(SF_GuardMonitoring, StartResetWithTheGuardOpenAwaitsAFullOpening) {
-    EXPECT_TRUE(guardHolds(kReset + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(guardHolds(kGuardReset + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set Switch1 1
 scans 2
@@ -148,7 +148,7 @@ expect Out 0
 }
 
 TEST(SF_GuardMonitoring, AGuardOpenedFullyAndClosedInTimeAwaitsAPress) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 set Switch1 1
 scans 2
 expect DiagCode -32766
@@ -187,7 +187,7 @@ expect Out 1
 }
 
 TEST(SF_GuardMonitoring, Switch2OneScanLateIsErrorC011UntilBothAreOpen) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 expect DiagCode -32750
 set Switch1 1
@@ -216,7 +216,7 @@ expect Error 0
 }
 
 TEST(SF_GuardMonitoring, Switch1FollowingSwitch2ExactlyDiscrepancyTimeLaterPasses) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 set Switch2 1
 scans 1
@@ -232,7 +232,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_GuardMonitoring, Switch1OneScanLateIsErrorC012UntilBothAreOpen) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 set Switch2 1
 scans 1
@@ -255,7 +255,7 @@ expect Error 0
 }
 
 TEST(SF_GuardMonitoring, AFirstSwitchOpeningAgainAwaitsAFullOpeningAndStopsTheTimer) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 set Switch1 1
 scans 1
@@ -283,7 +283,7 @@ expect DiagCode -16367
 }
 
 TEST(SF_GuardMonitoring, Switch2OpeningAgainAwaitsAFullOpening) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 set Switch2 1
 scans 1
@@ -298,7 +298,7 @@ expect DiagCode -32750
 }
 
 TEST(SF_GuardMonitoring, BothSwitchesClosingInOneScanPassThroughWaitingForSwitch2) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 scans 3
 set Switch1 1
 set Switch2 1
@@ -310,7 +310,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_GuardMonitoring, ASwitchOpeningBeforeTheAcknowledgementAwaitsAFullOpening) {
-    EXPECT_TRUE(guardHolds(kReset + " S_AutoReset=\"AutoReset\"", R"(
+    EXPECT_TRUE(guardHolds(kGuardReset + " S_AutoReset=\"AutoReset\"", R"(
 set AutoReset 1
 scans 3
 set Switch1 1
@@ -326,7 +326,7 @@ expect Out 0
 }
 
 TEST(SF_GuardMonitoring, AutoResetAcknowledgesAClosingButNotTheStart) {
-    EXPECT_TRUE(guardHolds(kReset + " S_AutoReset=\"AutoReset\"", R"(
+    EXPECT_TRUE(guardHolds(kGuardReset + " S_AutoReset=\"AutoReset\"", R"(
 set AutoReset 1
 set Switch1 1
 set Switch2 1
@@ -355,7 +355,7 @@ expect Out 0
 }
 
 TEST(SF_GuardMonitoring, AResetHeldWhileAPressIsAwaitedIsErrorC001UntilReleased) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 set ResetButton 1
 scans 3
 expect DiagCode -32750
@@ -382,7 +382,7 @@ expect DiagCode -32766
 }
 
 TEST(SF_GuardMonitoring, AHeldResetComesBeforeAnOpeningAndAnOpeningBeforeAPress) {
-    EXPECT_TRUE(guardHolds(kReset, R"(
+    EXPECT_TRUE(guardHolds(kGuardReset, R"(
 set ResetButton 1
 set Switch1 1
 set Switch2 1

@@ -31,8 +31,8 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kTime = "ModeMonitorTime=\"0s05\" ";
-const std::string kPress = kTime + "S_SetMode=\"SetMode\" Reset=\"ResetButton\"";
+const std::string kModeTime = "ModeMonitorTime=\"0s05\" ";
+const std::string kModePress = kModeTime + "S_SetMode=\"SetMode\" Reset=\"ResetButton\"";
 
 // Mode1 taken with a press of S_SetMode, unlocked.
 const std::string kMode1Selected = R"(
@@ -49,7 +49,7 @@ set SetMode 0
 } // namespace
 
 TEST(SF_ModeSelector, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(selectorHolds(kPress + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(selectorHolds(kModePress + " Activate=\"Act\"", R"(
 set Unlock 1
 set Mode1 1
 scans 2
@@ -91,7 +91,7 @@ expect Ready 0
 
 TEST(SF_ModeSelector, WithoutSetModeOrAutoSetModeNothingIsTaken) {
     // A mode on from activation on is no mode appearing: no time runs.
-    EXPECT_TRUE(selectorHolds(kTime, R"(
+    EXPECT_TRUE(selectorHolds(kModeTime, R"(
 set Unlock 1
 set Mode1 1
 scans 1
@@ -107,7 +107,7 @@ expect Error 0
 }
 
 TEST(SF_ModeSelector, APressOfSetModeTakesTheOneModeOnWhileUnlocked) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 scans 2
 # no mode, or locked: a press takes nothing
 set Unlock 1
@@ -143,7 +143,7 @@ expect Sel1 1
 }
 
 TEST(SF_ModeSelector, AutoSetModeTakesTheOneModeOnAtOnce) {
-    EXPECT_TRUE(selectorHolds(kTime + "AutoSetMode=\"AutoSet\"", R"(
+    EXPECT_TRUE(selectorHolds(kModeTime + "AutoSetMode=\"AutoSet\"", R"(
 set AutoSet 1
 set Unlock 1
 set Mode2 1
@@ -168,7 +168,7 @@ expect Sel0 1
 }
 
 TEST(SF_ModeSelector, AModeInputChangingDropsTheSelectionUntilTheNextPress) {
-    EXPECT_TRUE(selectorHolds(kPress, kMode1Selected + R"(
+    EXPECT_TRUE(selectorHolds(kModePress, kMode1Selected + R"(
 set Mode1 0
 set Mode2 1
 scans 1
@@ -194,7 +194,7 @@ expect AnySel 0
 }
 
 TEST(SF_ModeSelector, UnlockOffFreezesTheSelectionAndUnlockingTakesTheModeInputsAsTheyAre) {
-    EXPECT_TRUE(selectorHolds(kPress, kMode1Selected + R"(
+    EXPECT_TRUE(selectorHolds(kModePress, kMode1Selected + R"(
 set Unlock 0
 scans 1
 expect DiagCode -32764
@@ -225,7 +225,7 @@ expect Sel2 1
 }
 
 TEST(SF_ModeSelector, UnlockingWithTwoModesOnShowsBothForOneScanThenC001) {
-    EXPECT_TRUE(selectorHolds(kPress, kMode1Selected + R"(
+    EXPECT_TRUE(selectorHolds(kModePress, kMode1Selected + R"(
 set Unlock 0
 scans 1
 set Mode2 1
@@ -244,7 +244,7 @@ expect Sel2 0
 }
 
 TEST(SF_ModeSelector, TwoModesOnAreErrorC001UntilAPress) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode0 1
@@ -266,7 +266,7 @@ expect Error 0
 }
 
 TEST(SF_ModeSelector, ASecondModeComesBeforeTheChangeInTheSelectedState) {
-    EXPECT_TRUE(selectorHolds(kPress, kMode1Selected + R"(
+    EXPECT_TRUE(selectorHolds(kModePress, kMode1Selected + R"(
 set Mode0 1
 set Unlock 0
 scans 1
@@ -277,7 +277,7 @@ expect AnySel 0
 }
 
 TEST(SF_ModeSelector, AResetHeldInC001IsC003UntilReleased) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 set ResetButton 1
 set Mode0 1
@@ -300,7 +300,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_ModeSelector, AModeTakenExactlyModeMonitorTimeAfterItAppearedIsSelected) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -316,7 +316,7 @@ expect Sel1 1
 }
 
 TEST(SF_ModeSelector, AModeNotTakenWithinModeMonitorTimeIsErrorC002UntilAPress) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -348,7 +348,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_ModeSelector, AResetHeldInC002IsC004UntilReleased) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 set ResetButton 1
 scans 2
@@ -369,7 +369,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_ModeSelector, TwoModesComeBeforeTheTimeRunningOut) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -382,7 +382,7 @@ expect DiagCode -16383
 }
 
 TEST(SF_ModeSelector, NoModeStopsTheTimeAndTheNextModeTimesAfresh) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -403,7 +403,7 @@ expect DiagCode -16382
 }
 
 TEST(SF_ModeSelector, NoModeForOneScanRestartsTheTime) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -422,7 +422,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_ModeSelector, NoModeInTheScanTheTimeRunsOutIsNoError) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -438,7 +438,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_ModeSelector, SwitchingFromOneModeToAnotherDoesNotRestartTheTime) {
-    EXPECT_TRUE(selectorHolds(kPress, R"(
+    EXPECT_TRUE(selectorHolds(kModePress, R"(
 set Unlock 1
 scans 2
 set Mode1 1
@@ -456,7 +456,7 @@ expect DiagCode -16382
 TEST(SF_ModeSelector, TheModesAreWatchedOnlyWhileWaitingAndActive) {
     // A mode appearing in a scan with Activate off is no edge then; the
     // first scan back in 8005 sees it appear.
-    EXPECT_TRUE(selectorHolds(kPress + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(selectorHolds(kModePress + " Activate=\"Act\"", R"(
 set Act 1
 set Unlock 1
 scans 3

@@ -32,10 +32,10 @@ namespace {
 }
 
 const std::string kTimes = "DiscTimeEntry=\"0s05\" MaxMutingTime=\"0s20\" ";
-const std::string kPins = kTimes + "MutingEnable=\"Enable\" Reset=\"ResetButton\"";
+const std::string kParallelPins = kTimes + "MutingEnable=\"Enable\" Reset=\"ResetButton\"";
 
 // From activation to 8000: the curtain free and acknowledged, the lamp good.
-const std::string kToFree = R"(
+const std::string kParallelToFree = R"(
 set Aopd 1
 set Lamp 1
 scans 1
@@ -50,7 +50,7 @@ expect Out 1
 )";
 
 // From 8000 to 8011: MutingEnable and S11 rising.
-const std::string kToEntry11 = kToFree + R"(
+const std::string kToEntry11 = kParallelToFree + R"(
 set Enable 1
 set S11 1
 scans 1
@@ -58,7 +58,7 @@ expect DiagCode -32751
 )";
 
 // From 8000 to 8021: MutingEnable and S12 rising.
-const std::string kToEntry12 = kToFree + R"(
+const std::string kToEntry12 = kParallelToFree + R"(
 set Enable 1
 set S12 1
 scans 1
@@ -76,7 +76,7 @@ expect Muted 1
 } // namespace
 
 TEST(SF_MutingPar_2Sensor, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(mutingHolds(kPins + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins + " Activate=\"Act\"", R"(
 set Aopd 1
 set Lamp 1
 scans 2
@@ -139,7 +139,7 @@ expect DiagCode -32767
 expect Out 0
 )"));
     // MutingEnable open is 0: a sensor rising is a wrong sequence
-    EXPECT_TRUE(mutingHolds(kTimes + "Reset=\"ResetButton\"", kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kTimes + "Reset=\"ResetButton\"", kParallelToFree + R"(
 set S12 1
 scans 1
 expect DiagCode -16380
@@ -147,7 +147,7 @@ expect DiagCode -16380
 }
 
 TEST(SF_MutingPar_2Sensor, StartResetAcknowledgesAtStartAndMakesAHeldResetNoError) {
-    EXPECT_TRUE(mutingHolds(kPins + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set ResetButton 1
 set Aopd 1
@@ -163,7 +163,7 @@ expect Error 0
 }
 
 TEST(SF_MutingPar_2Sensor, AResetHeldAtStartIsC001LeftByReleasingIt) {
-    EXPECT_TRUE(mutingHolds(kPins, R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, R"(
 set ResetButton 1
 set Aopd 1
 set Lamp 1
@@ -186,7 +186,7 @@ expect DiagCode -32763
 
 TEST(SF_MutingPar_2Sensor,
      TheCheckAfterAPressGoesTo8002WithTheCurtainInterruptedOrC003WithoutLamp) {
-    EXPECT_TRUE(mutingHolds(kPins, R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, R"(
 set Lamp 1
 scans 1
 set ResetButton 1
@@ -196,7 +196,7 @@ scans 1
 expect DiagCode -32766
 expect Out 0
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, R"(
 set Aopd 1
 scans 1
 set ResetButton 1
@@ -220,7 +220,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_MutingPar_2Sensor, AnInterruptedCurtainSwitchesOffAndNeedsAPressOnceFree) {
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 expect Muted 0
 expect Error 0
 scans 5
@@ -247,7 +247,7 @@ expect Out 1
 }
 
 TEST(SF_MutingPar_2Sensor, AResetHeldWhen8003IsReachedIsC002LeftByReleasingIt) {
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set Aopd 0
 set ResetButton 1
 scans 1
@@ -268,7 +268,7 @@ expect Error 0
 }
 
 TEST(SF_MutingPar_2Sensor, AFaultyLampWhileFreeIsC003) {
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
@@ -278,7 +278,7 @@ expect Out 0
 }
 
 TEST(SF_MutingPar_2Sensor, ASensorRisingWithoutMutingEnableIsC004LeftWithBothSensorsFree) {
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set S11 1
 scans 1
 expect DiagCode -16380
@@ -294,7 +294,7 @@ scans 1
 expect DiagCode -32765
 expect Error 0
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set S12 1
 scans 1
 expect DiagCode -16380
@@ -302,7 +302,7 @@ expect DiagCode -16380
 }
 
 TEST(SF_MutingPar_2Sensor, S11ThenS12MutesTheCurtainUntilASensorIsFree) {
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 expect Out 1
 expect Muted 0
 expect Error 0
@@ -324,7 +324,7 @@ expect Out 1
 expect Muted 0
 )"));
     // the muting ending with the curtain still interrupted switches off
-    EXPECT_TRUE(mutingHolds(kPins, kToMuted + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToMuted + R"(
 set Aopd 0
 scans 1
 set S12 0
@@ -336,7 +336,7 @@ expect Muted 0
 }
 
 TEST(SF_MutingPar_2Sensor, S12ThenS11MutesTheCurtainToo) {
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 expect Out 1
 expect Muted 0
 set S11 1
@@ -347,7 +347,7 @@ expect Muted 1
 }
 
 TEST(SF_MutingPar_2Sensor, BothSensorsRisingTogetherMuteAtOnce) {
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set Enable 1
 set S11 1
 set S12 1
@@ -358,7 +358,7 @@ expect Muted 1
 }
 
 TEST(SF_MutingPar_2Sensor, ASensorRisingWhileTheOtherIsStillOnStartsNoMuting) {
-    EXPECT_TRUE(mutingHolds(kPins, kToMuted + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToMuted + R"(
 set S11 0
 scans 1
 expect DiagCode -32768
@@ -371,13 +371,13 @@ expect Muted 0
 
 TEST(SF_MutingPar_2Sensor, TheSecondSensorExactlyDiscTimeEntryLaterPassesAndOneScanLaterFails) {
     // 8011 entered in scan k: S12 seen in scan k + 5 mutes.
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 scans 4
 set S12 1
 scans 1
 expect DiagCode -32750
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 scans 5
 expect DiagCode -32751
 set S12 1
@@ -392,13 +392,13 @@ set S12 0
 scans 1
 expect DiagCode -32765
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 scans 4
 set S11 1
 scans 1
 expect DiagCode -32750
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 scans 5
 expect DiagCode -32735
 scans 1
@@ -410,7 +410,7 @@ TEST(SF_MutingPar_2Sensor,
      MutingEndingExactlyMaxMutingTimeAfterTheFirstSensorPassesAndOneScanLaterFails) {
     // 8011 entered in scan k, 8012 in k + 1: a sensor free in scan k + 20
     // ends the muting.
-    EXPECT_TRUE(mutingHolds(kPins, kToMuted + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToMuted + R"(
 scans 18
 expect DiagCode -32750
 set S12 0
@@ -418,7 +418,7 @@ scans 1
 expect DiagCode -32768
 expect Error 0
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToMuted + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToMuted + R"(
 scans 19
 expect DiagCode -32750
 scans 1
@@ -432,7 +432,7 @@ scans 1
 expect DiagCode -32765
 )"));
     // both rising together: 8012 entered in scan k
-    EXPECT_TRUE(mutingHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kParallelToFree + R"(
 set Enable 1
 set S11 1
 set S12 1
@@ -463,12 +463,12 @@ expect DiagCode -16378
 }
 
 TEST(SF_MutingPar_2Sensor, TheFirstSensorFreeBeforeTheSecondIsC004) {
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 set S11 0
 scans 1
 expect DiagCode -16380
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 set S12 0
 scans 1
 expect DiagCode -16380
@@ -476,13 +476,13 @@ expect DiagCode -16380
 }
 
 TEST(SF_MutingPar_2Sensor, TheCurtainInterruptedBeforeMutingSwitchesOff) {
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 set Aopd 0
 scans 1
 expect DiagCode -32766
 expect Out 0
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 set Aopd 0
 scans 1
 expect DiagCode -32766
@@ -490,17 +490,17 @@ expect DiagCode -32766
 }
 
 TEST(SF_MutingPar_2Sensor, AFaultyLampDuringEntryOrMutingIsC003) {
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry11 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry11 + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToEntry12 + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToEntry12 + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
 )"));
-    EXPECT_TRUE(mutingHolds(kPins, kToMuted + R"(
+    EXPECT_TRUE(mutingHolds(kParallelPins, kToMuted + R"(
 set Lamp 0
 set S11 0
 scans 1

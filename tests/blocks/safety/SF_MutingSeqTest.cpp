@@ -30,10 +30,10 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kPins = "MutingEnable=\"Enable\" Reset=\"ResetButton\"";
+const std::string kSequencePins = "MutingEnable=\"Enable\" Reset=\"ResetButton\"";
 
 // From activation to 8000: the curtain free and acknowledged, the lamp good.
-const std::string kToFree = R"(
+const std::string kSequenceToFree = R"(
 set Aopd 1
 set Lamp 1
 scans 1
@@ -48,7 +48,7 @@ expect Out 1
 )";
 
 // Forward: 11 rising (8011), then 12 rising (8012, muted).
-const std::string kToForwardStart = kToFree + R"(
+const std::string kToForwardStart = kSequenceToFree + R"(
 set Enable 1
 set M11 1
 scans 1
@@ -62,7 +62,7 @@ expect Muted 1
 )";
 
 // Reverse: 22 rising (8122), then 21 rising (8112, muted).
-const std::string kToReverseStart = kToFree + R"(
+const std::string kToReverseStart = kSequenceToFree + R"(
 set Enable 1
 set M22 1
 scans 1
@@ -78,7 +78,7 @@ expect Muted 1
 } // namespace
 
 TEST(SF_MutingSeq, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(seqHolds(kPins + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(seqHolds(kSequencePins + " Activate=\"Act\"", R"(
 set Aopd 1
 set Lamp 1
 scans 2
@@ -135,7 +135,7 @@ run 1s
 expect DiagCode -32767
 )"));
     // MutingEnable open is 0: 11 rising is a wrong sequence
-    EXPECT_TRUE(seqHolds("Reset=\"ResetButton\"", kToFree + R"(
+    EXPECT_TRUE(seqHolds("Reset=\"ResetButton\"", kSequenceToFree + R"(
 set M11 1
 scans 1
 expect DiagCode -16380
@@ -143,7 +143,7 @@ expect DiagCode -16380
 }
 
 TEST(SF_MutingSeq, StartResetAcknowledgesAtStartAndMakesAHeldResetNoError) {
-    EXPECT_TRUE(seqHolds(kPins + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(seqHolds(kSequencePins + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set ResetButton 1
 set Aopd 1
@@ -159,7 +159,7 @@ expect Error 0
 }
 
 TEST(SF_MutingSeq, AResetHeldAtStartIsC001LeftByReleasingIt) {
-    EXPECT_TRUE(seqHolds(kPins, R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, R"(
 set ResetButton 1
 set Aopd 1
 set Lamp 1
@@ -180,7 +180,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_MutingSeq, TheCheckAfterAPressGoesTo8002WithTheCurtainInterruptedOrC003WithoutLamp) {
-    EXPECT_TRUE(seqHolds(kPins, R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, R"(
 set Lamp 1
 scans 1
 set ResetButton 1
@@ -190,7 +190,7 @@ scans 1
 expect DiagCode -32766
 expect Out 0
 )"));
-    EXPECT_TRUE(seqHolds(kPins, R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, R"(
 set Aopd 1
 scans 1
 set ResetButton 1
@@ -206,7 +206,7 @@ expect Error 0
 }
 
 TEST(SF_MutingSeq, AnInterruptedCurtainSwitchesOffAndNeedsAPressOnceFree) {
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Aopd 0
 scans 1
 expect DiagCode -32766
@@ -223,7 +223,7 @@ scans 1
 expect DiagCode -32768
 )"));
     // a Reset held when 8003 is reached is C002 until released
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Aopd 0
 set ResetButton 1
 scans 1
@@ -242,7 +242,7 @@ expect DiagCode -32765
 }
 
 TEST(SF_MutingSeq, AFaultyLampWhileFreeIsC003) {
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
@@ -252,7 +252,7 @@ expect Out 0
 
 TEST(SF_MutingSeq, ASensorOutOfSequenceWhileFreeIsC004LeftWithEverySensorFree) {
     // 11 or 22 rising without MutingEnable
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set M11 1
 scans 1
 expect DiagCode -16380
@@ -264,7 +264,7 @@ set M11 0
 scans 1
 expect DiagCode -32765
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set M22 1
 scans 1
 expect DiagCode -16380
@@ -273,20 +273,20 @@ scans 1
 expect DiagCode -32765
 )"));
     // an inner sensor, even with MutingEnable
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Enable 1
 set M12 1
 scans 1
 expect DiagCode -16380
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Enable 1
 set M21 1
 scans 1
 expect DiagCode -16380
 )"));
     // both outer sensors at once, with MutingEnable
-    EXPECT_TRUE(seqHolds(kPins, kToFree + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kSequenceToFree + R"(
 set Enable 1
 set M11 1
 set M22 1
@@ -302,7 +302,7 @@ expect DiagCode -32765
 }
 
 TEST(SF_MutingSeq, AForwardPassageMutesFrom12RisingTo21Falling) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 expect Out 1
 expect Muted 0
 set M12 1
@@ -337,7 +337,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_MutingSeq, AReversePassageMutesFrom21RisingTo12Falling) {
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 expect Out 1
 expect Muted 0
 set M21 1
@@ -365,7 +365,7 @@ expect Muted 0
 }
 
 TEST(SF_MutingSeq, LeavingTheForwardStartOutOfSequenceIsC104) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set Enable 0
 scans 1
 expect DiagCode -16124
@@ -375,17 +375,17 @@ set M11 0
 scans 1
 expect DiagCode -32765
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set M11 0
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set M21 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set M22 1
 scans 1
 expect DiagCode -16124
@@ -399,23 +399,23 @@ expect DiagCode -32765
 }
 
 TEST(SF_MutingSeq, TheCurtainOrTheLampLostBeforeMutingLeavesTheStart) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set Aopd 0
 scans 1
 expect DiagCode -32766
 expect Out 0
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set Aopd 0
 scans 1
 expect DiagCode -32766
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
@@ -423,7 +423,7 @@ expect DiagCode -16381
 }
 
 TEST(SF_MutingSeq, WhileMutedForwardARisingFrontSensorOrA22FallingIsC104) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set M11 0
 scans 1
 expect DiagCode -32750
@@ -433,7 +433,7 @@ expect DiagCode -16124
 expect Muted 0
 expect Out 0
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set M12 0
 scans 1
 expect DiagCode -32750
@@ -441,7 +441,7 @@ set M12 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set M22 1
 scans 1
 expect DiagCode -32750
@@ -449,7 +449,7 @@ set M22 0
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
@@ -458,22 +458,22 @@ expect Out 0
 }
 
 TEST(SF_MutingSeq, LeavingTheReverseStartOutOfSequenceIsC104) {
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set Enable 0
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set M11 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set M12 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 set M22 0
 scans 1
 expect DiagCode -16124
@@ -481,7 +481,7 @@ expect DiagCode -16124
 }
 
 TEST(SF_MutingSeq, WhileMutedInReverseA11FallingOrARisingRearSensorIsC104) {
-    EXPECT_TRUE(seqHolds(kPins, kToReverseMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseMuted + R"(
 set M11 1
 scans 1
 expect DiagCode -32494
@@ -489,7 +489,7 @@ set M11 0
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseMuted + R"(
 set M21 0
 scans 1
 expect DiagCode -32494
@@ -497,7 +497,7 @@ set M21 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseMuted + R"(
 set M22 0
 scans 1
 expect DiagCode -32494
@@ -505,7 +505,7 @@ set M22 1
 scans 1
 expect DiagCode -16124
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseMuted + R"(
 set Lamp 0
 scans 1
 expect DiagCode -16381
@@ -514,7 +514,7 @@ expect DiagCode -16381
 
 TEST(SF_MutingSeq, APassageEndingExactlyMaxMutingTimeAfterItsStartPassesAndOneScanLaterFails) {
     // 8011 entered in scan k: the passage ended in scan k + 20 passes.
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set M21 1
 set M22 1
 scans 1
@@ -527,7 +527,7 @@ scans 1
 expect DiagCode -32768
 expect Error 0
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 scans 19
 expect DiagCode -32750
 scans 1
@@ -543,19 +543,19 @@ expect DiagCode -32765
 }
 
 TEST(SF_MutingSeq, MaxMutingTimeRunsOutInEachSequenceState) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardStart + R"(
 scans 20
 expect DiagCode -32751
 scans 1
 expect DiagCode -16378
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseStart + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseStart + R"(
 scans 20
 expect DiagCode -32478
 scans 1
 expect DiagCode -16378
 )"));
-    EXPECT_TRUE(seqHolds(kPins, kToReverseMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToReverseMuted + R"(
 scans 19
 expect DiagCode -32494
 scans 1
@@ -564,7 +564,7 @@ expect DiagCode -16378
 }
 
 TEST(SF_MutingSeq, EveryPassageTimesAfresh) {
-    EXPECT_TRUE(seqHolds(kPins, kToForwardMuted + R"(
+    EXPECT_TRUE(seqHolds(kSequencePins, kToForwardMuted + R"(
 set M21 1
 set M22 1
 set M11 0

@@ -27,7 +27,7 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kReset = "Reset=\"ResetButton\"";
+const std::string kOutControlReset = "Reset=\"ResetButton\"";
 
 // From activation to 8006 with the safety permission given.
 const std::string kToDisabled = R"(
@@ -42,7 +42,7 @@ scans 1
 )";
 
 // From 8006 to 8000 by a rising edge of ProcessControl.
-const std::string kToEnabled = kToDisabled + R"(
+const std::string kToOutputEnabled = kToDisabled + R"(
 set Process 1
 scans 1
 expect DiagCode -32768
@@ -50,7 +50,7 @@ expect Out 1
 )";
 
 // From 8000 through a safety demand to 8404.
-const std::string kToLocked = kToEnabled + R"(
+const std::string kToLocked = kToOutputEnabled + R"(
 set Safe 0
 scans 1
 expect DiagCode -30718
@@ -64,7 +64,7 @@ expect DiagCode -31740
 } // namespace
 
 TEST(SF_OutControl, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(outControlHolds(kReset + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset + " Activate=\"Act\"", R"(
 set Safe 1
 scans 2
 expect DiagCode 0
@@ -120,7 +120,7 @@ expect DiagCode -31743
 }
 
 TEST(SF_OutControl, APressAtStartAcknowledgesOnlyWithTheSafetyPermission) {
-    EXPECT_TRUE(outControlHolds(kReset, R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, R"(
 scans 1
 set ResetButton 1
 scans 1
@@ -138,7 +138,7 @@ expect Error 0
 }
 
 TEST(SF_OutControl, StartResetAcknowledgesOnceTheSafetyPermissionComes) {
-    EXPECT_TRUE(outControlHolds(kReset + " S_StartReset=\"StartReset\"", R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset + " S_StartReset=\"StartReset\"", R"(
 set StartReset 1
 set ResetButton 1
 scans 5
@@ -151,7 +151,7 @@ expect DiagCode -32762
 }
 
 TEST(SF_OutControl, AResetHeldAtStartIsC001LeftByReleasingIt) {
-    EXPECT_TRUE(outControlHolds(kReset, R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, R"(
 set ResetButton 1
 set Safe 1
 scans 1
@@ -173,7 +173,7 @@ expect DiagCode -32762
 }
 
 TEST(SF_OutControl, ResetAndProcessControlRisingTogetherAtStartIsC020LeftWithBothReleased) {
-    EXPECT_TRUE(outControlHolds(kReset, R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, R"(
 set Safe 1
 scans 1
 set ResetButton 1
@@ -197,7 +197,7 @@ expect Error 0
 }
 
 TEST(SF_OutControl, TheOutputFollowsARisingProcessControlWhileSafe) {
-    EXPECT_TRUE(outControlHolds(kReset, kToDisabled + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToDisabled + R"(
 expect Out 0
 scans 5
 expect DiagCode -32762
@@ -220,7 +220,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_OutControl, ProcessControlHeldThroughTheAcknowledgementIsC010LeftByReleasingIt) {
-    EXPECT_TRUE(outControlHolds(kReset, R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, R"(
 set Safe 1
 set Process 1
 scans 1
@@ -244,7 +244,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_OutControl, StaticControlTakesProcessControlAsALevel) {
-    EXPECT_TRUE(outControlHolds(kReset + " StaticControl=\"Static\"", R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset + " StaticControl=\"Static\"", R"(
 set Static 1
 set Safe 1
 set Process 1
@@ -272,7 +272,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_OutControl, ASafetyDemandSwitchesOffAndNeedsAPressAndANewProcessEdge) {
-    EXPECT_TRUE(outControlHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToOutputEnabled + R"(
 set Safe 0
 scans 1
 expect DiagCode -30718
@@ -296,13 +296,13 @@ expect DiagCode -16368
 }
 
 TEST(SF_OutControl, TheSafetyDemandComesBeforeProcessControl) {
-    EXPECT_TRUE(outControlHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToOutputEnabled + R"(
 set Safe 0
 set Process 0
 scans 1
 expect DiagCode -30718
 )"));
-    EXPECT_TRUE(outControlHolds(kReset, kToDisabled + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToDisabled + R"(
 set Safe 0
 set Process 1
 scans 1
@@ -312,9 +312,9 @@ expect Out 0
 }
 
 TEST(SF_OutControl, AutoResetRestartsAfterADemandWithoutAPress) {
-    EXPECT_TRUE(outControlHolds(kReset + " S_AutoReset=\"AutoReset\"", R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset + " S_AutoReset=\"AutoReset\"", R"(
 set AutoReset 1
-)" + kToEnabled + R"(
+)" + kToOutputEnabled + R"(
 set Safe 0
 scans 1
 expect DiagCode -30718
@@ -327,7 +327,7 @@ scans 1
 expect DiagCode -32768
 )"));
     // S_AutoReset switched on while 8404 waits acknowledges there.
-    EXPECT_TRUE(outControlHolds(kReset + " S_AutoReset=\"AutoReset\"", kToLocked + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset + " S_AutoReset=\"AutoReset\"", kToLocked + R"(
 scans 2
 expect DiagCode -31740
 set AutoReset 1
@@ -337,7 +337,7 @@ expect DiagCode -32762
 }
 
 TEST(SF_OutControl, TheSafetyPermissionLostWhileWaitingForThePressIsADemandAgain) {
-    EXPECT_TRUE(outControlHolds(kReset, kToLocked + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToLocked + R"(
 set Safe 0
 scans 1
 expect DiagCode -30718
@@ -348,7 +348,7 @@ expect DiagCode -31740
 }
 
 TEST(SF_OutControl, AResetHeldWhen8404IsReachedIsC011LeftByReleasingIt) {
-    EXPECT_TRUE(outControlHolds(kReset, kToEnabled + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToOutputEnabled + R"(
 set Safe 0
 set Process 0
 set ResetButton 1
@@ -373,7 +373,7 @@ set ResetButton 1
 scans 1
 expect DiagCode -32762
 )"));
-    EXPECT_TRUE(outControlHolds(kReset, kToLocked + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToLocked + R"(
 set ResetButton 1
 set Safe 0
 scans 1
@@ -382,7 +382,7 @@ expect DiagCode -30718
 }
 
 TEST(SF_OutControl, ResetAndProcessControlRisingTogetherIn8404IsC030LeftWithBothReleased) {
-    EXPECT_TRUE(outControlHolds(kReset, kToLocked + R"(
+    EXPECT_TRUE(outControlHolds(kOutControlReset, kToLocked + R"(
 set ResetButton 1
 set Process 1
 scans 1

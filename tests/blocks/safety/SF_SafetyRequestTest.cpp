@@ -29,8 +29,8 @@ namespace {
     return holdsOnBothInstructionSets(names, record, scenario);
 }
 
-const std::string kTime = "MonitoringTime=\"0s05\" ";
-const std::string kReset = kTime + "Reset=\"ResetButton\"";
+const std::string kRequestTime = "MonitoringTime=\"0s05\" ";
+const std::string kRequestReset = kRequestTime + "Reset=\"ResetButton\"";
 
 // From activation to 8002: a press of Reset without the acknowledgement, in
 // operation mode.
@@ -46,7 +46,7 @@ set ResetButton 0
 } // namespace
 
 TEST(SF_SafetyRequest, ActivateOffHoldsStateZeroWithEveryOutputOff) {
-    EXPECT_TRUE(requestHolds(kReset + " Activate=\"Act\"", R"(
+    EXPECT_TRUE(requestHolds(kRequestReset + " Activate=\"Act\"", R"(
 set OpMode 1
 set Ack 1
 scans 2
@@ -95,7 +95,7 @@ expect Ready 0
 }
 
 TEST(SF_SafetyRequest, OpenInputsMeanActiveAndNeverAPress) {
-    EXPECT_TRUE(requestHolds(kTime, R"(
+    EXPECT_TRUE(requestHolds(kRequestTime, R"(
 set OpMode 1
 set Ack 1
 scans 1
@@ -110,7 +110,7 @@ expect DiagCode -32767
 }
 
 TEST(SF_SafetyRequest, APressWithoutTheAcknowledgementIsOperationModeAndItComingOrGoingSwaps) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 expect Request 1
 expect Active 0
 expect Error 0
@@ -130,7 +130,7 @@ expect Request 1
 }
 
 TEST(SF_SafetyRequest, APressWithTheAcknowledgementIsOperationModeAcknowledged) {
-    EXPECT_TRUE(requestHolds(kReset, R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, R"(
 set OpMode 1
 set Ack 1
 scans 1
@@ -143,7 +143,7 @@ expect Active 0
 }
 
 TEST(SF_SafetyRequest, AReleaseHeldFromTheStartIsNoPress) {
-    EXPECT_TRUE(requestHolds(kReset, R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, R"(
 set ResetButton 1
 set OpMode 1
 scans 5
@@ -157,7 +157,7 @@ expect DiagCode -32766
 }
 
 TEST(SF_SafetyRequest, TheAcknowledgementExactlyMonitoringTimeAfterTheRequestIsSafe) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 # 8002 -> 8003: the request drops S_SafetyRequest
@@ -180,7 +180,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_SafetyRequest, TheAcknowledgementOneScanLateIsErrorC003UntilAPress) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 run 50ms
@@ -205,7 +205,7 @@ expect Request 0
 }
 
 TEST(SF_SafetyRequest, AResetHeldInC003IsC005UntilReleased) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 set ResetButton 1
 scans 1
@@ -224,7 +224,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_SafetyRequest, AfterAnErrorOperationModeLeadsOnAgain) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 run 60ms
@@ -243,7 +243,7 @@ expect Request 1
 }
 
 TEST(SF_SafetyRequest, OperationModeBackBeforeTheAcknowledgementIsOperationModeAgain) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 expect DiagCode -32765
@@ -267,7 +267,7 @@ expect DiagCode -32768
 }
 
 TEST(SF_SafetyRequest, TheMonitoringTimeRunsAfreshOnEachRequest) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 run 40ms
@@ -288,7 +288,7 @@ expect DiagCode -16381
 }
 
 TEST(SF_SafetyRequest, LosingTheAcknowledgementInTheSafeStateIsErrorC002UntilAPress) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 set Ack 1
@@ -318,7 +318,7 @@ expect DiagCode -32750
 }
 
 TEST(SF_SafetyRequest, AResetHeldInC002IsC004UntilReleased) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 set Ack 1
@@ -343,7 +343,7 @@ expect DiagCode -32763
 }
 
 TEST(SF_SafetyRequest, OperationModeLeavesTheSafeState) {
-    EXPECT_TRUE(requestHolds(kReset, kToOperation + R"(
+    EXPECT_TRUE(requestHolds(kRequestReset, kToOperation + R"(
 set OpMode 0
 scans 1
 set Ack 1

@@ -18,7 +18,7 @@ using namespace rs::blocks;
 
 namespace {
 
-BlockLibrary safetyLibrary() {
+BlockLibrary readSafetyLibrary() {
     std::ifstream file(RUNGSMITH_LIBRARIES "/Rungsmith_Safety.rslib", std::ios::binary);
     std::stringstream text;
     text << file.rdbuf();
@@ -44,7 +44,7 @@ std::set<std::string> bodyStates(const BlockDefinition& block) {
 } // namespace
 
 TEST(SafetyStates, EveryBlockHasAStateRecordForEachStateOfItsBodyAndNoOther) {
-    const BlockLibrary library = safetyLibrary();
+    const BlockLibrary library = readSafetyLibrary();
     ASSERT_EQ(library.blocks.size(), 15u);
     for (const BlockDefinition& block : library.blocks) {
         std::set<std::string> recorded;
@@ -57,7 +57,7 @@ TEST(SafetyStates, EveryBlockHasAStateRecordForEachStateOfItsBodyAndNoOther) {
 }
 
 TEST(SafetyStates, EveryStateMeansSomethingInEnglishSwedishAndGerman) {
-    for (const BlockDefinition& block : safetyLibrary().blocks)
+    for (const BlockDefinition& block : readSafetyLibrary().blocks)
         for (const StateMeaning& state : block.states) {
             const std::string what = block.name + " " + stateCodeWord(state.code);
             EXPECT_FALSE(state.meaning.english.empty()) << what;

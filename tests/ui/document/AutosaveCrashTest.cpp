@@ -21,10 +21,10 @@
 
 namespace {
 
-const QByteArray kProject = "$name Press\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n";
+const QByteArray kCrashProject = "$name Press\n"
+                                 "! id_pluto:00=000000000000\n"
+                                 "! pgm_pluto:00\n"
+                                 "S0.0_0\n";
 const char* kDescription = "work in progress";
 // What the crashing process is told through its environment (test-only).
 const char* kAutosaveFolder = "RUNGSMITH_TEST_AUTOSAVE_FOLDER";
@@ -46,7 +46,7 @@ TEST(AutosaveCrashingProcess, DISABLED_EditsAutosavesAndWaits) {
 }
 
 TEST_F(AutosaveCrashTest, AnEditSurvivesAKillAfterItsAutosave) {
-    const QString path = writeFile(QStringLiteral("press.sps"), kProject);
+    const QString path = writeFile(QStringLiteral("press.sps"), kCrashProject);
     QProcess crashing;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QString::fromLatin1(kAutosaveFolder), rs::ui::Autosave::directory());
@@ -67,7 +67,7 @@ TEST_F(AutosaveCrashTest, AnEditSurvivesAKillAfterItsAutosave) {
     crashing.kill(); // SIGKILL: no destructor, no lock released, nothing saved
     ASSERT_TRUE(crashing.waitForFinished(10000));
     EXPECT_EQ(crashing.exitStatus(), QProcess::CrashExit);
-    EXPECT_EQ(readFile(path), kProject);
+    EXPECT_EQ(readFile(path), kCrashProject);
 
     MessageBoxAnswerer recover(QMessageBox::Ok); // no such button: the default, Recover
     ASSERT_EQ(window.recoverAutosaved(), 1);
@@ -79,7 +79,7 @@ TEST_F(AutosaveCrashTest, AnEditSurvivesAKillAfterItsAutosave) {
 }
 
 TEST_F(AutosaveCrashTest, ACopyWhoseIndexIsMissingIsStillRecovered) {
-    const QString path = writeFile(QStringLiteral("press.sps"), kProject);
+    const QString path = writeFile(QStringLiteral("press.sps"), kCrashProject);
     QByteArray changed;
     {
         rs::ui::MainWindow crashed;

@@ -16,10 +16,10 @@
 
 namespace {
 
-const QByteArray kProject = "$name Press\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n";
+const QByteArray kAutosaveProject = "$name Press\n"
+                                    "! id_pluto:00=000000000000\n"
+                                    "! pgm_pluto:00\n"
+                                    "S0.0_0\n";
 
 using AutosaveTest = WindowTest;
 
@@ -29,7 +29,7 @@ QStringList copyFiles() {
 }
 
 TEST_F(AutosaveTest, ACrashedSessionsChangesAreRecovered) {
-    const QString path = writeFile(QStringLiteral("press.sps"), kProject);
+    const QString path = writeFile(QStringLiteral("press.sps"), kAutosaveProject);
     QByteArray changed;
     {
         // The session that "crashes": its window is never closed, so its copy stays.
@@ -45,7 +45,7 @@ TEST_F(AutosaveTest, ACrashedSessionsChangesAreRecovered) {
         EXPECT_EQ(window.recoverAutosaved(), 0);
         delete crashed;
     }
-    EXPECT_EQ(readFile(path), kProject);
+    EXPECT_EQ(readFile(path), kAutosaveProject);
 
     MessageBoxAnswerer recover(QMessageBox::Ok); // no such button: the default, Recover
     ASSERT_EQ(window.recoverAutosaved(), 1);
@@ -64,7 +64,8 @@ TEST_F(AutosaveTest, ACrashedSessionsChangesAreRecovered) {
 }
 
 TEST_F(AutosaveTest, UnmodifiedProjectsHaveNoCopyAndDiscardingRemovesThem) {
-    ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("press.sps"), kProject)).isEmpty());
+    ASSERT_TRUE(
+        window.loadFile(writeFile(QStringLiteral("press.sps"), kAutosaveProject)).isEmpty());
     window.autosaveNow();
     EXPECT_TRUE(copyFiles().isEmpty());
     window.currentDocument()->edit(QStringLiteral("Describe"),

@@ -12,7 +12,7 @@ namespace {
 
 using rs::ui::ProjectDocument;
 
-const QString kPressLine =
+const QString kMergingPressLine =
     QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps");
 
 const QByteArray kCell = "$name Cell\n"
@@ -36,7 +36,7 @@ protected:
 // Issue 19 (manual Part 1, 12.2): the units of another open project join
 // this one as one undo step.
 TEST_F(ProjectMergingTest, TheOtherProjectsUnitsJoinAsOneUndoStep) {
-    const auto documents = open({kPressLine, writeFile(QStringLiteral("cell.sps"), kCell)});
+    const auto documents = open({kMergingPressLine, writeFile(QStringLiteral("cell.sps"), kCell)});
     ASSERT_EQ(documents.size(), 2u);
     ProjectDocument* into = documents[0];
     const int steps = into->undoStack()->count();
@@ -52,9 +52,10 @@ TEST_F(ProjectMergingTest, TheOtherProjectsUnitsJoinAsOneUndoStep) {
 
 // A station both use is a conflict: the message lists it and nothing changes.
 TEST_F(ProjectMergingTest, AConflictIsListedAndNothingMerges) {
-    const auto documents = open(
-        {kPressLine, writeFile(QStringLiteral("copy.sps"),
-                               readFile(kPressLine).replace("$name Press line", "$name Copy"))});
+    const auto documents =
+        open({kMergingPressLine,
+              writeFile(QStringLiteral("copy.sps"),
+                        readFile(kMergingPressLine).replace("$name Press line", "$name Copy"))});
     ASSERT_EQ(documents.size(), 2u);
     ProjectDocument* into = documents[0];
     const rs::project::Project before = into->project();

@@ -24,14 +24,14 @@
 
 namespace {
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kSaveMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
 class SaveFailureTest : public WindowTest {
 protected:
     // Opens a copy of the muting example from `folder` and changes it.
     void openAndEdit(const QString& folder) {
         path = QDir(folder).filePath(QStringLiteral("muting.sps"));
-        ASSERT_TRUE(QFile::copy(kMuting, path));
+        ASSERT_TRUE(QFile::copy(kSaveMuting, path));
         saved = readFile(path);
         ASSERT_TRUE(window.loadFile(path).isEmpty());
         document()->edit(QStringLiteral("Describe"),
@@ -75,7 +75,7 @@ TEST_F(SaveFailureTest, SaveAsWhereNoFileCanBeLeavesTheProjectModified) {
 }
 
 TEST_F(SaveFailureTest, APdfThatCannotBeWrittenIsSaidAndAnOldOneKept) {
-    window.loadFile(kMuting);
+    window.loadFile(kSaveMuting);
     ASSERT_TRUE(window.showPage({rs::ui::PageRef::Kind::Ladder, document(), 0, 0}));
     const QString folder = directory.filePath(QStringLiteral("taken.pdf"));
     QDir(directory.path()).mkdir(QStringLiteral("taken.pdf"));

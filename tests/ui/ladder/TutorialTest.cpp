@@ -7,6 +7,7 @@
 #include "WindowTest.h"
 
 #include "DialogDriver.h"
+#include "FormInput.h"
 #include "ProgramRun.h"
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
@@ -47,7 +48,7 @@ using rs::ui::VariableTableModel;
 // Pin name and what is typed into its field.
 using PinEntries = std::vector<std::pair<QString, QString>>;
 
-void typeInto(QDialog& dialog, const QString& name, const QString& text) {
+void typeIntoField(QDialog& dialog, const QString& name, const QString& text) {
     auto* field = dialog.findChild<QLineEdit*>(name);
     ASSERT_NE(field, nullptr) << name.toStdString();
     field->setFocus();
@@ -56,16 +57,7 @@ void typeInto(QDialog& dialog, const QString& name, const QString& text) {
     QTest::keyClicks(field, text);
 }
 
-void clickOk(QDialog& dialog) {
-    auto* buttons = dialog.findChild<QDialogButtonBox*>();
-    ASSERT_NE(buttons, nullptr);
-    QPushButton* ok = buttons->button(QDialogButtonBox::Ok);
-    ASSERT_NE(ok, nullptr);
-    ASSERT_TRUE(ok->isEnabled());
-    QTest::mouseClick(ok, Qt::LeftButton);
-}
-
-void choose(QDialog& dialog, const QString& combo, const QString& text) {
+void chooseInDialog(QDialog& dialog, const QString& combo, const QString& text) {
     auto* box = dialog.findChild<QComboBox*>(combo);
     ASSERT_NE(box, nullptr) << combo.toStdString();
     const int index = box->findText(text);
@@ -81,18 +73,19 @@ protected:
     void newProject() {
         DialogDriver driver({
             [](QDialog& dialog) {
-                typeInto(dialog, QStringLiteral("projectNameEdit"),
-                         QStringLiteral("Muting tutorial"));
+                typeIntoField(dialog, QStringLiteral("projectNameEdit"),
+                              QStringLiteral("Muting tutorial"));
                 clickOk(dialog);
             },
             [](QDialog& dialog) {
-                choose(dialog, QStringLiteral("typeCombo"), QStringLiteral("A20"));
-                choose(dialog, QStringLiteral("stationCombo"), QStringLiteral("0"));
+                chooseInDialog(dialog, QStringLiteral("typeCombo"), QStringLiteral("A20"));
+                chooseInDialog(dialog, QStringLiteral("stationCombo"), QStringLiteral("0"));
                 QTest::mouseClick(
                     dialog.findChild<QRadioButton*>(QStringLiteral("instructionSet3")),
                     Qt::LeftButton);
-                choose(dialog, QStringLiteral("idfixKindCombo"), QStringLiteral("IDFIX number"));
-                typeInto(dialog, QStringLiteral("idfixEdit"), QStringLiteral("000034AD4AE1"));
+                chooseInDialog(dialog, QStringLiteral("idfixKindCombo"),
+                               QStringLiteral("IDFIX number"));
+                typeIntoField(dialog, QStringLiteral("idfixEdit"), QStringLiteral("000034AD4AE1"));
                 clickOk(dialog);
             },
         });
@@ -144,7 +137,7 @@ protected:
     // The key of an element, its properties dialog filled in and closed by Enter.
     void insert(char key, const QString& operand) {
         DialogDriver driver({[&](QDialog& dialog) {
-            typeInto(dialog, QStringLiteral("operand"), operand);
+            typeIntoField(dialog, QStringLiteral("operand"), operand);
             QTest::keyClick(dialog.findChild<QLineEdit*>(QStringLiteral("operand")),
                             Qt::Key_Return);
         }});
@@ -156,11 +149,11 @@ protected:
     // As insert, naming the memory on the way with the dialog's New Variable... (3.10).
     void insertNamingNew(char key, const QString& address, const QString& symbol) {
         DialogDriver driver({[&](QDialog& dialog) {
-            typeInto(dialog, QStringLiteral("operand"), address);
+            typeIntoField(dialog, QStringLiteral("operand"), address);
             // A driver's timer does not fire again inside its own handler, so
             // the dialog this one opens needs a driver of its own.
             DialogDriver naming({[&](QDialog& newVariable) {
-                typeInto(newVariable, QStringLiteral("name"), symbol);
+                typeIntoField(newVariable, QStringLiteral("name"), symbol);
                 clickOk(newVariable);
             }});
             QTest::mouseClick(dialog.findChild<QPushButton*>(QStringLiteral("newVariable")),
@@ -179,7 +172,7 @@ protected:
     void insertBlock(const QString& filter, const QString& block, const PinEntries& pins) {
         DialogDriver driver(
             {[&](QDialog& chooser) {
-                 typeInto(chooser, QStringLiteral("filter"), filter);
+                 typeIntoField(chooser, QStringLiteral("filter"), filter);
                  auto* list = chooser.findChild<QListWidget*>(QStringLiteral("blocks"));
                  ASSERT_NE(list, nullptr);
                  ASSERT_EQ(list->count(), 1) << filter.toStdString();
@@ -189,7 +182,7 @@ protected:
              },
              [&](QDialog& dialog) {
                  for (const auto& pin : pins)
-                     typeInto(dialog, QStringLiteral("pin_") + pin.first, pin.second);
+                     typeIntoField(dialog, QStringLiteral("pin_") + pin.first, pin.second);
                  clickOk(dialog);
              }});
         QTest::keyClick(page().view(), Qt::Key_F, Qt::ShiftModifier);

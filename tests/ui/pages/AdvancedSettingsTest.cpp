@@ -20,19 +20,20 @@ namespace {
 
 using rs::ui::PageRef;
 
-const QByteArray kProject = "! id_pluto:00=000000000000\n"
-                            "! id_pluto:01=000000000001\n"
-                            "! type_pluto:00=A20,is3\n"
-                            "! type_pluto:01=A20,is3\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "Q0.14 = I1.0\n";
+const QByteArray kAdvancedProject = "! id_pluto:00=000000000000\n"
+                                    "! id_pluto:01=000000000001\n"
+                                    "! type_pluto:00=A20,is3\n"
+                                    "! type_pluto:01=A20,is3\n"
+                                    "! pgm_pluto:00\n"
+                                    "S0.0_0\n"
+                                    "Q0.14 = I1.0\n";
 
 class AdvancedSettingsTest : public WindowTest {
 protected:
     void SetUp() override {
         WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("two.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(
+            window.loadFile(writeFile(QStringLiteral("two.sps"), kAdvancedProject)).isEmpty());
         showWindow();
         clickNode({PageRef::Kind::Unit, document(), 1});
     }

@@ -2,6 +2,7 @@
 #include "WindowTest.h"
 
 #include "DialogDriver.h"
+#include "FormInput.h"
 #include "document/ProjectDocument.h"
 #include "pages/AsiOptionsPage.h"
 #include "pages/AsiProfileDialog.h"
@@ -24,29 +25,16 @@ namespace {
 
 using rs::ui::PageRef;
 
-const QByteArray kProject = "$name Conveyor\n"
-                            "! id_pluto_ASi:00=000000000000\n"
-                            "! id_pluto:01=000000000001\n"
-                            "! type_pluto:00=ASi,is3\n"
-                            "! type_pluto:01=A20,is3\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "M0.1 = ASi0.3\n"
-                            "! pgm_pluto:01\n"
-                            "S1.0_0\n";
-
-template <typename T> T* child(QWidget& parent, const QString& name) {
-    T* found = parent.findChild<T*>(name);
-    EXPECT_NE(found, nullptr) << name.toStdString();
-    return found;
-}
-
-void choose(QComboBox* combo, const QString& text) {
-    const int index = combo->findText(text);
-    ASSERT_GE(index, 0) << text.toStdString();
-    combo->setCurrentIndex(index);
-    emit combo->activated(index);
-}
+const QByteArray kAsiProject = "$name Conveyor\n"
+                               "! id_pluto_ASi:00=000000000000\n"
+                               "! id_pluto:01=000000000001\n"
+                               "! type_pluto:00=ASi,is3\n"
+                               "! type_pluto:01=A20,is3\n"
+                               "! pgm_pluto:00\n"
+                               "S0.0_0\n"
+                               "M0.1 = ASi0.3\n"
+                               "! pgm_pluto:01\n"
+                               "S1.0_0\n";
 
 // Clicks a radio button on its indicator, where a user aims.
 void clickRadio(QRadioButton* button) {
@@ -63,7 +51,7 @@ class AsiOptionsPageTest : public WindowTest {
 protected:
     void SetUp() override {
         WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("asi.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("asi.sps"), kAsiProject)).isEmpty());
         showWindow();
     }
     void undo() { action("undoAction")->trigger(); }

@@ -33,22 +33,23 @@ namespace {
 
 using rs::ui::PageRef;
 
-const QByteArray kProject = "$name Line\n"
-                            "! id_pluto:00=000000000000\n"
-                            "! id_pluto:01=000000000001\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "GM0.0 = I0.0\n"
-                            "! pgm_pluto:01\n"
-                            "S1.0_0\n"
-                            ";@system Ext_Val BlockNo=\"0\" Valid=\"GM1.0\" Reg_0=\"R1.0\" "
-                            "Reg_1=\"R1.1\"\n";
+const QByteArray kGatewayProject = "$name Line\n"
+                                   "! id_pluto:00=000000000000\n"
+                                   "! id_pluto:01=000000000001\n"
+                                   "! pgm_pluto:00\n"
+                                   "S0.0_0\n"
+                                   "GM0.0 = I0.0\n"
+                                   "! pgm_pluto:01\n"
+                                   "S1.0_0\n"
+                                   ";@system Ext_Val BlockNo=\"0\" Valid=\"GM1.0\" Reg_0=\"R1.0\" "
+                                   "Reg_1=\"R1.1\"\n";
 
 class GatewayPageTest : public WindowTest {
 protected:
     void SetUp() override {
         WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("line.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(
+            window.loadFile(writeFile(QStringLiteral("line.sps"), kGatewayProject)).isEmpty());
         showWindow();
     }
 

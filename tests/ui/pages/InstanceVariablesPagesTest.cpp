@@ -24,7 +24,7 @@ using rs::ui::VariableTableModel;
 
 // EquivalentInputs as Rungsmith_Basics expands it, and a private variable
 // (#spare) that no statement uses: it is the instance's all the same.
-const QByteArray kProject =
+const QByteArray kInstancesProject =
     "! id_pluto:00=000000000000\n"
     "! type_pluto:00=A20,is3\n"
     "! I0.0=Door1A\n"
@@ -43,7 +43,8 @@ class InstanceVariablesPagesTest : public WindowTest {
 protected:
     void SetUp() override {
         WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("doors.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(
+            window.loadFile(writeFile(QStringLiteral("doors.sps"), kInstancesProject)).isEmpty());
         showWindow();
     }
 

@@ -20,16 +20,17 @@ namespace {
 
 using rs::ui::PageRef;
 
-const QByteArray kProject = "! id_pluto:00=000000000000\n"
-                            "! pgm_pluto:00\n"
-                            "S0.0_0\n"
-                            "Q0.2 = I0.0\n";
+const QByteArray kLibrariesProject = "! id_pluto:00=000000000000\n"
+                                     "! pgm_pluto:00\n"
+                                     "S0.0_0\n"
+                                     "Q0.2 = I0.0\n";
 
 class ProjectLibrariesTest : public WindowTest {
 protected:
     void SetUp() override {
         WindowTest::SetUp();
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("p.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(
+            window.loadFile(writeFile(QStringLiteral("p.sps"), kLibrariesProject)).isEmpty());
         showWindow();
         window.showPage(PageRef::Kind::Project, -1);
         list = window.findChild<QListWidget*>(QStringLiteral("projectLibrariesList"));
@@ -77,7 +78,7 @@ TEST_F(ProjectLibrariesTest, AStandardLibraryIsAddedFromTheInstalledOnesAndRemov
     EXPECT_EQ(document()->project().libraries, used);
     document()->undoStack()->undo();
     EXPECT_TRUE(document()->project().libraries.empty());
-    EXPECT_EQ(projectText(), kProject);
+    EXPECT_EQ(projectText(), kLibrariesProject);
 }
 
 TEST_F(ProjectLibrariesTest, ALibraryThatIsNotInstalledIsShownAsNotFound) {

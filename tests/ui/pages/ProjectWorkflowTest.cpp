@@ -2,6 +2,7 @@
 #include "WindowTest.h"
 
 #include "DialogDriver.h"
+#include "FormInput.h"
 #include "MessageBoxAnswerer.h"
 #include "document/ProjectDocument.h"
 #include "pages/CsvExportDialog.h"
@@ -39,33 +40,10 @@ namespace {
 using rs::ui::MainWindow;
 using rs::ui::PageRef;
 
-template <typename T> T* child(QWidget& parent, const QString& name) {
-    T* found = parent.findChild<T*>(name);
-    EXPECT_NE(found, nullptr) << name.toStdString();
-    return found;
-}
-
 void typeInto(QLineEdit* edit, const QString& text) {
     edit->setFocus();
     edit->selectAll();
     QTest::keyClicks(edit, text);
-}
-
-// Picks an entry of a drop-down list by its text, as choosing it from the list does.
-void choose(QComboBox* combo, const QString& text) {
-    const int index = combo->findText(text);
-    ASSERT_GE(index, 0) << text.toStdString();
-    combo->setCurrentIndex(index);
-    emit combo->activated(index);
-}
-
-void clickOk(QDialog& dialog) {
-    auto* buttons = dialog.findChild<QDialogButtonBox*>();
-    ASSERT_NE(buttons, nullptr);
-    QPushButton* ok = buttons->button(QDialogButtonBox::Ok);
-    ASSERT_NE(ok, nullptr);
-    ASSERT_TRUE(ok->isEnabled());
-    QTest::mouseClick(ok, Qt::LeftButton);
 }
 
 class ProjectWorkflowTest : public WindowTest {

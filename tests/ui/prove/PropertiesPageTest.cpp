@@ -35,8 +35,8 @@ namespace {
 using rs::ui::PageRef;
 using rs::ui::PropertyProof;
 
-const QByteArray kProject = "! id_pluto:00=000000000000\n! type_pluto:00=A20,is3\n"
-                            "! pgm_pluto:00\nS0.0_0\nQ0.2 = I0.12 * I0.0\n";
+const QByteArray kPropertiesProject = "! id_pluto:00=000000000000\n! type_pluto:00=A20,is3\n"
+                                      "! pgm_pluto:00\nS0.0_0\nQ0.2 = I0.12 * I0.0\n";
 const QByteArray kProperties = "; the stop circuit\n"
                                "always Q0.2 -> I0.12   ; only with the stop circuit closed\n"
                                "never Q0.2\n";
@@ -47,7 +47,8 @@ protected:
     void SetUp() override {
         WindowTest::SetUp();
         propertiesPath = writeFile(QStringLiteral("line.prop"), kProperties);
-        ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("line.sps"), kProject)).isEmpty());
+        ASSERT_TRUE(
+            window.loadFile(writeFile(QStringLiteral("line.sps"), kPropertiesProject)).isEmpty());
         showWindow();
     }
 
@@ -246,7 +247,8 @@ TEST_F(PropertiesPageTest, ProgressCountsThePropertiesAndCancelStopsTheRun) {
 TEST_F(PropertiesPageTest, AnotherProjectsPropertiesCancelAProofAndShowNoneOfItsRows) {
     showProperties();
     rs::ui::ProjectDocument* first = document();
-    ASSERT_TRUE(window.loadFile(writeFile(QStringLiteral("other.sps"), kProject)).isEmpty());
+    ASSERT_TRUE(
+        window.loadFile(writeFile(QStringLiteral("other.sps"), kPropertiesProject)).isEmpty());
     ASSERT_NE(window.documents().back(), first);
     ASSERT_TRUE(window.showPage({PageRef::Kind::Properties, first}));
     action("proveAllAction")->trigger();
@@ -276,7 +278,7 @@ TEST_F(PropertiesPageTest, SavingTheProjectWritesThePropertiesBesideIt) {
 }
 
 TEST_F(PropertiesPageTest, AProjectWithoutPropertiesShowsWhatToWriteAndSavesNoEmptyFile) {
-    const QString other = writeFile(QStringLiteral("other.sps"), kProject);
+    const QString other = writeFile(QStringLiteral("other.sps"), kPropertiesProject);
     ASSERT_TRUE(window.loadFile(other).isEmpty());
     ASSERT_TRUE(window.showPage(PageRef::Kind::Properties, -1));
     EXPECT_TRUE(editor()->textBytes().isEmpty());

@@ -19,7 +19,7 @@ namespace {
 using rs::ui::CompareDialog;
 using rs::ui::PageRef;
 
-const QString kPressLine =
+const QString kComparePressLine =
     QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/press-line.sps");
 
 class CompareDialogTest : public ReviewWindowTest {
@@ -46,7 +46,7 @@ protected:
 // in the window's words, and says whether the behaviour changed.
 TEST_F(CompareDialogTest, ListsTheChangedNetworksAndTheVerdict) {
     changeUnitOne();
-    CompareDialog* dialog = compareWithFile(kPressLine);
+    CompareDialog* dialog = compareWithFile(kComparePressLine);
     ASSERT_NE(dialog, nullptr);
     EXPECT_EQ(dialog->lines(), (QStringList{QStringLiteral("Pluto 01 S1.0_0 network 2: changed"),
                                             QStringLiteral("Pluto 01 S1.0_0 network 3: added")}));
@@ -55,7 +55,7 @@ TEST_F(CompareDialogTest, ListsTheChangedNetworksAndTheVerdict) {
 }
 
 TEST_F(CompareDialogTest, TheSameProjectHasNoChangeInBehaviour) {
-    CompareDialog* dialog = compareWithFile(kPressLine);
+    CompareDialog* dialog = compareWithFile(kComparePressLine);
     ASSERT_NE(dialog, nullptr);
     EXPECT_EQ(dialog->lines(), QStringList{QStringLiteral("No network, unit or option differs.")});
     EXPECT_EQ(dialog->verdict(), QStringLiteral("No change in behaviour."));
@@ -63,8 +63,9 @@ TEST_F(CompareDialogTest, TheSameProjectHasNoChangeInBehaviour) {
 
 // A side with errors cannot be compared, and the dialog says which.
 TEST_F(CompareDialogTest, AnOldVersionWithErrorsIsNamed) {
-    const QString broken = writeFile(QStringLiteral("broken.sps"),
-                                     readFile(kPressLine).replace("Q1.3 = Q1.2", "Q1.3 = I1.99"));
+    const QString broken =
+        writeFile(QStringLiteral("broken.sps"),
+                  readFile(kComparePressLine).replace("Q1.3 = Q1.2", "Q1.3 = I1.99"));
     CompareDialog* dialog = compareWithFile(broken);
     ASSERT_NE(dialog, nullptr);
     EXPECT_TRUE(dialog->lines().isEmpty());
@@ -77,7 +78,7 @@ TEST_F(CompareDialogTest, AnOldVersionWithErrorsIsNamed) {
 // The review a reviewer signs: the PDF `diff --pdf` writes.
 TEST_F(CompareDialogTest, SavesTheReviewAsPdf) {
     changeUnitOne();
-    CompareDialog* dialog = compareWithFile(kPressLine);
+    CompareDialog* dialog = compareWithFile(kComparePressLine);
     ASSERT_NE(dialog, nullptr);
     EXPECT_TRUE(
         dialog->findChild<QPushButton*>(QStringLiteral("saveReviewPdfButton"))->isEnabled());
@@ -92,7 +93,7 @@ TEST_F(CompareDialogTest, SavesTheReviewAsPdf) {
 // Enter on a network's line opens it in the ladder, selected.
 TEST_F(CompareDialogTest, EnterOnANetworkOpensItInTheLadder) {
     changeUnitOne();
-    CompareDialog* dialog = compareWithFile(kPressLine);
+    CompareDialog* dialog = compareWithFile(kComparePressLine);
     ASSERT_NE(dialog, nullptr);
     auto* list = dialog->findChild<QListWidget*>(QStringLiteral("comparisonLines"));
     list->setCurrentRow(1);

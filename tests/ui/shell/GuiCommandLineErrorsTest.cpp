@@ -14,16 +14,16 @@
 
 namespace {
 
-struct GuiRun {
+struct GuiErrorsRun {
     int exitCode = -1;
     QString err;
 };
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kErrorsMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
 class GuiCommandLineErrors : public ::testing::Test {
 protected:
-    GuiRun gui(const QStringList& arguments) {
+    GuiErrorsRun gui(const QStringList& arguments) {
         QProcess process;
         QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
         environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
@@ -47,8 +47,8 @@ protected:
 
 TEST_F(GuiCommandLineErrors, AScenarioWithSyntaxErrorsIsReportedAndNothingDrawn) {
     const QString scenario = file(QStringLiteral("bad.scn"), "set I0.12 1\nrun soon\n");
-    const GuiRun run = gui({kMuting, QStringLiteral("--simulate"), scenario,
-                            QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    const GuiErrorsRun run = gui({kErrorsMuting, QStringLiteral("--simulate"), scenario,
+                                  QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
     EXPECT_EQ(run.exitCode, 1) << run.err.toStdString();
     EXPECT_TRUE(run.err.contains(scenario + QStringLiteral(":2:5: error: ")))
         << run.err.toStdString();
@@ -56,16 +56,16 @@ TEST_F(GuiCommandLineErrors, AScenarioWithSyntaxErrorsIsReportedAndNothingDrawn)
 }
 
 TEST_F(GuiCommandLineErrors, AnUnreadableScenarioIsAUsageError) {
-    const GuiRun run = gui({kMuting, QStringLiteral("--simulate"), directory.path(),
-                            QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    const GuiErrorsRun run = gui({kErrorsMuting, QStringLiteral("--simulate"), directory.path(),
+                                  QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
     EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
     EXPECT_FALSE(run.err.isEmpty());
     EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
 }
 
 TEST_F(GuiCommandLineErrors, AProjectThatDoesNotReadIsAUsageError) {
-    const GuiRun run = gui({out(QStringLiteral("missing.sps")), QStringLiteral("--screenshot"),
-                            out(QStringLiteral("shot.png"))});
+    const GuiErrorsRun run = gui({out(QStringLiteral("missing.sps")),
+                                  QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
     EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
     EXPECT_TRUE(run.err.contains(QStringLiteral("missing.sps"))) << run.err.toStdString();
     EXPECT_FALSE(QFile::exists(out(QStringLiteral("shot.png"))));
@@ -73,7 +73,8 @@ TEST_F(GuiCommandLineErrors, AProjectThatDoesNotReadIsAUsageError) {
 
 TEST_F(GuiCommandLineErrors, APl110ProgramOpensInItsOwnWindowAndRefusesAPlutoPage) {
     const QString program = file(QStringLiteral("station.sps"), "$target PL110\nMAIN\nQ1 = I1\n");
-    GuiRun run = gui({program, QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
+    GuiErrorsRun run =
+        gui({program, QStringLiteral("--screenshot"), out(QStringLiteral("shot.png"))});
     EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
     EXPECT_TRUE(QFile::exists(out(QStringLiteral("shot.png"))));
     // Not read as a broken Pluto project: no wall of Pluto errors.
@@ -95,12 +96,12 @@ TEST_F(GuiCommandLineErrors, APl110ProgramOpensInItsOwnWindowAndRefusesAPlutoPag
 TEST_F(GuiCommandLineErrors, APictureThatCannotBeWrittenIsSaidAndLeavesNoFile) {
     // The destination's folder does not exist.
     const QString nowhere = out(QStringLiteral("no/such/folder/shot.png"));
-    GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), nowhere});
+    GuiErrorsRun run = gui({kErrorsMuting, QStringLiteral("--screenshot"), nowhere});
     EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
     EXPECT_TRUE(run.err.contains(nowhere)) << run.err.toStdString();
     // The destination is a folder: it stays one.
     QDir(directory.path()).mkdir(QStringLiteral("taken.png"));
-    run = gui({kMuting, QStringLiteral("--screenshot"), out(QStringLiteral("taken.png"))});
+    run = gui({kErrorsMuting, QStringLiteral("--screenshot"), out(QStringLiteral("taken.png"))});
     EXPECT_EQ(run.exitCode, 2) << run.err.toStdString();
     EXPECT_TRUE(QFileInfo(out(QStringLiteral("taken.png"))).isDir());
     EXPECT_TRUE(QDir(directory.path()).entryList({QStringLiteral("*.png*")}, QDir::Files).isEmpty())

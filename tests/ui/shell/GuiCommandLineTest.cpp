@@ -30,7 +30,7 @@ GuiRun gui(const QStringList& arguments) {
             QString::fromUtf8(process.readAllStandardError())};
 }
 
-const QString kMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
+const QString kCommandLineMuting = QStringLiteral(RUNGSMITH_TEST_DATA "/manual/manual_muting.sps");
 
 class GuiCommandLine : public ::testing::Test {
 protected:
@@ -47,7 +47,7 @@ TEST_F(GuiCommandLine, ScreenshotOfTheExampleIsAWindowSizedPicture) {
 }
 
 TEST_F(GuiCommandLine, ScreenshotOfAFileOnItsTextPage) {
-    const GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("text.png"),
+    const GuiRun run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), out("text.png"),
                             QStringLiteral("--page"), QStringLiteral("text:0")});
     EXPECT_EQ(run.exitCode, 0) << run.err.toStdString();
     EXPECT_FALSE(QImage(out("text.png")).isNull());
@@ -59,9 +59,9 @@ TEST_F(GuiCommandLine, ScreenshotsOfEveryPageOfAUnit) {
           QStringLiteral("text:0"), QStringLiteral("project")}) {
         const QString picture =
             out(QString(page).replace(QLatin1Char(':'), QLatin1Char('-')) + QStringLiteral(".png"));
-        const GuiRun run =
-            gui({kMuting, QStringLiteral("--screenshot"), picture, QStringLiteral("--page"), page,
-                 QStringLiteral("--theme"), QStringLiteral("dark")});
+        const GuiRun run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), picture,
+                                QStringLiteral("--page"), page, QStringLiteral("--theme"),
+                                QStringLiteral("dark")});
         EXPECT_EQ(run.exitCode, 0) << page.toStdString() << ": " << run.err.toStdString();
         EXPECT_EQ(QImage(picture).size(), QSize(1280, 800)) << page.toStdString();
     }
@@ -70,17 +70,17 @@ TEST_F(GuiCommandLine, ScreenshotsOfEveryPageOfAUnit) {
 TEST_F(GuiCommandLine, ScreenshotsOfASequence) {
     // The muting example has sequence 1 in unit 0, written S0.1 in the language.
     for (const QString& page : {QStringLiteral("ladder:0.1"), QStringLiteral("text:0.1")}) {
-        const GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("sequence.png"),
-                                QStringLiteral("--page"), page});
+        const GuiRun run = gui({kCommandLineMuting, QStringLiteral("--screenshot"),
+                                out("sequence.png"), QStringLiteral("--page"), page});
         EXPECT_EQ(run.exitCode, 0) << page.toStdString() << ": " << run.err.toStdString();
     }
-    GuiRun run = gui({kMuting, QStringLiteral("--screenshot"), out("none.png"),
+    GuiRun run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), out("none.png"),
                       QStringLiteral("--page"), QStringLiteral("ladder:0.5")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("no sequence 5 in unit 0")))
         << run.err.toStdString();
-    run = gui({kMuting, QStringLiteral("--screenshot"), out("io.png"), QStringLiteral("--page"),
-               QStringLiteral("io:0.1")});
+    run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), out("io.png"),
+               QStringLiteral("--page"), QStringLiteral("io:0.1")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("unknown page 'io:0.1'"))) << run.err.toStdString();
 }
@@ -113,12 +113,12 @@ TEST_F(GuiCommandLine, UnknownPagesAndUnitsAreExitTwo) {
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("ladder-ish:0"))) << run.err.toStdString();
 
-    run = gui({kMuting, QStringLiteral("--screenshot"), out("b.png"), QStringLiteral("--page"),
-               QStringLiteral("text:7")});
+    run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), out("b.png"),
+               QStringLiteral("--page"), QStringLiteral("text:7")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("no unit 7"))) << run.err.toStdString();
-    run = gui({kMuting, QStringLiteral("--screenshot"), out("c.png"), QStringLiteral("--page"),
-               QStringLiteral("io:31")});
+    run = gui({kCommandLineMuting, QStringLiteral("--screenshot"), out("c.png"),
+               QStringLiteral("--page"), QStringLiteral("io:31")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.err.contains(QStringLiteral("no unit 31"))) << run.err.toStdString();
 }

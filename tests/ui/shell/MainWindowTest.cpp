@@ -411,8 +411,6 @@ TEST(MainWindowTranslation, SwedishAndGermanMenus) {
     }
 }
 
-} // namespace
-
 TEST_F(MainWindowTest, CtrlYRedoesAsCtrlShiftZDoes) {
     ASSERT_TRUE(
         window.loadFile(writeFile(QStringLiteral("press.sps"), kCanonicalProject)).isEmpty());
@@ -558,3 +556,5 @@ TEST_F(MainWindowTest, MarkAsValidatedRecordsTheBaselineAndThePageSaysSo) {
     document()->undoStack()->undo();
     EXPECT_FALSE(document()->project().baseline.has_value());
 }
+
+} // namespace

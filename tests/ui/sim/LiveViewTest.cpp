@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "DiagnosticsText.h"
 #include "WindowTest.h"
 
 #include "document/ProjectDocument.h"
@@ -18,13 +19,10 @@
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
 using rs::ui::PageRef;
 
 namespace {
-
-lang::Address addressOf(const char* word) {
-    return lang::readAddressWord(word).address;
-}
 
 // The live ladder of the muting example, whose first network is
 // Q0.2 = I0.12 * (I0.13 + M0.0) * (P(I0.14) * I0.2 + Q0.2), then Q0.3 = Q0.2
@@ -99,8 +97,6 @@ protected:
         return ladder()->findChild<QLabel*>(QStringLiteral("ladderStatus"))->text();
     }
 };
-
-} // namespace
 
 TEST_F(LiveViewTest, AClosedContactWithNoPowerArrivingIsDrawnClosed) {
     set("I0.2", 1); // the reset branch: P(I0.14) before it is open
@@ -234,3 +230,5 @@ TEST_F(LiveViewTest, ATimerOrComparisonThatBlocksSaysSo) {
     singleScan();
     EXPECT_EQ(ladder()->outputExplanation(), QStringLiteral("M0.0 is on through I0.0, R0.1 > 4"));
 }
+
+} // namespace

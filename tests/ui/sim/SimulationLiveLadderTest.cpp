@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "DiagnosticsText.h"
 #include "sim/LiveLadder.h"
 
 #include "compiler/Compiler.h"
@@ -7,12 +8,9 @@
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
 
 namespace {
-
-lang::Address addressOf(const char* word) {
-    return lang::readAddressWord(word).address;
-}
 
 // Statement 0 compares two registers; statement 1 adds one to another.
 sim::Simulation registers() {

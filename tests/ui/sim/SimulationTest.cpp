@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "DiagnosticsText.h"
 #include "WindowTest.h"
 
 #include "document/ProjectDocument.h"
@@ -40,13 +41,10 @@
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
 using rs::ui::PageRef;
 
 namespace {
-
-lang::Address addressOf(const char* word) {
-    return lang::readAddressWord(word).address;
-}
 
 class SimulationTest : public WindowTest {
 protected:
@@ -159,8 +157,6 @@ protected:
         return element ? ladder()->elementColor(element->statement, element->element) : QColor();
     }
 };
-
-} // namespace
 
 TEST_F(SimulationTest, ClickingInputsOnTheLadderDrivesTheMutingExample) {
     begin();
@@ -654,3 +650,5 @@ TEST_F(SimulationTest, WatchSetsTheChannelsOfASafeAsiSlave) {
     EXPECT_EQ(value(0), QStringLiteral("1")); // refused: a channel is 0 or 1
     EXPECT_FALSE(document()->isModified());
 }
+
+} // namespace

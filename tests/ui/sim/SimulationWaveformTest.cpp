@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "DiagnosticsText.h"
 #include "sim/WaveformView.h"
 
 #include "compiler/Compiler.h"
@@ -11,12 +12,9 @@
 #include <gtest/gtest.h>
 
 using namespace rs;
+using rs::test::addressOf;
 
 namespace {
-
-lang::Address addressOf(const char* word) {
-    return lang::readAddressWord(word).address;
-}
 
 // Q0.2 follows I0.0, which comes on at 50 ms; R0.1 counts the scans from then.
 sim::WaveformRecorder record() {
