@@ -3301,6 +3301,61 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::Pl110WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot: an address or a name</source>
+        <translation>Eine Variable zum Darstellen hinzufügen: eine Adresse oder ein Name</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation>Die gewählte Variable nicht mehr darstellen</translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation>Vergrößern: weniger Zeit zeigen (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation>Verkleinern: mehr Zeit zeigen (Strg+Mausrad)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation>Die ganze Aufzeichnung zeigen</translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation>VCD exportieren …</translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation>Die Aufzeichnung als Value Change Dump für GTKWave schreiben</translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation>VCD exportieren</translation>
+    </message>
+    <message>
+        <source>%1 is plotted already</source>
+        <translation>%1 wird schon dargestellt</translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation>Noch nichts aufgezeichnet: Starten Sie die Simulation oder führen Sie ein Szenario aus.</translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation>Value Change Dumps (*.vcd);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::Pl110Window</name>
     <message>
         <source>error</source>
@@ -3711,6 +3766,34 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>T&amp;oggle</source>
         <translation>Um&amp;schalten</translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation>Signalverlauf</translation>
+    </message>
+    <message>
+        <source>Serve &amp;Modbus RTU</source>
+        <translation>&amp;Modbus RTU bereitstellen</translation>
+    </message>
+    <message>
+        <source>Answer Modbus RTU requests on a pseudo-terminal, as the PL110&apos;s serial port, from the simulated memory (slave 1)</source>
+        <translation>Modbus-RTU-Anfragen auf einem Pseudoterminal beantworten, als serielle Schnittstelle der PL110, aus dem simulierten Speicher (Slave 1)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU: %1, slave 1</source>
+        <translation>Modbus RTU: %1, Slave 1</translation>
+    </message>
+    <message>
+        <source>Plot in &amp;Waveform</source>
+        <translation>&amp;Im Signalverlauf darstellen</translation>
+    </message>
+    <message>
+        <source>Record the selected contact&apos;s or output&apos;s variable in the waveform</source>
+        <translation>Die Variable des gewählten Kontakts oder Ausgangs im Signalverlauf aufzeichnen</translation>
+    </message>
+    <message>
+        <source>%1 is plotted in the waveform</source>
+        <translation>%1 wird im Signalverlauf dargestellt</translation>
     </message>
 </context>
 <context>

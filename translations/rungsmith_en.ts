@@ -3298,6 +3298,61 @@ Its text page (F6) shows and edits it.</source>
     </message>
 </context>
 <context>
+    <name>rs::ui::Pl110WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot: an address or a name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is plotted already</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::Pl110Window</name>
     <message>
         <source>error</source>
@@ -3707,6 +3762,34 @@ Its text page (F6) shows and edits it.</source>
     </message>
     <message>
         <source>T&amp;oggle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serve &amp;Modbus RTU</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer Modbus RTU requests on a pseudo-terminal, as the PL110&apos;s serial port, from the simulated memory (slave 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus RTU: %1, slave 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot in &amp;Waveform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record the selected contact&apos;s or output&apos;s variable in the waveform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is plotted in the waveform</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3301,6 +3301,61 @@ Dess textsida (F6) visar och redigerar den.</translation>
     </message>
 </context>
 <context>
+    <name>rs::ui::Pl110WaveformPanel</name>
+    <message>
+        <source>Add a variable to plot: an address or a name</source>
+        <translation>Lägg till en variabel att rita: en adress eller ett namn</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Ta bort</translation>
+    </message>
+    <message>
+        <source>Stop plotting the chosen variable</source>
+        <translation>Sluta rita den valda variabeln</translation>
+    </message>
+    <message>
+        <source>Zoom in: show less time (Ctrl+wheel)</source>
+        <translation>Zooma in: visa kortare tid (Ctrl+hjul)</translation>
+    </message>
+    <message>
+        <source>Zoom out: show more time (Ctrl+wheel)</source>
+        <translation>Zooma ut: visa längre tid (Ctrl+hjul)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Anpassa</translation>
+    </message>
+    <message>
+        <source>Show the whole recording</source>
+        <translation>Visa hela inspelningen</translation>
+    </message>
+    <message>
+        <source>Export VCD...</source>
+        <translation>Exportera VCD …</translation>
+    </message>
+    <message>
+        <source>Write the recording as a Value Change Dump, for GTKWave</source>
+        <translation>Skriv inspelningen som en Value Change Dump, för GTKWave</translation>
+    </message>
+    <message>
+        <source>Export VCD</source>
+        <translation>Exportera VCD</translation>
+    </message>
+    <message>
+        <source>%1 is plotted already</source>
+        <translation>%1 ritas redan</translation>
+    </message>
+    <message>
+        <source>Nothing is recorded yet: start the simulation or run a scenario.</source>
+        <translation>Inget är inspelat än: starta simuleringen eller kör ett scenario.</translation>
+    </message>
+    <message>
+        <source>Value Change Dumps (*.vcd);;All files (*)</source>
+        <translation>Value Change Dumps (*.vcd);;Alla filer (*)</translation>
+    </message>
+</context>
+<context>
     <name>rs::ui::Pl110Window</name>
     <message>
         <source>error</source>
@@ -3710,7 +3765,35 @@ Dess textsida (F6) visar och redigerar den.</translation>
     </message>
     <message>
         <source>T&amp;oggle</source>
-        <translation>&amp;Växla</translation>
+        <translation>Väx&amp;la</translation>
+    </message>
+    <message>
+        <source>Waveform</source>
+        <translation>Vågform</translation>
+    </message>
+    <message>
+        <source>Serve &amp;Modbus RTU</source>
+        <translation>Betjäna &amp;Modbus RTU</translation>
+    </message>
+    <message>
+        <source>Answer Modbus RTU requests on a pseudo-terminal, as the PL110&apos;s serial port, from the simulated memory (slave 1)</source>
+        <translation>Besvara Modbus RTU-förfrågningar på en pseudoterminal, som PL110:s seriella port, ur det simulerade minnet (slav 1)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU: %1, slave 1</source>
+        <translation>Modbus RTU: %1, slav 1</translation>
+    </message>
+    <message>
+        <source>Plot in &amp;Waveform</source>
+        <translation>Rita i &amp;vågform</translation>
+    </message>
+    <message>
+        <source>Record the selected contact&apos;s or output&apos;s variable in the waveform</source>
+        <translation>Spela in den valda kontaktens eller utgångens variabel i vågformen</translation>
+    </message>
+    <message>
+        <source>%1 is plotted in the waveform</source>
+        <translation>%1 ritas i vågformen</translation>
     </message>
 </context>
 <context>

@@ -72,6 +72,10 @@ std::unique_ptr<ModbusRtuServer> ModbusRtuServer::open(int slave, std::string& e
     return std::unique_ptr<ModbusRtuServer>(new ModbusRtuServer(std::move(impl), devicePath));
 }
 
+int ModbusRtuServer::descriptor() const {
+    return m_impl->master;
+}
+
 void ModbusRtuServer::serve(int waitMs, const Answer& answer) {
     modbus_t* context = m_impl->context;
     modbus_set_indication_timeout(context, static_cast<std::uint32_t>(waitMs / 1000),

@@ -27,6 +27,9 @@ public:
     ModbusRtuServer& operator=(const ModbusRtuServer&) = delete;
 
     const std::string& devicePath() const { return m_devicePath; }
+    // The pseudo-terminal's master side: readable when a client has sent
+    // something, for an event loop to wait on instead of a thread.
+    int descriptor() const;
     // Waits up to `waitMs` for one frame and answers it: requests to this
     // slave get `answer`'s PDU back, broadcasts (address 0) are carried out
     // without an answer, frames for other slaves and frames with a bad CRC

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pl110/Pl110Simulation.h"
 
+#include "pl110/ModbusSlave.h"
 #include "pl110/Pl110Document.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
@@ -143,6 +144,48 @@ void Pl110Simulation::release(const pl110::Address& address) {
         m_engine->set(address, 0);
     else
         m_engine->release(address);
+    Q_EMIT scanned();
+}
+
+QString Pl110Simulation::serveModbus(int slave) {
+    stopServing();
+    if (QString error = prepare(false); !error.isEmpty())
+        return error;
+    std::string error;
+    m_modbus = pl110::ModbusRtuServer::open(slave, error);
+    if (!m_modbus)
+        return QString::fromStdString(error);
+    m_modbusReadable =
+        std::make_unique<QSocketNotifier>(m_modbus->descriptor(), QSocketNotifier::Read);
+    connect(m_modbusReadable.get(), &QSocketNotifier::activated, this,
+            &Pl110Simulation::answerModbus);
+    Q_EMIT scanned();
+    return {};
+}
+
+void Pl110Simulation::stopServing() {
+    m_modbusReadable.reset();
+    m_modbus.reset();
+}
+
+QString Pl110Simulation::modbusDevice() const {
+    return m_modbus ? QString::fromStdString(m_modbus->devicePath()) : QString();
+}
+
+void Pl110Simulation::answerModbus() {
+    // The frame has begun to arrive: the rest follows within the byte
+    // timeout. A program with errors has nothing to answer from: exception
+    // 4, server device failure.
+    if (!m_engine && !prepare(false).isEmpty()) {
+        m_modbus->serve(100, [](std::span<const std::uint8_t> request) {
+            return std::vector<std::uint8_t>{
+                static_cast<std::uint8_t>((request.empty() ? 0 : request[0]) | 0x80), 0x04};
+        });
+        return;
+    }
+    m_modbus->serve(100, [this](std::span<const std::uint8_t> request) {
+        return pl110::answerRequest(m_engine->memory(), request);
+    });
     Q_EMIT scanned();
 }
 

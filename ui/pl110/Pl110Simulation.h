@@ -2,6 +2,7 @@
 #pragma once
 
 #ifndef Q_MOC_RUN
+#include "pl110/ModbusRtuServer.h"
 #include "pl110/ScanEngine.h"
 #include "pl110/WaveformRecorder.h"
 #include "sim/ScenarioRunner.h"
@@ -9,6 +10,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QSocketNotifier>
 #include <QTimer>
 
 #include <map>
@@ -54,6 +56,14 @@ public:
     bool record(const pl110::Address& address);
     const std::map<pl110::Address, std::int64_t>& forced() const { return m_forced; }
 
+    // Answers Modbus RTU requests (the datasheet's slave map) on a
+    // pseudo-terminal as slave `slave`, from the engine's memory, whether
+    // the simulation runs or stands; an empty string, or why it cannot.
+    QString serveModbus(int slave);
+    void stopServing();
+    // The device a client opens, empty when not serving.
+    QString modbusDevice() const;
+
     struct ScenarioRun {
         QString error; // the file could not be read, or the program has errors
         sim::ScenarioReport report;
@@ -74,6 +84,7 @@ Q_SIGNALS:
 private:
     void tick();
     void scanOnce();
+    void answerModbus();
     // An engine at power on with the user's inputs and forces, unless one runs
     // the current program already.
     QString prepare(bool powerOn);
@@ -82,6 +93,8 @@ private:
     std::unique_ptr<pl110::ScanEngine> m_engine;
     std::map<pl110::Address, std::int64_t> m_forced; // inputs set count too: the user holds them
     pl110::WaveformRecorder m_recorder;
+    std::unique_ptr<pl110::ModbusRtuServer> m_modbus;
+    std::unique_ptr<QSocketNotifier> m_modbusReadable;
     QTimer m_timer;
     QElapsedTimer m_clock;
     std::int64_t m_clockOffsetMs = 0; // virtual time minus wall-clock time since start

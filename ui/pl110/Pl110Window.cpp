@@ -20,6 +20,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QLabel>
 #include <QListWidget>
 #include <QLocale>
 #include <QMenu>
@@ -266,12 +267,36 @@ void Pl110Window::createActions() {
         applyTyping();
         simulationAnswer(m_simulation->reset());
     });
+    QAction* serve = action(tr("Serve &Modbus RTU"), "pl110ServeModbusAction");
+    serve->setCheckable(true);
+    serve->setStatusTip(tr("Answer Modbus RTU requests on a pseudo-terminal, as the PL110's "
+                           "serial port, from the simulated memory (slave 1)"));
+    auto* device = new QLabel(this);
+    device->setObjectName(QStringLiteral("pl110ModbusDevice"));
+    statusBar()->addPermanentWidget(device);
+    device->hide();
+    connect(serve, &QAction::toggled, this, [this, serve, device](bool on) {
+        applyTyping();
+        if (!on) {
+            m_simulation->stopServing();
+            device->hide();
+            return;
+        }
+        if (const QString error = m_simulation->serveModbus(1); !error.isEmpty()) {
+            statusBar()->showMessage(error, 8000);
+            const QSignalBlocker blocker(serve);
+            serve->setChecked(false);
+            return;
+        }
+        device->setText(tr("Modbus RTU: %1, slave 1").arg(m_simulation->modbusDevice()));
+        device->show();
+    });
     QAction* scenario = action(tr("Run Sce&nario..."), "pl110RunScenarioAction");
     scenario->setStatusTip(tr("Run a scenario file (.scn) from power on and list its results"));
     connect(scenario, &QAction::triggered, this, &Pl110Window::chooseScenario);
     simulation->addActions({m_start, m_stop, m_singleScan, m_reset});
     simulation->addSeparator();
-    simulation->addAction(scenario);
+    simulation->addActions({scenario, serve});
 
     QToolBar* tools = addToolBar(tr("Simulation"));
     tools->setObjectName(QStringLiteral("pl110ToolBar"));
