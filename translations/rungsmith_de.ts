@@ -3307,38 +3307,6 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <translation>Eine Variable zum Darstellen hinzufügen: eine Adresse oder ein Name</translation>
     </message>
     <message>
-        <source>Remove</source>
-        <translation>Entfernen</translation>
-    </message>
-    <message>
-        <source>Stop plotting the chosen variable</source>
-        <translation>Die gewählte Variable nicht mehr darstellen</translation>
-    </message>
-    <message>
-        <source>Zoom in: show less time (Ctrl+wheel)</source>
-        <translation>Vergrößern: weniger Zeit zeigen (Strg+Mausrad)</translation>
-    </message>
-    <message>
-        <source>Zoom out: show more time (Ctrl+wheel)</source>
-        <translation>Verkleinern: mehr Zeit zeigen (Strg+Mausrad)</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Einpassen</translation>
-    </message>
-    <message>
-        <source>Show the whole recording</source>
-        <translation>Die ganze Aufzeichnung zeigen</translation>
-    </message>
-    <message>
-        <source>Export VCD...</source>
-        <translation>VCD exportieren …</translation>
-    </message>
-    <message>
-        <source>Write the recording as a Value Change Dump, for GTKWave</source>
-        <translation>Die Aufzeichnung als Value Change Dump für GTKWave schreiben</translation>
-    </message>
-    <message>
         <source>Export VCD</source>
         <translation>VCD exportieren</translation>
     </message>

@@ -3304,38 +3304,6 @@ Its text page (F6) shows and edits it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Remove</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stop plotting the chosen variable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom in: show less time (Ctrl+wheel)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom out: show more time (Ctrl+wheel)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the whole recording</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export VCD...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write the recording as a Value Change Dump, for GTKWave</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Export VCD</source>
         <translation type="unfinished"></translation>
     </message>

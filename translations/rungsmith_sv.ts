@@ -3307,38 +3307,6 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <translation>Lägg till en variabel att rita: en adress eller ett namn</translation>
     </message>
     <message>
-        <source>Remove</source>
-        <translation>Ta bort</translation>
-    </message>
-    <message>
-        <source>Stop plotting the chosen variable</source>
-        <translation>Sluta rita den valda variabeln</translation>
-    </message>
-    <message>
-        <source>Zoom in: show less time (Ctrl+wheel)</source>
-        <translation>Zooma in: visa kortare tid (Ctrl+hjul)</translation>
-    </message>
-    <message>
-        <source>Zoom out: show more time (Ctrl+wheel)</source>
-        <translation>Zooma ut: visa längre tid (Ctrl+hjul)</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Anpassa</translation>
-    </message>
-    <message>
-        <source>Show the whole recording</source>
-        <translation>Visa hela inspelningen</translation>
-    </message>
-    <message>
-        <source>Export VCD...</source>
-        <translation>Exportera VCD …</translation>
-    </message>
-    <message>
-        <source>Write the recording as a Value Change Dump, for GTKWave</source>
-        <translation>Skriv inspelningen som en Value Change Dump, för GTKWave</translation>
-    </message>
-    <message>
         <source>Export VCD</source>
         <translation>Exportera VCD</translation>
     </message>

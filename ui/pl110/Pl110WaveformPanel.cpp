@@ -6,6 +6,7 @@
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 #include "shell/StatusColors.h"
+#include "sim/WaveformButtons.h"
 #include "sim/WaveformView.h"
 
 #include <QFileDialog>
@@ -22,31 +23,19 @@ Pl110WaveformPanel::Pl110WaveformPanel(Pl110Document* document, Pl110Simulation*
                                        QWidget* parent)
     : QWidget(parent), m_document(document), m_simulation(simulation),
       m_view(new WaveformView(&simulation->recorder(), this)), m_input(new QLineEdit(this)),
-      m_message(new QLabel(this)), m_remove(new QToolButton(this)) {
+      m_message(new QLabel(this)), m_remove(nullptr) {
     setObjectName(QStringLiteral("pl110WaveformPanel"));
     m_input->setObjectName(QStringLiteral("pl110WaveformInput"));
     m_input->setPlaceholderText(tr("Add a variable to plot: an address or a name"));
     m_input->setMinimumWidth(160);
     markAsError(m_message);
     m_message->hide();
-    const auto button = [this](const QString& text, const QString& tip) {
-        auto* created = new QToolButton(this);
-        created->setText(text);
-        created->setToolTip(tip);
-        return created;
-    };
-    m_remove->setText(tr("Remove"));
-    m_remove->setToolTip(tr("Stop plotting the chosen variable"));
-    m_remove->setEnabled(false);
-    QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
-    QToolButton* zoomOut =
-        button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
-    QToolButton* fit = button(tr("Fit"), tr("Show the whole recording"));
-    QToolButton* exportButton =
-        button(tr("Export VCD..."), tr("Write the recording as a Value Change Dump, for GTKWave"));
+    const WaveformButtons buttons = makeWaveformButtons(this, m_view);
+    m_remove = buttons.remove;
     auto* top = new QHBoxLayout;
     top->addWidget(m_input, 1);
-    for (QToolButton* b : {m_remove, zoomIn, zoomOut, fit, exportButton})
+    for (QToolButton* b :
+         {m_remove, buttons.zoomIn, buttons.zoomOut, buttons.fit, buttons.exportVcd})
         top->addWidget(b);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -70,12 +59,7 @@ Pl110WaveformPanel::Pl110WaveformPanel(Pl110Document* document, Pl110Simulation*
         m_remove->setEnabled(false);
         recordingChanged();
     });
-    connect(m_view, &WaveformView::selectionChanged, this,
-            [this](int row) { m_remove->setEnabled(row >= 0); });
-    connect(zoomIn, &QToolButton::clicked, m_view, &WaveformView::zoomIn);
-    connect(zoomOut, &QToolButton::clicked, m_view, &WaveformView::zoomOut);
-    connect(fit, &QToolButton::clicked, m_view, &WaveformView::zoomToFit);
-    connect(exportButton, &QToolButton::clicked, this, [this] {
+    connect(buttons.exportVcd, &QToolButton::clicked, this, [this] {
         if (const QString error = exportVcd(); !error.isEmpty())
             QMessageBox::warning(this, tr("Export VCD"), error);
     });

@@ -2,6 +2,7 @@
 #include "WaveformPanel.h"
 
 #include "SimulationSession.h"
+#include "WaveformButtons.h"
 #include "WaveformView.h"
 #include "document/ProjectDocument.h"
 #include "project/ProjectFile.h"
@@ -24,7 +25,7 @@ namespace rs::ui {
 WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
     : QWidget(parent), m_session(session), m_view(new WaveformView(&session->recorder(), this)),
       m_input(new QLineEdit(this)), m_completer(new QCompleter(this)), m_message(new QLabel(this)),
-      m_remove(new QToolButton(this)) {
+      m_remove(nullptr) {
     m_input->setObjectName(QStringLiteral("waveformInput"));
     m_input->setPlaceholderText(tr("Add a variable to plot"));
     m_input->setMinimumWidth(160);
@@ -36,29 +37,17 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
     markAsError(m_message);
     m_message->hide();
 
-    auto button = [this](const QString& text, const QString& tip) {
-        auto* created = new QToolButton(this);
-        created->setText(text);
-        created->setToolTip(tip);
-        return created;
-    };
-    m_remove->setText(tr("Remove"));
-    m_remove->setToolTip(tr("Stop plotting the chosen variable"));
-    m_remove->setEnabled(false);
-    QToolButton* removeAllButton =
-        button(tr("Remove All"), tr("Stop plotting every variable, also those a scenario added"));
+    const WaveformButtons buttons = makeWaveformButtons(this, m_view);
+    m_remove = buttons.remove;
+    auto* removeAllButton = new QToolButton(this);
+    removeAllButton->setText(tr("Remove All"));
+    removeAllButton->setToolTip(tr("Stop plotting every variable, also those a scenario added"));
     removeAllButton->setObjectName(QStringLiteral("removeAllTracesButton"));
-    QToolButton* zoomIn = button(QStringLiteral("+"), tr("Zoom in: show less time (Ctrl+wheel)"));
-    QToolButton* zoomOut =
-        button(QStringLiteral("\u2212"), tr("Zoom out: show more time (Ctrl+wheel)"));
-    QToolButton* fit = button(tr("Fit"), tr("Show the whole recording"));
-    QToolButton* exportButton = button(tr("Export VCD..."), tr("Write the recording as a Value "
-                                                               "Change Dump, for GTKWave"));
-    exportButton->setObjectName(QStringLiteral("exportVcdButton"));
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_input, 1);
-    for (QToolButton* b : {m_remove, removeAllButton, zoomIn, zoomOut, fit, exportButton})
+    for (QToolButton* b : {m_remove, removeAllButton, buttons.zoomIn, buttons.zoomOut, buttons.fit,
+                           buttons.exportVcd})
         top->addWidget(b);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -83,12 +72,7 @@ WaveformPanel::WaveformPanel(SimulationSession* session, QWidget* parent)
         m_remove->setEnabled(false);
     });
     connect(removeAllButton, &QToolButton::clicked, this, &WaveformPanel::removeAll);
-    connect(m_view, &WaveformView::selectionChanged, this,
-            [this](int row) { m_remove->setEnabled(row >= 0); });
-    connect(zoomIn, &QToolButton::clicked, m_view, &WaveformView::zoomIn);
-    connect(zoomOut, &QToolButton::clicked, m_view, &WaveformView::zoomOut);
-    connect(fit, &QToolButton::clicked, m_view, &WaveformView::zoomToFit);
-    connect(exportButton, &QToolButton::clicked, this, [this] {
+    connect(buttons.exportVcd, &QToolButton::clicked, this, [this] {
         const QString error = exportVcd();
         if (!error.isEmpty())
             QMessageBox::warning(this, tr("Export VCD"), error);
