@@ -644,7 +644,8 @@ ConditionReading readCondition(const Program& program, std::string_view text) {
         if (code.empty())
             throw LineError{1, "write a contact such as I3 or /I3, a comparison such as "
                                "(VW1 >= 10), NOT, P or N"};
-        LineReader reader(tokenize(code, column), 1, declaredNames(program));
+        const std::map<std::string, DeclaredName> names = declaredNames(program);
+        LineReader reader(tokenize(code, column), 1, names); // keeps a reference to the names
         reading.circuit = reader.condition();
     } catch (const LineError& bad) {
         reading.diagnostics.push_back({lang::Severity::Error, 1, bad.column, bad.message});
