@@ -12,11 +12,14 @@
 #include "pages/UnitPage.h"
 #include "pages/VariableTableModel.h"
 #include "pages/VariablesPage.h"
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110Window.h"
 #include "shell/ProjectTree.h"
 #include "text/ProgramEditor.h"
 #include "text/TextPage.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -159,6 +162,33 @@ TEST_F(ProjectWorkflowTest, NewProjectAndUnitFromTheDialogs) {
     EXPECT_EQ(window.projectTree()->itemFor({PageRef::Kind::Unit, document(), 3}), nullptr);
     redo();
     EXPECT_NE(window.projectTree()->itemFor({PageRef::Kind::Unit, document(), 3}), nullptr);
+}
+
+TEST_F(ProjectWorkflowTest, NewProjectForAPl110OpensItsWindowOnARunnableProgram) {
+    const int projectsBefore =
+        static_cast<int>(window.findChildren<rs::ui::ProjectDocument*>().size());
+    DialogDriver driver({[](QDialog& dialog) {
+        choose(child<QComboBox>(dialog, QStringLiteral("projectTargetCombo")),
+               QStringLiteral("Pixsys PL110 (one ladder PLC)"));
+        // The Pluto-only fields do not apply.
+        EXPECT_FALSE(child<QCheckBox>(dialog, QStringLiteral("includeSourceCheck"))->isEnabled());
+        typeInto(child<QLineEdit>(dialog, QStringLiteral("projectNameEdit")),
+                 QStringLiteral("Mixer"));
+        clickOk(dialog);
+    }});
+    action("newAction")->trigger();
+    ASSERT_TRUE(driver.done());
+    rs::ui::Pl110Window* opened = nullptr;
+    for (QWidget* widget : QApplication::topLevelWidgets())
+        if (auto* pl110 = qobject_cast<rs::ui::Pl110Window*>(widget))
+            opened = pl110;
+    ASSERT_NE(opened, nullptr);
+    EXPECT_TRUE(opened->document()->text().contains("$name Mixer"));
+    EXPECT_TRUE(opened->document()->isRunnable());
+    EXPECT_EQ(static_cast<int>(window.findChildren<rs::ui::ProjectDocument*>().size()),
+              projectsBefore); // no Pluto project was made
+    opened->document()->undoStack()->setClean();
+    opened->close();
 }
 
 TEST_F(ProjectWorkflowTest, IoOptionsOfferOnlyLegalChoicesAndUndo) {
