@@ -3763,6 +3763,10 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
         <source>%1 is plotted in the waveform</source>
         <translation>%1 wird im Signalverlauf dargestellt</translation>
     </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PlutoLexer</name>

@@ -3760,6 +3760,10 @@ Its text page (F6) shows and edits it.</source>
         <source>%1 is plotted in the waveform</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PlutoLexer</name>

@@ -3763,6 +3763,10 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>%1 is plotted in the waveform</source>
         <translation>%1 ritas i vågformen</translation>
     </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisk sparning misslyckades: %1</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PlutoLexer</name>

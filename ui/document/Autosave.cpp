@@ -63,9 +63,14 @@ void Autosave::setDirectory(const QString& directory) {
 }
 
 QString Autosave::write(const ProjectDocument& document) {
+    return write(document.autosaveId(), document.path(), document.displayName(),
+                 document.fileText());
+}
+
+QString Autosave::write(const QString& id, const QString& path, const QString& displayName,
+                        const QByteArray& text) {
     if (!QDir().mkpath(directory()))
         return QStringLiteral("cannot create %1").arg(directory());
-    const QString id = document.autosaveId();
     if (!locks().count(id)) {
         auto lock = lockFor(id);
         if (lock->tryLock(0))
@@ -74,8 +79,8 @@ QString Autosave::write(const ProjectDocument& document) {
     // The index first: a crash between the two writes leaves the index with
     // the previous copy (or none yet), never a copy that recovery cannot name.
     const QJsonObject info{
-        {QStringLiteral("path"), document.path()},
-        {QStringLiteral("name"), document.displayName()},
+        {QStringLiteral("path"), path},
+        {QStringLiteral("name"), displayName},
         {QStringLiteral("written"), QDateTime::currentDateTime().toString(Qt::ISODate)}};
     const QByteArray json = QJsonDocument(info).toJson();
     if (QString error = project::writeTextFile(
@@ -83,7 +88,6 @@ QString Autosave::write(const ProjectDocument& document) {
             std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
         !error.isEmpty())
         return error;
-    const QByteArray text = document.fileText();
     return project::writeTextFile(
         textPath(id), std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QByteArray>
 #include <QDateTime>
 #include <QList>
 #include <QString>
@@ -30,6 +31,10 @@ public:
 
     // Writes the document's copy; returns the error message, empty on success.
     static QString write(const ProjectDocument& document);
+    // The same for any document: its id, its file, its name and its text
+    // (a PL110 program's copy is its text; recovery tells the two apart).
+    static QString write(const QString& id, const QString& path, const QString& displayName,
+                         const QByteArray& text);
     static void remove(const QString& id);
     // Leaves the copy for recovery but lets go of its lock (the window goes
     // without its projects having been saved or closed).

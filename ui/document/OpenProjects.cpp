@@ -7,8 +7,10 @@
 #include "document/ProjectPaths.h"
 #include "document/ProtectedOpenDialog.h"
 #include "pages/NewProjectDialog.h"
+#include "pl110/Pl110Document.h"
 #include "pl110/Pl110Window.h"
 #include "pl110/ProgramFile.h"
+#include "pl110/ProgramText.h"
 #include "project/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProjectProperties.h"
@@ -442,6 +444,14 @@ int OpenProjects::recoverAutosaved() {
         const project::FileText file = project::readTextFile(copy.copyPath);
         if (!file.error.isEmpty())
             continue;
+        if (pl110::isPl110Text(file.text)) {
+            // A PL110 program's copy opens in a window of its own again.
+            auto* window = new Pl110Window(
+                Pl110Document::recover(QByteArray::fromStdString(file.text), copy.path, copy.id));
+            window->show();
+            ++recovered;
+            continue;
+        }
         ProjectDocument* document =
             ProjectDocument::fromText(QByteArray::fromStdString(file.text), m_window);
         document->setAutosaveId(copy.id);

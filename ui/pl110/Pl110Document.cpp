@@ -7,6 +7,9 @@
 
 #include <QFileInfo>
 #include <QUndoCommand>
+#include <QUuid>
+
+#include <utility>
 
 namespace rs::ui {
 
@@ -46,9 +49,10 @@ private:
     bool m_typed;
 };
 
-Pl110Document::Pl110Document(QObject* parent) : QObject(parent) {
+Pl110Document::Pl110Document(QObject* parent)
+    : QObject(parent), m_autosaveId(QUuid::createUuid().toString(QUuid::WithoutBraces)) {
     connect(&m_undo, &QUndoStack::cleanChanged, this,
-            [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
+            [this] { Q_EMIT modifiedChanged(isModified()); });
 }
 
 Pl110Document* Pl110Document::open(const QString& path, QString& error, QObject* parent) {
@@ -86,6 +90,16 @@ Pl110Document* Pl110Document::create(const QString& name, QObject* parent) {
     return document;
 }
 
+Pl110Document* Pl110Document::recover(const QByteArray& text, const QString& path,
+                                      const QString& autosaveId, QObject* parent) {
+    auto* document = new Pl110Document(parent);
+    document->m_path = path;
+    document->m_autosaveId = autosaveId;
+    document->m_recovered = true;
+    document->apply(text);
+    return document;
+}
+
 QString Pl110Document::displayName() const {
     if (!m_path.isEmpty())
         return QFileInfo(m_path).fileName();
@@ -117,12 +131,19 @@ void Pl110Document::setProgram(const pl110::Program& program, const QString& wha
     setText(QByteArray::fromStdString(pl110::printProgram(program)), what);
 }
 
+void Pl110Document::saved() {
+    const bool wasRecovered = std::exchange(m_recovered, false);
+    m_undo.setClean();
+    if (wasRecovered)
+        Q_EMIT modifiedChanged(false);
+}
+
 QString Pl110Document::save() {
     if (m_path.isEmpty())
         return tr("The program has no file yet: use Save As.");
     const QString error = project::writeTextFile(m_path, view(m_text));
     if (error.isEmpty())
-        m_undo.setClean();
+        saved();
     return error;
 }
 
@@ -131,7 +152,7 @@ QString Pl110Document::saveAs(const QString& path) {
     if (!error.isEmpty())
         return error;
     m_path = QFileInfo(path).absoluteFilePath();
-    m_undo.setClean();
+    saved();
     Q_EMIT pathChanged();
     return {};
 }

@@ -23,11 +23,17 @@ public:
     static Pl110Document* open(const QString& path, QString& error, QObject* parent = nullptr);
     // A new program with the given name, not yet saved anywhere.
     static Pl110Document* create(const QString& name, QObject* parent = nullptr);
+    // An autosaved copy taken back after a crash: modified, with its file
+    // (empty when it never had one) and its copy's id.
+    static Pl110Document* recover(const QByteArray& text, const QString& path,
+                                  const QString& autosaveId, QObject* parent = nullptr);
 
     QString path() const { return m_path; }
     QString displayName() const;
     QByteArray text() const { return m_text; }
-    bool isModified() const { return !m_undo.isClean(); }
+    bool isModified() const { return m_recovered || !m_undo.isClean(); }
+    // Names the document's autosaved copy (ui/document/Autosave).
+    QString autosaveId() const { return m_autosaveId; }
     QUndoStack* undoStack() { return &m_undo; }
 
     // The program as the text reads: lines with reading errors are left out.
@@ -62,6 +68,7 @@ private:
     friend class Pl110TextCommand;
     explicit Pl110Document(QObject* parent);
     void apply(const QByteArray& text);
+    void saved();
 
     QString m_path;
     QString m_name;
@@ -70,6 +77,8 @@ private:
     lang::Diagnostics m_diagnostics;
     bool m_readsWhole = true;
     QUndoStack m_undo;
+    QString m_autosaveId;
+    bool m_recovered = false; // modified until saved, whatever the undo stack says
 };
 
 } // namespace rs::ui

@@ -2,6 +2,7 @@
 #include "pl110/Pl110Window.h"
 
 #include "MarksSnapshot.h"
+#include "document/Autosave.h"
 #include "pl110/Address.h"
 #include "pl110/Pl110Document.h"
 #include "pl110/Pl110LadderView.h"
@@ -14,6 +15,7 @@
 #include "pl110/RungEditing.h"
 #include "pl110/Rungs.h"
 #include "shell/NamedIcon.h"
+#include "shell/Preferences.h"
 #include "text/ProgramEditor.h"
 
 #include <QCloseEvent>
@@ -103,6 +105,8 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
         if (!m_settingEditor)
             m_typing.start();
     });
+    connect(&m_autosave, &QTimer::timeout, this, &Pl110Window::autosaveNow);
+    m_autosave.start(Preferences::load().autosaveMinutes * 60 * 1000);
     m_liveRefresh.setSingleShot(true);
     m_liveRefresh.setInterval(kLiveRefreshMs);
     connect(&m_liveRefresh, &QTimer::timeout, this, &Pl110Window::refreshLive);
@@ -138,6 +142,10 @@ Pl110Window::Pl110Window(Pl110Document* document, QWidget* parent)
             m_simulation->record(declaration->variable.address);
     m_ladder->setFocus();
     resize(1180, 760);
+}
+
+Pl110Window::~Pl110Window() {
+    Autosave::release(m_document->autosaveId());
 }
 
 QString Pl110Window::openWindow(const QString& path) {
@@ -727,6 +735,7 @@ bool Pl110Window::save() {
         QMessageBox::warning(this, tr("Save"), error);
         return false;
     }
+    Autosave::remove(m_document->autosaveId());
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->path())),
                              5000);
     return true;
@@ -745,6 +754,7 @@ bool Pl110Window::saveAs() {
         QMessageBox::warning(this, tr("Save As"), error);
         return false;
     }
+    Autosave::remove(m_document->autosaveId());
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 5000);
     return true;
 }
@@ -761,9 +771,21 @@ bool Pl110Window::maySaveOrDiscard() {
     return answer == QMessageBox::Discard;
 }
 
+void Pl110Window::autosaveNow() {
+    applyTyping();
+    if (!m_document->isModified())
+        return;
+    const QString error = Autosave::write(m_document->autosaveId(), m_document->path(),
+                                          m_document->displayName(), m_document->text());
+    if (!error.isEmpty())
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 8000);
+}
+
 void Pl110Window::closeEvent(QCloseEvent* event) {
     if (maySaveOrDiscard()) {
         m_simulation->stop();
+        // Saved or discarded: the copy has done its work.
+        Autosave::remove(m_document->autosaveId());
         event->accept();
     } else {
         event->ignore();

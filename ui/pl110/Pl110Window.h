@@ -38,6 +38,9 @@ public:
 
     // Takes the document.
     explicit Pl110Window(Pl110Document* document, QWidget* parent = nullptr);
+    // Lets go of the autosaved copy's lock, leaving the copy for recovery
+    // when the window goes without being closed.
+    ~Pl110Window() override;
 
     // Opens a program in a window of its own, shown; an empty string, or why
     // it could not be opened.
@@ -55,6 +58,9 @@ public:
     QString runScenario(const QString& path);
     // Takes what was typed into the document now rather than after the pause.
     void applyTyping();
+    // Writes the autosaved copy of a modified program now (the timer does it
+    // every few minutes, as the preferences say).
+    void autosaveNow();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -102,6 +108,7 @@ private:
     Pl110WaveformPanel* m_waveform;
     QTimer m_typing;
     QTimer m_liveRefresh;
+    QTimer m_autosave;
     bool m_settingEditor = false;
 
     QAction* m_start = nullptr;

@@ -4,8 +4,11 @@
 #include "MessageBoxAnswerer.h"
 #include "document/Autosave.h"
 #include "document/ProjectDocument.h"
+#include "pl110/Pl110Document.h"
+#include "pl110/Pl110Window.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDir>
 #include <QFile>
 #include <QTest>
@@ -26,6 +29,38 @@ using AutosaveTest = WindowTest;
 // The copies on disk, whoever holds them.
 QStringList copyFiles() {
     return QDir(rs::ui::Autosave::directory()).entryList({QStringLiteral("*.sps")}, QDir::Files);
+}
+
+TEST_F(AutosaveTest, APl110ProgramsChangesAreRecoveredInAPl110Window) {
+    const QByteArray program = "$target PL110\nMAIN\nQ1 = I1\n";
+    const QString path = writeFile(QStringLiteral("station.sps"), program);
+    {
+        QString error;
+        auto* crashed = new rs::ui::Pl110Window(rs::ui::Pl110Document::open(path, error));
+        crashed->document()->setText(program + "Q2 = I2\n", QStringLiteral("Typing"));
+        crashed->autosaveNow();
+        ASSERT_EQ(copyFiles().size(), 1);
+        delete crashed; // never closed: the copy stays
+    }
+    EXPECT_EQ(readFile(path), program);
+    MessageBoxAnswerer recover(QMessageBox::Ok);
+    ASSERT_EQ(window.recoverAutosaved(), 1);
+    rs::ui::Pl110Window* recovered = nullptr;
+    for (QWidget* widget : QApplication::topLevelWidgets())
+        if (auto* pl110 = qobject_cast<rs::ui::Pl110Window*>(widget))
+            recovered = pl110;
+    ASSERT_NE(recovered, nullptr);
+    EXPECT_EQ(recovered->document()->text(), program + "Q2 = I2\n");
+    EXPECT_EQ(recovered->document()->path(), path);
+    EXPECT_TRUE(recovered->document()->isModified());
+    EXPECT_TRUE(window.currentDocument() == nullptr ||
+                !window.currentDocument()->path().endsWith(QStringLiteral("station.sps")));
+    // Saving puts the work where it belongs and the copy goes.
+    recovered->findChild<QAction*>(QStringLiteral("pl110SaveAction"))->trigger();
+    EXPECT_FALSE(recovered->document()->isModified());
+    EXPECT_EQ(readFile(path), program + "Q2 = I2\n");
+    EXPECT_TRUE(copyFiles().isEmpty());
+    recovered->close();
 }
 
 TEST_F(AutosaveTest, ACrashedSessionsChangesAreRecovered) {
