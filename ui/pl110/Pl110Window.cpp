@@ -311,6 +311,11 @@ void Pl110Window::createActions() {
     tools->addActions({saveAction, undo, redo});
     tools->addSeparator();
     tools->addActions({m_start, m_stop, m_singleScan, m_reset});
+    // The ladder's edits for the mouse, on a row of their own.
+    addToolBarBreak();
+    QToolBar* ladderTools = addToolBar(tr("Ladder"));
+    ladderTools->setObjectName(QStringLiteral("pl110LadderToolBar"));
+    ladderTools->addActions(m_ladderEdits);
     updateSimulationActions();
 }
 
@@ -399,6 +404,7 @@ void Pl110Window::createLadderActions(
     ladder->addActions({newRung, edit, after, before, parallel, remove});
     ladder->addSeparator();
     ladder->addActions({up, down});
+    m_ladderEdits = {newRung, edit, after, before, parallel, remove, up, down};
     ladder->addSeparator();
     ladder->addActions({toggle, plot, text});
     // Moving the selection: keys only.

@@ -115,6 +115,7 @@ private:
     QAction* m_stop = nullptr;
     QAction* m_singleScan = nullptr;
     QAction* m_reset = nullptr;
+    QList<QAction*> m_ladderEdits;
 };
 
 } // namespace rs::ui
