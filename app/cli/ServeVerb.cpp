@@ -9,6 +9,7 @@
 #include "pl110/ModbusSlave.h"
 #include "pl110/ProgramText.h"
 #include "pl110/ScanEngine.h"
+#include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 #include "sim/ScenarioRunner.h"
 #include "sim/Simulation.h"
@@ -82,11 +83,29 @@ private:
 };
 
 // serve PL110.sps --modbus-rtu: the program scanned in real time, its
-// Modbus RTU slave map on a pseudo-terminal (docs/pl110.md, "Modbus").
-int servePl110(const QString& path, const std::string& text, int slave, double speed) {
+// Modbus RTU slave map on a pseudo-terminal (docs/pl110.md, "Modbus"); with
+// a scenario, its `set` lines drive the inputs on the simulated clock.
+int servePl110(const QString& path, const std::string& text, int slave, double speed,
+               const QString& scenarioPath) {
     auto program = checkedPl110(path, text);
     if (!program)
         return Failed;
+    pl110::Scenario scenario;
+    if (!scenarioPath.isEmpty()) {
+        const project::FileText read = project::readTextFile(scenarioPath);
+        if (!read.error.isEmpty()) {
+            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(read.error));
+            return UsageOrIo;
+        }
+        scenario = pl110::parseScenario(read.text, pl110::ScenarioNames(*program));
+        if (!scenario.diagnostics.empty()) {
+            for (const auto& diagnostic : scenario.diagnostics)
+                std::fprintf(
+                    stderr, "%s\n",
+                    lang::formatDiagnostic(scenarioPath.toStdString(), diagnostic).c_str());
+            return Failed;
+        }
+    }
     std::string error;
     auto server = pl110::ModbusRtuServer::open(slave, error);
     if (!server) {
@@ -107,6 +126,21 @@ int servePl110(const QString& path, const std::string& text, int slave, double s
             });
     });
     const Pacer pacer([&] { return engine.timeMs(); }, speed);
+    {
+        // The scenario's scans hold the memory; the wait for the wall clock
+        // lets the Modbus thread answer.
+        std::unique_lock lock(memoryMutex);
+        const sim::ScenarioReport report = pl110::runScenario(
+            scenarioPath.toStdString(), scenario, engine,
+            [&](const pl110::ScanEngine&) {
+                lock.unlock();
+                pacer.waitForScan();
+                lock.lock();
+            },
+            [] { return g_stop.load(); });
+        for (const auto& failure : report.failures)
+            output.line(failure);
+    }
     while (pacer.waitForScan()) {
         std::lock_guard lock(memoryMutex);
         engine.scan();
@@ -145,7 +179,8 @@ int runServe(const Invocation& invocation) {
         if (!pl110::isPl110Text(text.text))
             return usage(QStringLiteral("--modbus-rtu serves a PL110 program ($target PL110); "
                                         "a Pluto project is served over Modbus TCP (--modbus)"));
-        return servePl110(path, text.text, slave, speed);
+        return servePl110(path, text.text, slave, speed,
+                          invocation.options.value(QStringLiteral("scenario")));
     }
     QString host = QStringLiteral("127.0.0.1");
     int port = 1502;

@@ -85,12 +85,16 @@ Scenario parseScenario(std::string_view text, const ScenarioNames& names) {
 
 sim::ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario,
                                 ScanEngine& engine,
-                                const std::function<void(const ScanEngine&)>& sample) {
+                                const std::function<void(const ScanEngine&)>& sample,
+                                const sim::CancelRequest& cancelled) {
     Plant plant(engine);
-    return sim::runScenarioOn(fileName, scenario, plant, [&](const Plant& now) {
-        if (sample)
-            sample(now.engine());
-    });
+    return sim::runScenarioOn(
+        fileName, scenario, plant,
+        [&](const Plant& now) {
+            if (sample)
+                sample(now.engine());
+        },
+        cancelled);
 }
 
 std::vector<Address> touchedBy(const Scenario& scenario) {

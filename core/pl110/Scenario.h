@@ -42,10 +42,11 @@ private:
 Scenario parseScenario(std::string_view text, const ScenarioNames& names);
 
 // Runs one scenario from power on; `sample` sees the engine at power on and
-// after every scan.
+// after every scan; `cancelled` is asked after every scan (a server's stop).
 sim::ScenarioReport runScenario(const std::string& fileName, const Scenario& scenario,
                                 ScanEngine& engine,
-                                const std::function<void(const ScanEngine&)>& sample = {});
+                                const std::function<void(const ScanEngine&)>& sample = {},
+                                const sim::CancelRequest& cancelled = {});
 
 // The variables a scenario sets, releases or expects.
 std::vector<Address> touchedBy(const Scenario& scenario);

@@ -245,4 +245,54 @@ TEST_F(Pl110CliTest, MbpollReadsTheOutputsAndWritesAVariableOverRtu) {
     EXPECT_TRUE(server.readAll().contains("stopped"));
 }
 
+TEST_F(Pl110CliTest, AScenarioDrivesTheInputsTheRtuClientSees) {
+    if (QStandardPaths::findExecutable(QStringLiteral("mbpoll")).isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (scripts/dev installs it)";
+    const QString program =
+        write(QStringLiteral("relay.sps"), "$target PL110\nMAIN\nQ1 = I1\nQ2 = I2\n");
+    // I1 comes on at once; I2 only after a minute of the simulated clock.
+    const QString scenario =
+        write(QStringLiteral("drive.scn"), "set I1 1\nrun 60s\nset I2 1\nrun 1s\nexpect Q2 1\n");
+    server.start(QStringLiteral(RUNGSMITH_CLI),
+                 {QStringLiteral("serve"), program, QStringLiteral("--modbus-rtu"),
+                  QStringLiteral("--scenario"), scenario});
+    ASSERT_TRUE(server.waitForStarted(5000));
+    QElapsedTimer waited;
+    waited.start();
+    while (!server.canReadLine() && waited.elapsed() < 10000)
+        server.waitForReadyRead(200);
+    const auto match =
+        QRegularExpression(QStringLiteral("^serving Modbus RTU on (/dev/\\S+) as slave 1$"))
+            .match(QString::fromUtf8(server.readLine()).trimmed());
+    ASSERT_TRUE(match.hasMatch());
+    const QStringList outputs = {QStringLiteral("-t"),   QStringLiteral("0"),  QStringLiteral("-r"),
+                                 QStringLiteral("2400"), QStringLiteral("-c"), QStringLiteral("2")};
+    QString answer;
+    waited.restart();
+    while (waited.elapsed() < 5000) {
+        answer = poll(match.captured(1), outputs);
+        if (answer.contains(QStringLiteral("[2400]: \t1")))
+            break;
+        QThread::msleep(50);
+    }
+    EXPECT_TRUE(answer.contains(QStringLiteral("[2400]: \t1"))) << answer.toStdString();
+    EXPECT_TRUE(answer.contains(QStringLiteral("[2401]: \t0"))) << answer.toStdString();
+    // Stopped in the middle of the scenario's minute: it ends at once.
+    ::kill(static_cast<pid_t>(server.processId()), SIGTERM);
+    ASSERT_TRUE(server.waitForFinished(10000));
+    EXPECT_EQ(server.exitCode(), 0);
+    EXPECT_TRUE(server.readAll().contains("stopped"));
+}
+
+TEST_F(Pl110CliTest, AScenarioWithErrorsIsNotServed) {
+    const QString program = write(QStringLiteral("relay.sps"), "$target PL110\nMAIN\nQ1 = I1\n");
+    const QString scenario = write(QStringLiteral("bad.scn"), "set I0 1\n");
+    server.start(QStringLiteral(RUNGSMITH_CLI),
+                 {QStringLiteral("serve"), program, QStringLiteral("--modbus-rtu"),
+                  QStringLiteral("--scenario"), scenario});
+    ASSERT_TRUE(server.waitForFinished(10000));
+    EXPECT_EQ(server.exitCode(), 1);
+    EXPECT_TRUE(server.readAllStandardError().contains("bad.scn:1:5: error:"));
+}
+
 } // namespace
