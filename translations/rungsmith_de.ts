@@ -3753,7 +3753,7 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     </message>
     <message>
         <source>Plot in &amp;Waveform</source>
-        <translation>&amp;Im Signalverlauf darstellen</translation>
+        <translation>Im Si&amp;gnalverlauf darstellen</translation>
     </message>
     <message>
         <source>Record the selected contact&apos;s or output&apos;s variable in the waveform</source>
@@ -3766,6 +3766,18 @@ Seine Textseite (F6) zeigt und bearbeitet ihn.</translation>
     <message>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>New Rung in &amp;INIT...</source>
+        <translation>Neues Netzwerk in &amp;INIT …</translation>
+    </message>
+    <message>
+        <source>Write a rung at the end of INIT, which runs once before the first scan</source>
+        <translation>Ein Netzwerk am Ende von INIT schreiben, das einmal vor dem ersten Zyklus läuft</translation>
+    </message>
+    <message>
+        <source>New Rung in INIT</source>
+        <translation>Neues Netzwerk in INIT</translation>
     </message>
 </context>
 <context>

@@ -3764,6 +3764,18 @@ Its text page (F6) shows and edits it.</source>
         <source>Autosave failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New Rung in &amp;INIT...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a rung at the end of INIT, which runs once before the first scan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New Rung in INIT</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PlutoLexer</name>

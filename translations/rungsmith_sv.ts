@@ -3767,6 +3767,18 @@ Dess textsida (F6) visar och redigerar den.</translation>
         <source>Autosave failed: %1</source>
         <translation>Automatisk sparning misslyckades: %1</translation>
     </message>
+    <message>
+        <source>New Rung in &amp;INIT...</source>
+        <translation>Nytt steg i &amp;INIT …</translation>
+    </message>
+    <message>
+        <source>Write a rung at the end of INIT, which runs once before the first scan</source>
+        <translation>Skriv ett steg i slutet av INIT, som körs en gång före första cykeln</translation>
+    </message>
+    <message>
+        <source>New Rung in INIT</source>
+        <translation>Nytt steg i INIT</translation>
+    </message>
 </context>
 <context>
     <name>rs::ui::PlutoLexer</name>

@@ -334,7 +334,13 @@ void Pl110Window::createLadderActions(
                                 {QKeySequence(Qt::Key_Insert)});
     newRung->setStatusTip(tr("Write a rung after the selected one: its output, '=' and its "
                              "condition"));
-    connect(newRung, &QAction::triggered, this, &Pl110Window::newRung);
+    connect(newRung, &QAction::triggered, this, [this] { this->newRung(false); });
+    QAction* newInitRung =
+        onLadder(action(tr("New Rung in &INIT..."), "pl110NewInitRungAction", {}),
+                 {QKeySequence(Qt::SHIFT | Qt::Key_Insert)});
+    newInitRung->setStatusTip(tr("Write a rung at the end of INIT, which runs once before the "
+                                 "first scan"));
+    connect(newInitRung, &QAction::triggered, this, [this] { this->newRung(true); });
     QAction* edit = onLadder(action(tr("&Edit..."), "pl110EditAction", {}),
                              {QKeySequence(Qt::Key_Return), QKeySequence(Qt::Key_Enter)});
     edit->setStatusTip(tr("Change the selected contact, or the selected rung as its line"));
@@ -401,7 +407,7 @@ void Pl110Window::createLadderActions(
         m_ladder->select(rungAtLine(line));
         m_ladder->setFocus();
     });
-    ladder->addActions({newRung, edit, after, before, parallel, remove});
+    ladder->addActions({newRung, newInitRung, edit, after, before, parallel, remove});
     ladder->addSeparator();
     ladder->addActions({up, down});
     m_ladderEdits = {newRung, edit, after, before, parallel, remove, up, down};
@@ -456,12 +462,12 @@ QString Pl110Window::readProblem(const lang::Diagnostics& diagnostics) {
     return tr("Column %1: %2").arg(first.column).arg(QString::fromStdString(first.message));
 }
 
-void Pl110Window::newRung() {
+void Pl110Window::newRung(bool intoInit) {
     if (!mayEditLadder())
         return;
     const pl110::Program& program = m_document->program();
     Pl110LineDialog dialog(
-        tr("New Rung"),
+        intoInit ? tr("New Rung in INIT") : tr("New Rung"),
         tr("The rung as its line is written: its output, '=' and its "
            "condition, for example Q1 = I1 * /I2"),
         QString(),
@@ -472,9 +478,15 @@ void Pl110Window::newRung() {
     if (dialog.exec() != QDialog::Accepted)
         return;
     pl110::Program edited = program;
-    const int after = m_ladder->selectedRung();
     const std::vector<pl110::NumberedRung> rungs = pl110::numberedRungs(program);
-    const bool init = after >= 1 && rungs[static_cast<std::size_t>(after - 1)].init;
+    // After the selected rung in its part; into INIT: after INIT's last rung.
+    int after = m_ladder->selectedRung();
+    bool init = after >= 1 && rungs[static_cast<std::size_t>(after - 1)].init;
+    if (intoInit) {
+        init = true;
+        after = static_cast<int>(
+            std::count_if(rungs.begin(), rungs.end(), [](const auto& rung) { return rung.init; }));
+    }
     const std::string refusal = pl110::insertRung(
         edited, after, *pl110::readRung(program, dialog.text().toStdString()).line, init);
     applyLadderEdit(tr("New Rung"), refusal, edited, after + 1);

@@ -76,7 +76,7 @@ private:
     void applyLadderEdit(const QString& what, const std::string& refusal,
                          const pl110::Program& edited, int select, std::uint16_t element = 0);
     static QString readProblem(const lang::Diagnostics& diagnostics);
-    void newRung();
+    void newRung(bool intoInit);
     void editSelected();
     void insertAtSelection(Insertion where);
     void deleteSelected();

@@ -408,6 +408,18 @@ TEST_F(Pl110LadderEditing, TheKeyboardWritesANewRungAfterTheSelectedOne) {
     EXPECT_EQ(ladder()->rungCount(), 9);
 }
 
+TEST_F(Pl110LadderEditing, ShiftInsertWritesARungAtTheEndOfInit) {
+    ladder()->select(5); // in MAIN
+    LineAnswer answer{QStringLiteral("(VW20 = 7)"), {}, {}, false};
+    DialogDriver driver({answerLine(answer)});
+    key(Qt::Key_Insert, Qt::ShiftModifier);
+    ASSERT_TRUE(driver.done());
+    EXPECT_EQ(rungLine(2), QStringLiteral("(VW20 = 7)"));
+    const auto rungs = rs::pl110::numberedRungs(document()->program());
+    EXPECT_TRUE(rungs[1].init);
+    EXPECT_EQ(ladder()->selectedRung(), 2);
+}
+
 TEST_F(Pl110LadderEditing, TextThatDoesNotReadIsRefusedInTheDialogWithItsColumn) {
     ladder()->select(2);
     const QByteArray before = document()->text();
