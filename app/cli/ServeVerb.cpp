@@ -82,6 +82,19 @@ private:
     Clock::time_point m_start;
 };
 
+int unreadable(const QString& error) {
+    std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
+    return UsageOrIo;
+}
+
+// A scenario with syntax errors is not served: its errors, and Failed.
+int badScenario(const QString& path, const lang::Diagnostics& diagnostics) {
+    for (const auto& diagnostic : diagnostics)
+        std::fprintf(stderr, "%s\n",
+                     lang::formatDiagnostic(path.toStdString(), diagnostic).c_str());
+    return Failed;
+}
+
 // serve PL110.sps --modbus-rtu: the program scanned in real time, its
 // Modbus RTU slave map on a pseudo-terminal (docs/pl110.md, "Modbus"); with
 // a scenario, its `set` lines drive the inputs on the simulated clock.
@@ -93,18 +106,11 @@ int servePl110(const QString& path, const std::string& text, int slave, double s
     pl110::Scenario scenario;
     if (!scenarioPath.isEmpty()) {
         const project::FileText read = project::readTextFile(scenarioPath);
-        if (!read.error.isEmpty()) {
-            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(read.error));
-            return UsageOrIo;
-        }
+        if (!read.error.isEmpty())
+            return unreadable(read.error);
         scenario = pl110::parseScenario(read.text, pl110::ScenarioNames(*program));
-        if (!scenario.diagnostics.empty()) {
-            for (const auto& diagnostic : scenario.diagnostics)
-                std::fprintf(
-                    stderr, "%s\n",
-                    lang::formatDiagnostic(scenarioPath.toStdString(), diagnostic).c_str());
-            return Failed;
-        }
+        if (!scenario.diagnostics.empty())
+            return badScenario(scenarioPath, scenario.diagnostics);
     }
     std::string error;
     auto server = pl110::ModbusRtuServer::open(slave, error);
@@ -216,18 +222,11 @@ int runServe(const Invocation& invocation) {
     const QString scenarioPath = invocation.options.value(QStringLiteral("scenario"));
     if (!scenarioPath.isEmpty()) {
         const project::FileText text = project::readTextFile(scenarioPath);
-        if (!text.error.isEmpty()) {
-            std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(text.error));
-            return UsageOrIo;
-        }
+        if (!text.error.isEmpty())
+            return unreadable(text.error);
         scenario = sim::parseScenario(text.text, sim::OperandNames(loaded.project));
-        if (!scenario.diagnostics.empty()) {
-            for (const auto& diagnostic : scenario.diagnostics)
-                std::fprintf(
-                    stderr, "%s\n",
-                    lang::formatDiagnostic(scenarioPath.toStdString(), diagnostic).c_str());
-            return Failed;
-        }
+        if (!scenario.diagnostics.empty())
+            return badScenario(scenarioPath, scenario.diagnostics);
     }
 
     std::string error;
