@@ -34,4 +34,20 @@ std::vector<NumberedRung> numberedRungs(const Program& program) {
     return rungs;
 }
 
+int rungAtLine(const Program& program, int line) {
+    int found = 1;
+    for (const NumberedRung& rung : numberedRungs(program))
+        if (rung.line->location.line <= line)
+            found = rung.number;
+    return found;
+}
+
+std::string declaredName(const Program& program, const Address& address) {
+    for (const Line& line : program.declarations)
+        if (const auto* declaration = std::get_if<NameDeclaration>(&line.body);
+            declaration && declaration->variable.address == address)
+            return declaration->name;
+    return {};
+}
+
 } // namespace rs::pl110

@@ -22,4 +22,11 @@ struct NumberedRung {
 // Points into the program, which must outlive the result.
 std::vector<NumberedRung> numberedRungs(const Program& program);
 
+// The number of the rung written at a text line (from 1), or of the last
+// rung above it; 1 when there is none above.
+int rungAtLine(const Program& program, int line);
+
+// The name a declaration gives the address, empty when it has none.
+std::string declaredName(const Program& program, const Address& address);
+
 } // namespace rs::pl110

@@ -51,6 +51,17 @@ std::vector<std::string> rungTexts(const Program& program) {
     return texts;
 }
 
+TEST(Pl110Rungs, ATextLineNamesTheRungWrittenThereOrAboveAndAnAddressItsName) {
+    const Program program = read(kStation);
+    EXPECT_EQ(rungAtLine(program, 1), 1);  // above every rung
+    EXPECT_EQ(rungAtLine(program, 4), 1);  // (VW0 = 1)
+    EXPECT_EQ(rungAtLine(program, 7), 2);  // Q1 = Start * I2
+    EXPECT_EQ(rungAtLine(program, 9), 2);  // the comment above Q2
+    EXPECT_EQ(rungAtLine(program, 12), 4); // Q3
+    EXPECT_EQ(declaredName(program, readAddress("I1").address), "Start");
+    EXPECT_EQ(declaredName(program, readAddress("I2").address), "");
+}
+
 TEST(Pl110RungEditing, ARungGoesAfterTheChosenOneOrFirstInItsPart) {
     Program program = read(kStation);
     ASSERT_EQ(insertRung(program, 2, rungLine(program, "Q4 = Start")), "");

@@ -192,16 +192,12 @@ const Pl110LadderView::PlacedRung* Pl110LadderView::rungAt(const QPointF& point)
 }
 
 QString Pl110LadderView::addressAt(const QPoint& point) const {
-    const QPointF content = contentPoint(point);
-    const PlacedRung* rung = rungAt(content);
-    if (!rung)
+    const PlacedRung* rung = rungAt(contentPoint(point));
+    const int index = rung ? elementAt(*rung, point) : -1;
+    if (index < 0)
         return {};
-    const QPointF inRung = content - QPointF(0, rung->top);
-    for (const ladder::ElementLayout& element : rung->layout.elements)
-        if (element.shape != ladder::Shape::Box && !element.address.isEmpty() &&
-            element.cell.contains(inRung))
-            return element.address;
-    return {};
+    const ladder::ElementLayout& element = rung->layout.elements[static_cast<std::size_t>(index)];
+    return element.shape != ladder::Shape::Box ? element.address : QString();
 }
 
 void Pl110LadderView::paintEvent(QPaintEvent*) {

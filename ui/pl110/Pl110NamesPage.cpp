@@ -164,9 +164,11 @@ void Pl110NamesPage::fillNames() {
         if (std::holds_alternative<pl110::NameDeclaration>(line.body))
             declared.push_back(&line);
     m_names->setRowCount(static_cast<int>(declared.size()) + 1);
+    m_addresses.clear();
     int row = 0;
     for (const pl110::Line* line : declared) {
         const auto& declaration = std::get<pl110::NameDeclaration>(line->body);
+        m_addresses.push_back(declaration.variable.address);
         m_names->setItem(row, AddressColumn,
                          readOnlyItem(utf8(pl110::toString(declaration.variable.address))));
         m_names->setItem(row, NameColumn, new QTableWidgetItem(utf8(declaration.name)));
@@ -203,10 +205,7 @@ void Pl110NamesPage::showValues(const pl110::ScanEngine* engine) {
             item->setText({});
             continue;
         }
-        const pl110::AddressReading reading =
-            pl110::readAddress(m_names->item(row, AddressColumn)->text().toStdString());
-        if (reading.shape == pl110::AddressReading::Shape::Address)
-            item->setText(QString::number(engine->value(reading.address)));
+        item->setText(QString::number(engine->value(m_addresses[static_cast<std::size_t>(row)])));
     }
     m_filling = false;
 }
@@ -261,11 +260,9 @@ void Pl110NamesPage::edited(QTableWidgetItem* item) {
 }
 
 void Pl110NamesPage::enterValue(QTableWidgetItem* item) {
-    const pl110::AddressReading reading =
-        pl110::readAddress(m_names->item(item->row(), AddressColumn)->text().toStdString());
     bool number = false;
     const qint64 value = item->text().trimmed().toLongLong(&number);
-    if (!m_live || reading.shape != pl110::AddressReading::Shape::Address) {
+    if (!m_live || item->row() >= static_cast<int>(m_addresses.size())) {
         Q_EMIT message(tr("Start the simulation to set values."));
         return;
     }
@@ -273,7 +270,7 @@ void Pl110NamesPage::enterValue(QTableWidgetItem* item) {
         Q_EMIT message(tr("“%1” is not a whole number").arg(item->text()));
         return;
     }
-    Q_EMIT valueEntered(reading.address, value);
+    Q_EMIT valueEntered(m_addresses[static_cast<std::size_t>(item->row())], value);
 }
 
 void Pl110NamesPage::chooseImport() {

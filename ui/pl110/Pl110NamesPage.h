@@ -7,9 +7,14 @@ class QLabel;
 class QTableWidget;
 class QTableWidgetItem;
 
+#ifndef Q_MOC_RUN
+#include "pl110/Address.h"
+#endif
+
+#include <vector>
+
 namespace rs::pl110 {
 class ScanEngine;
-struct Address;
 } // namespace rs::pl110
 
 namespace rs::ui {
@@ -51,6 +56,7 @@ private:
     QTableWidget* m_names;
     QTableWidget* m_areas;
     QLabel* m_problem;
+    std::vector<pl110::Address> m_addresses; // of the named rows, in order
     bool m_filling = false;
     bool m_live = false; // values are shown: the Value column takes new ones
 };

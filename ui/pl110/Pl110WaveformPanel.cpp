@@ -3,6 +3,7 @@
 
 #include "pl110/Pl110Document.h"
 #include "pl110/Pl110Simulation.h"
+#include "pl110/Rungs.h"
 #include "pl110/Scenario.h"
 #include "project/ProjectFile.h"
 #include "shell/StatusColors.h"
@@ -66,12 +67,9 @@ Pl110WaveformPanel::Pl110WaveformPanel(Pl110Document* document, Pl110Simulation*
     m_view->setLabels([this](int row) {
         const pl110::Address& address =
             m_simulation->recorder().traces()[static_cast<std::size_t>(row)].address;
-        QString label = QString::fromStdString(pl110::toString(address));
-        for (const pl110::Line& line : m_document->program().declarations)
-            if (const auto* declaration = std::get_if<pl110::NameDeclaration>(&line.body);
-                declaration && declaration->variable.address == address)
-                label += QStringLiteral("  ") + QString::fromStdString(declaration->name);
-        return label;
+        const std::string name = pl110::declaredName(m_document->program(), address);
+        return QString::fromStdString(pl110::toString(address)) +
+               (name.empty() ? QString() : QStringLiteral("  ") + QString::fromStdString(name));
     });
 }
 

@@ -404,7 +404,7 @@ void Pl110Window::createLadderActions(
         int line = 0;
         int index = 0;
         m_editor->getCursorPosition(&line, &index);
-        m_ladder->select(rungAtLine(line));
+        m_ladder->select(pl110::rungAtLine(m_document->program(), line + 1)); // editor lines from 0
         m_ladder->setFocus();
     });
     ladder->addActions({newRung, newInitRung, edit, after, before, parallel, remove});
@@ -422,15 +422,6 @@ void Pl110Window::createLadderActions(
             m_ladder->moveSelection(columns, rungs);
         });
     }
-}
-
-int Pl110Window::rungAtLine(int editorLine) const {
-    // The editor counts lines from 0; the rung whose line is at or above it.
-    int found = 1;
-    for (const pl110::NumberedRung& rung : pl110::numberedRungs(m_document->program()))
-        if (rung.line->location.line <= editorLine + 1)
-            found = rung.number;
-    return found;
 }
 
 bool Pl110Window::mayEditLadder() {

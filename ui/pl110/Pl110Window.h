@@ -81,7 +81,6 @@ private:
     void insertAtSelection(Insertion where);
     void deleteSelected();
     void moveSelectedRung(int direction);
-    int rungAtLine(int editorLine) const;
     void followDocument();
     void updateTitle();
     void updateSimulationActions();
