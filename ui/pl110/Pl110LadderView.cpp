@@ -7,6 +7,7 @@
 #include "pl110/Rungs.h"
 
 #include <QContextMenuEvent>
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QScrollBar>
@@ -18,6 +19,7 @@ namespace rs::ui {
 namespace {
 
 constexpr qreal kHeadingHeight = 30;
+constexpr qreal kHeadingIndent = 8;
 constexpr qreal kRungGap = 6;
 
 } // namespace
@@ -63,7 +65,11 @@ void Pl110LadderView::setProgram(const pl110::Program& program) {
     if (m_rungs.empty())
         m_headings.push_back(
             {0, tr("The program has no rungs yet: write them on the Program page.")});
-    m_size = QSizeF(std::max(width, 400.0), top + kHeadingHeight);
+    // The headings are as wide as their text: the page scrolls to show it whole.
+    const QFontMetricsF metrics(m_style.font(m_style.titlePixelSize, true));
+    for (const Heading& heading : m_headings)
+        width = std::max(width, kHeadingIndent + metrics.horizontalAdvance(heading.text));
+    m_size = QSizeF(width, top + kHeadingHeight);
     updateScrollBars();
     m_selectedRung = 0;
     select(std::clamp(selectedRung, 1, std::max(rungCount(), 1)), selectedNumber);
@@ -212,8 +218,9 @@ void Pl110LadderView::paintEvent(QPaintEvent*) {
     for (const Heading& heading : m_headings) {
         if (heading.top - dy > height || heading.top + kHeadingHeight - dy < 0)
             continue;
-        painter.drawText(QRectF(8 - dx, heading.top - dy, m_size.width(), kHeadingHeight),
-                         Qt::AlignLeft | Qt::AlignVCenter, heading.text);
+        painter.drawText(
+            QRectF(kHeadingIndent - dx, heading.top - dy, m_size.width(), kHeadingHeight),
+            Qt::AlignLeft | Qt::AlignVCenter, heading.text);
     }
     for (const PlacedRung& rung : m_rungs) {
         if (rung.top - dy > height)
