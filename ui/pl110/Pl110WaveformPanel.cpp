@@ -11,12 +11,10 @@
 #include "sim/WaveformView.h"
 
 #include <QFileDialog>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QToolButton>
-#include <QVBoxLayout>
 
 namespace rs::ui {
 
@@ -33,24 +31,9 @@ Pl110WaveformPanel::Pl110WaveformPanel(Pl110Document* document, Pl110Simulation*
     m_message->hide();
     const WaveformButtons buttons = makeWaveformButtons(this, m_view);
     m_remove = buttons.remove;
-    auto* top = new QHBoxLayout;
-    top->addWidget(m_input, 1);
-    for (QToolButton* b :
-         {m_remove, buttons.zoomIn, buttons.zoomOut, buttons.fit, buttons.exportVcd})
-        top->addWidget(b);
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addLayout(top);
-    layout->addWidget(m_message);
-    layout->addWidget(m_view, 1);
-
-    connect(m_input, &QLineEdit::returnPressed, this, [this] {
-        const QString error = add(m_input->text());
-        m_message->setText(error);
-        m_message->setVisible(!error.isEmpty());
-        if (error.isEmpty())
-            m_input->clear();
-    });
+    layOutWaveformPanel(this, m_input,
+                        {m_remove, buttons.zoomIn, buttons.zoomOut, buttons.fit, buttons.exportVcd},
+                        m_message, m_view, [this](const QString& word) { return add(word); });
     connect(m_remove, &QToolButton::clicked, this, [this] {
         const int row = m_view->selectedRow();
         const auto& traces = m_simulation->recorder().traces();

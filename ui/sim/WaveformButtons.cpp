@@ -4,7 +4,11 @@
 #include "sim/WaveformView.h"
 
 #include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 namespace rs::ui {
 
@@ -40,6 +44,28 @@ WaveformButtons makeWaveformButtons(QWidget* owner, WaveformView* view) {
     QObject::connect(view, &WaveformView::selectionChanged, buttons.remove,
                      [remove = buttons.remove](int row) { remove->setEnabled(row >= 0); });
     return buttons;
+}
+
+void layOutWaveformPanel(QWidget* panel, QLineEdit* input, const QList<QToolButton*>& buttons,
+                         QLabel* message, WaveformView* view,
+                         std::function<QString(const QString&)> add) {
+    auto* top = new QHBoxLayout;
+    top->addWidget(input, 1);
+    for (QToolButton* button : buttons)
+        top->addWidget(button);
+    auto* layout = new QVBoxLayout(panel);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(top);
+    layout->addWidget(message);
+    layout->addWidget(view, 1);
+    QObject::connect(input, &QLineEdit::returnPressed, panel,
+                     [input, message, add = std::move(add)] {
+                         const QString error = add(input->text());
+                         message->setText(error);
+                         message->setVisible(!error.isEmpty());
+                         if (error.isEmpty())
+                             input->clear();
+                     });
 }
 
 } // namespace rs::ui

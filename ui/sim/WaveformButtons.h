@@ -1,6 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QList>
+#include <QString>
+
+#include <functional>
+
+class QLabel;
+class QLineEdit;
 class QToolButton;
 class QWidget;
 
@@ -18,5 +25,12 @@ struct WaveformButtons {
 };
 
 WaveformButtons makeWaveformButtons(QWidget* owner, WaveformView* view);
+
+// Lays a waveform panel out: the input line and the buttons on top, the
+// message, the view. Return in the input adds what it names; `add` returns
+// why not, which the message shows.
+void layOutWaveformPanel(QWidget* panel, QLineEdit* input, const QList<QToolButton*>& buttons,
+                         QLabel* message, WaveformView* view,
+                         std::function<QString(const QString&)> add);
 
 } // namespace rs::ui
