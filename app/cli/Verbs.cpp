@@ -30,7 +30,9 @@ int runCheck(const QString& path, const QStringList& libraryFiles,
     LoadedProject loaded = loadProject(path, libraryFiles);
     if (loaded.status != Ok)
         return loaded.status;
-    compiler::CompileResult result = compiled(loaded, options);
+    compiler::CompileResult result =
+        blocks::compileProject(loaded.project, loaded.diagnostics, options, loaded.text,
+                               compiler::Output::DiagnosticsOnly);
     printDiagnostics(path, result.diagnostics);
     return summarize(result.errors(), streams);
 }

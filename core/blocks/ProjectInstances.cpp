@@ -139,13 +139,13 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics,
                                        const compiler::CheckOptions& options,
-                                       std::string_view readFrom) {
+                                       std::string_view readFrom, compiler::Output output) {
     if (lang::errorCount(readDiagnostics) > 0) {
         compiler::CompileResult failed;
         failed.diagnostics = readDiagnostics;
         return failed;
     }
-    compiler::CompileResult result = compiler::compile(project, options, readFrom);
+    compiler::CompileResult result = compiler::compile(project, options, readFrom, output);
     result.diagnostics.insert(result.diagnostics.begin(), readDiagnostics.begin(),
                               readDiagnostics.end());
     lang::sortByPlace(result.diagnostics);

@@ -70,6 +70,7 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
 compiler::CompileResult compileProject(const project::Project& project,
                                        const lang::Diagnostics& readDiagnostics,
                                        const compiler::CheckOptions& options = {},
-                                       std::string_view readFrom = {});
+                                       std::string_view readFrom = {},
+                                       compiler::Output output = compiler::Output::Images);
 
 } // namespace rs::blocks

@@ -16,8 +16,33 @@
 
 namespace rs::compiler {
 
+namespace {
+
+// A unit's image larger than a Pluto holds is an error at its code's header.
+// Encoding (and compressing the source) only to measure is needed just near
+// the limit.
+bool fitsTheUnit(const UnitImage& image, const UnitSetup& unit, const UnitSetups& checked,
+                 lang::Diagnostics& diagnostics) {
+    const std::size_t size =
+        encodedSizeBound(image) > kMaxUnitImageBytes ? encodeImage(image).size() : 0;
+    if (size <= kMaxUnitImageBytes)
+        return true;
+    const auto original = checked.find(unit.station);
+    const lang::SourceLocation at = original != checked.end() && original->second.program
+                                        ? original->second.program->header.location
+                                        : lang::SourceLocation{};
+    diagnostics.push_back({lang::Severity::Error, at.line, at.column,
+                           "program of unit " + std::to_string(unit.station) + " is " +
+                               std::to_string(size) + " bytes; a Pluto " +
+                               std::string(unit.type->display) + " holds at most " +
+                               std::to_string(kMaxUnitImageBytes) + " bytes"});
+    return false;
+}
+
+} // namespace
+
 CompileResult compile(const project::Project& project, const CheckOptions& options,
-                      std::string_view readFrom) {
+                      std::string_view readFrom, Output output) {
     CompileResult result;
     UnitSetups units = collectUnits(project.program, result.diagnostics);
     collectExports(project, units, result.diagnostics);
@@ -29,6 +54,22 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     lang::sortByPlace(result.diagnostics);
     if (result.errors())
         return result;
+    if (output == Output::DiagnosticsOnly) {
+        // Only the size of each image can still be an error; the canonical
+        // text counts only when the images carry it.
+        const std::string canonical =
+            project.includeSource ? project::writeProject(project) : std::string();
+        for (const auto& [station, unit] : units) {
+            if (!unit.program || (options.onlyUnit && options.onlyUnit->station != station))
+                continue;
+            UnitImage image = generateCode(unit);
+            addSetup(image, unit, project);
+            image.source = canonical;
+            fitsTheUnit(image, unit, units, result.diagnostics);
+        }
+        lang::sortByPlace(result.diagnostics);
+        return result;
+    }
     const std::string canonical = project::writeProject(project);
     const std::uint32_t sourceCrc = crc32(canonical);
     // The code is generated from the canonical text read back, so the line
@@ -54,22 +95,8 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         image.sourceCrc = sourceCrc;
         if (project.includeSource)
             image.source = canonical;
-        // Encoding (and compressing the source) only to measure is needed
-        // just near the limit.
-        const std::size_t size =
-            encodedSizeBound(image) > kMaxUnitImageBytes ? encodeImage(image).size() : 0;
-        if (size > kMaxUnitImageBytes) {
-            const auto original = units.find(station);
-            const lang::SourceLocation at = original != units.end() && original->second.program
-                                                ? original->second.program->header.location
-                                                : lang::SourceLocation{};
-            result.diagnostics.push_back({lang::Severity::Error, at.line, at.column,
-                                          "program of unit " + std::to_string(station) + " is " +
-                                              std::to_string(size) + " bytes; a Pluto " +
-                                              std::string(unit.type->display) + " holds at most " +
-                                              std::to_string(kMaxUnitImageBytes) + " bytes"});
+        if (!fitsTheUnit(image, unit, units, result.diagnostics))
             continue;
-        }
         result.images.push_back(std::move(image));
     }
     result.projectSignature = projectSignature(result.signatures);
@@ -82,6 +109,14 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         lang::sortByPlace(result.diagnostics);
     }
     return result;
+}
+
+UnitScope unitScope(const project::Project& project, int station, const CheckOptions& options) {
+    lang::Diagnostics ignored; // the whole check reports them
+    UnitSetups units = collectUnits(project.program, ignored);
+    collectExports(project, units, ignored);
+    collectSystemCalls(project.program, units, ignored);
+    return {station, usedByOtherUnits(project.program, units, options, station)};
 }
 
 CompileResult compileText(std::string_view text, const CheckOptions& options) {

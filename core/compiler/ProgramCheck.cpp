@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <set>
+#include <unordered_set>
 
 namespace rs::compiler {
 
@@ -75,15 +76,28 @@ struct Write {
 class Checker {
 public:
     Checker(const lang::Document& document, const UnitSetups& units, const CheckOptions& options)
-        : m_document(document), m_units(units), m_options(options) {}
+        : m_document(document), m_units(units), m_options(options),
+          m_scope(options.onlyUnit ? &*options.onlyUnit : nullptr) {}
 
     lang::Diagnostics run() {
+        if (m_scope)
+            for (const Address& a : m_scope->usedByOtherUnits) {
+                m_used.insert(a);
+                m_usedStorage.insert(storage(a));
+            }
         for (const auto& [station, unit] : m_units)
-            if (unit.program)
+            if (unit.program && (!m_scope || station == m_scope->station))
                 checkUnit(unit);
         warnUnusedNames();
         return std::move(m_diagnostics);
     }
+
+    // A unit's checks for the variables it uses (used()), its findings dropped.
+    void checkUnitAlone(const UnitSetup& unit) {
+        checkUnit(unit);
+        m_diagnostics.clear();
+    }
+    const std::unordered_set<Address>& used() const { return m_used; }
 
 private:
     void error(SourceLocation at, std::string message) {
@@ -338,7 +352,6 @@ private:
         if (!checkOperand(a.target, Use::WriteWord))
             return;
         const bool set3 = m_unit->instructionSet >= 3;
-        const std::string targetText = shown(a.target);
         switch (a.op) {
         case lang::AssignOp::MulAssign:
         case lang::AssignOp::DivAssign:
@@ -365,7 +378,7 @@ private:
                             (a.op == lang::AssignOp::Binary && a.binary == lang::BinaryOp::Div);
         if (divide) {
             if (isDoubleWord(a.target.address))
-                error(a.target.location, targetText +
+                error(a.target.location, shown(a.target) +
                                              ": a double register cannot be divided; "
                                              "divide into a register, as in (R0.1 = DR0.2 / R0.4)");
             const lang::Value& divisor = a.op == lang::AssignOp::DivAssign ? a.left : a.right;
@@ -442,9 +455,8 @@ private:
         m_used.insert(a);
         m_usedStorage.insert(storage(a));
         const SourceLocation at = operand.location;
-        const std::string name = shown(operand);
         if (a.unit > 31) {
-            error(at, name + " belongs to unit " + std::to_string(a.unit) +
+            error(at, shown(operand) + " belongs to unit " + std::to_string(a.unit) +
                           ", but stations are numbered 0-31");
             return false;
         }
@@ -455,7 +467,7 @@ private:
         if (a.kind == AddressKind::DoubleRegister || a.kind == AddressKind::DoubleRegisterLow ||
             a.kind == AddressKind::DoubleRegisterHigh) {
             if (a.index % 2 != 0) {
-                error(at, name + ": a double register has an even number (DR" +
+                error(at, shown(operand) + ": a double register has an even number (DR" +
                               std::to_string(a.unit) + "." + std::to_string(a.index - 1) + " is R" +
                               std::to_string(a.unit) + "." + std::to_string(a.index - 1) +
                               " and R" + std::to_string(a.unit) + "." + std::to_string(a.index) +
@@ -466,7 +478,7 @@ private:
         if (!target::hasVariable(*unit.type, a, unit.instructionSet)) {
             const bool moreWithSet3 = a.kind == AddressKind::Memory && unit.instructionSet < 3 &&
                                       a.index < target::memoryCount(*unit.type, 3);
-            error(at, name + " does not exist on unit " + std::to_string(a.unit) + ", " +
+            error(at, shown(operand) + " does not exist on unit " + std::to_string(a.unit) + ", " +
                           target::withArticle(*unit.type) +
                           (moreWithSet3 ? " with instruction set 2" : ""));
             return false;
@@ -488,12 +500,12 @@ private:
         const bool write = use == Use::WriteBit || use == Use::WriteWord;
         if (a.unit != m_unit->station) {
             if (write) {
-                error(at, name + " belongs to unit " + std::to_string(a.unit) +
+                error(at, shown(operand) + " belongs to unit " + std::to_string(a.unit) +
                               "; a unit writes only its own variables");
                 return false;
             }
             if (!target::isGlobal(*unit.type, a) && !isExported(unit, a)) {
-                error(at, name + " is local to unit " + std::to_string(a.unit) +
+                error(at, shown(operand) + " is local to unit " + std::to_string(a.unit) +
                               " and not exported; other units cannot read it");
                 return false;
             }
@@ -534,12 +546,11 @@ private:
 
     bool checkWritable(const Operand& operand, const UnitSetup& unit) {
         const Address& a = operand.address;
-        const std::string name = shown(operand);
         switch (a.kind) {
         case AddressKind::Input:
         case AddressKind::AnalogInput:
         case AddressKind::AsiInput:
-            error(operand.location, name + " is an input; the program cannot write it");
+            error(operand.location, shown(operand) + " is an input; the program cannot write it");
             return false;
         case AddressKind::SystemMemory:
         case AddressKind::SystemRegister: {
@@ -548,7 +559,7 @@ private:
                 return true;
             error(
                 operand.location,
-                name +
+                shown(operand) +
                     (system && lang::foldName(operand.name) != lang::foldName(system->name)
                          ? " (" + std::string(system->name) + ")"
                          : std::string()) +
@@ -584,7 +595,6 @@ private:
     void checkTerminal(const Operand& operand, const UnitSetup& unit, Use use) {
         const bool write = use == Use::WriteBit || use == Use::WriteWord;
         const Address& a = operand.address;
-        const std::string name = shown(operand);
         const auto* type = unit.type;
         const TerminalDeclaration* declared = nullptr;
         switch (a.kind) {
@@ -614,16 +624,16 @@ private:
         const std::string terminal = "terminal " + std::to_string(a.index);
         if (a.kind == AddressKind::Input && declared->kind == AddressKind::Output)
             error(operand.location,
-                  name + ": " + terminal + " is declared as an output at line " + line);
+                  shown(operand) + ": " + terminal + " is declared as an output at line " + line);
         else if (a.kind == AddressKind::Output && declared->kind == AddressKind::Input)
-            error(operand.location, name + ": " + terminal + " is declared as an input at line " +
-                                        line +
+            error(operand.location, shown(operand) + ": " + terminal +
+                                        " is declared as an input at line " + line +
                                         (write ? ""
                                                : "; read the input I" + std::to_string(a.unit) +
                                                      "." + std::to_string(a.index) + " instead"));
         else if (a.kind == AddressKind::InputOutput && declared->kind != AddressKind::InputOutput)
             error(operand.location,
-                  name + ": " + terminal + " is declared as an " +
+                  shown(operand) + ": " + terminal + " is declared as an " +
                       (declared->kind == AddressKind::Input ? "input" : "output") + " at line " +
                       line + ", not as an illuminated push button (IQ)");
     }
@@ -710,14 +720,17 @@ private:
                                                             lang::toString(name->variable.address) +
                                                             ") is named but never used");
         };
-        scan(m_document.preamble);
+        if (!m_scope)
+            scan(m_document.preamble);
         for (const auto& program : m_document.units)
-            scan(program.declarations);
+            if (!m_scope || program.station() == m_scope->station)
+                scan(program.declarations);
     }
 
     const lang::Document& m_document;
     const UnitSetups& m_units;
     const CheckOptions& m_options;
+    const UnitScope* m_scope;
     lang::Diagnostics m_diagnostics;
 
     const UnitSetup* m_unit = nullptr;
@@ -727,8 +740,8 @@ private:
     std::map<Address, std::vector<Write>> m_coils;
     std::map<Address, SourceLocation> m_latches;
     std::set<Address> m_coilAndLatch;
-    std::set<Address> m_used;        // as used
-    std::set<Address> m_usedStorage; // the registers those belong to
+    std::unordered_set<Address> m_used;        // as used
+    std::unordered_set<Address> m_usedStorage; // the registers those belong to
     std::set<Address> m_unconfigured;
     std::set<int> m_otherProjectUnitsWarned; // stations not in the project that this unit reads
 };
@@ -738,6 +751,18 @@ private:
 lang::Diagnostics checkProgram(const lang::Document& document, const UnitSetups& units,
                                const CheckOptions& options) {
     return Checker(document, units, options).run();
+}
+
+std::vector<Address> usedByOtherUnits(const lang::Document& document, const UnitSetups& units,
+                                      const CheckOptions& options, int station) {
+    // The checks themselves say what counts as a use (an operand checked).
+    Checker checker(document, units, options);
+    for (const auto& [other, unit] : units)
+        if (unit.program && other != station)
+            checker.checkUnitAlone(unit);
+    std::vector<Address> used(checker.used().begin(), checker.used().end());
+    std::sort(used.begin(), used.end());
+    return used;
 }
 
 } // namespace rs::compiler

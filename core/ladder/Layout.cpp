@@ -305,4 +305,16 @@ NetworkLayout layoutNetwork(const Network& network, const LayoutContext& context
     return Layouter(network, context).run();
 }
 
+void moveLayout(NetworkLayout& layout, const LayoutContext& from, const LayoutContext& to) {
+    const std::uint32_t shift = to.firstStatement - from.firstStatement; // modulo 2^32
+    for (auto& element : layout.elements)
+        element.statement += shift;
+    for (auto& wire : layout.wires)
+        if (wire.feed.kind != PowerFeed::Kind::None)
+            wire.feed.statement += shift;
+    for (auto& text : layout.texts)
+        if (text.role == TextLayout::Role::Title)
+            text.text = to.title.isEmpty() ? QStringLiteral("Network %1").arg(to.number) : to.title;
+}
+
 } // namespace rs::ladder

@@ -31,6 +31,7 @@ struct LayoutMetrics {
     qreal charWidth = 7;    // a character of running text, to size the comment column
     qreal margin = 8;
     int minimumConditionColumns = 2;
+    friend bool operator==(const LayoutMetrics&, const LayoutMetrics&) = default;
 };
 
 struct ElementLayout {
@@ -58,6 +59,7 @@ struct ElementLayout {
     QString text;      // inside a box: "TON", ">= 4", "+= 77"
     QRectF nameRect;
     QRectF addressRect;
+    friend bool operator==(const ElementLayout&, const ElementLayout&) = default;
 };
 
 // Where the power on a wire comes from.
@@ -70,12 +72,14 @@ struct PowerFeed {
     Kind kind = Kind::None;
     std::uint32_t statement = 0;
     std::vector<std::uint16_t> elements;
+    friend bool operator==(const PowerFeed&, const PowerFeed&) = default;
 };
 
 struct WireLayout {
     QLineF line;
     PowerFeed feed;
     bool rail = false; // a part of a rail, drawn heavier than a wire
+    friend bool operator==(const WireLayout&, const WireLayout&) = default;
 };
 
 struct TextLayout {
@@ -88,6 +92,7 @@ struct TextLayout {
     Role role = Role::Title;
     QRectF rect;
     QString text;
+    friend bool operator==(const TextLayout&, const TextLayout&) = default;
 };
 
 // One pin of a block's box: its name inside the box, a short wire out of
@@ -107,6 +112,7 @@ struct PinLayout {
     QRectF contactRect;                   // the power pin's contact, on the rung
     QRectF nameRect;    // the operand's name (above the stub), or for the power pin its contact's
     QRectF operandRect; // the operand (below the stub)
+    friend bool operator==(const PinLayout&, const PinLayout&) = default;
 };
 
 // A block network's box (blocks.md): the block's name at its top, inputs on
@@ -116,6 +122,7 @@ struct BlockLayout {
     QString type;
     QRectF typeRect;
     std::vector<PinLayout> pins;
+    friend bool operator==(const BlockLayout&, const BlockLayout&) = default;
 };
 
 struct NetworkLayout {
@@ -127,6 +134,7 @@ struct NetworkLayout {
     std::vector<WireLayout> wires;
     std::vector<TextLayout> texts;
     std::optional<BlockLayout> block; // a block network's box; it has no elements
+    friend bool operator==(const NetworkLayout&, const NetworkLayout&) = default;
 };
 
 struct LayoutContext {
@@ -151,5 +159,11 @@ inline constexpr qsizetype kLongestDrawnText = 400;
 // each as wide as the widest; outputs line up at the right of the widest
 // condition of the network, stacked when a rung has several.
 NetworkLayout layoutNetwork(const Network& network, const LayoutContext& context);
+
+// The layout of the same network at another place in its unit: its title
+// and its statements' numbers as `to` gives them, `from` the context it was
+// laid out with. Nothing else depends on them, so nothing is laid out again:
+// an edit above a network moves it without a new layout.
+void moveLayout(NetworkLayout& layout, const LayoutContext& from, const LayoutContext& to);
 
 } // namespace rs::ladder

@@ -2,7 +2,6 @@
 #include "Address.h"
 
 #include <array>
-#include <cctype>
 
 namespace rs::lang {
 
@@ -33,8 +32,12 @@ constexpr std::array<PrefixEntry, 13> kPrefixes{{
 bool isDigit(char c) {
     return c >= '0' && c <= '9';
 }
+bool isAsciiLetter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+// Addresses are ASCII: other letters are never part of a prefix.
 char upper(char c) {
-    return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
 }
 
 // Reads a run of digits at pos; returns false when there is none or it is too long.
@@ -102,15 +105,17 @@ bool Address::isWord() const {
 AddressWord readAddressWord(std::string_view word) {
     AddressWord result;
     size_t pos = 0;
-    while (pos < word.size() && std::isalpha(static_cast<unsigned char>(word[pos])))
+    while (pos < word.size() && isAsciiLetter(word[pos]))
         ++pos;
     std::string_view letters = word.substr(0, pos);
     if (letters.empty() || pos >= word.size() || !isDigit(word[pos]))
         return result;
     const PrefixEntry* prefix = nullptr;
     for (const auto& entry : kPrefixes)
-        if (equalsUpper(letters, entry.upper))
+        if (equalsUpper(letters, entry.upper)) {
             prefix = &entry;
+            break;
+        }
     if (!prefix)
         return result;
     // Letters and digits with no dot ("M10", "Stop2") are names, not addresses.
@@ -122,22 +127,24 @@ AddressWord readAddressWord(std::string_view word) {
         result.error = std::move(message);
         return result;
     };
-    const std::string shown(word);
+    const auto shown = [word] {
+        return std::string(word);
+    }; // for messages only
     bool tooLong = false;
     Address address;
     address.kind = prefix->kind;
     readNumber(word, pos, address.unit, tooLong);
     if (pos >= word.size() || word[pos] != '.')
-        return malformed("malformed address '" + shown + "': expected '.' after the unit number");
+        return malformed("malformed address '" + shown() + "': expected '.' after the unit number");
     ++pos;
     if (!readNumber(word, pos, address.index, tooLong))
-        return malformed("malformed address '" + shown + "': expected a number after '.'");
+        return malformed("malformed address '" + shown() + "': expected a number after '.'");
     if (tooLong)
-        return malformed("number too large in address '" + shown + "'");
+        return malformed("number too large in address '" + shown() + "'");
 
     auto finish = [&]() {
         if (pos != word.size())
-            return malformed("malformed address '" + shown + "'");
+            return malformed("malformed address '" + shown() + "'");
         result.shape = AddressWord::Shape::Variable;
         result.address = address;
         return result;
@@ -149,7 +156,7 @@ AddressWord readAddressWord(std::string_view word) {
             ++pos;
             StepAddress step{address.unit, address.index, 0};
             if (!readNumber(word, pos, step.step, tooLong) || tooLong || pos != word.size())
-                return malformed("malformed step header '" + shown +
+                return malformed("malformed step header '" + shown() +
                                  "': expected S<unit>.<sequence>_<step>");
             result.shape = AddressWord::Shape::Step;
             result.step = step;
@@ -160,7 +167,7 @@ AddressWord readAddressWord(std::string_view word) {
         if (pos < word.size() && word[pos] == '.') {
             ++pos;
             if (!readNumber(word, pos, address.bit, tooLong) || tooLong)
-                return malformed("malformed register bit '" + shown +
+                return malformed("malformed register bit '" + shown() +
                                  "': expected R<unit>.<register>.<bit>");
             address.kind = AddressKind::RegisterBit;
         }
@@ -173,7 +180,7 @@ AddressWord readAddressWord(std::string_view word) {
             else if (equalsUpper(half, "HI"))
                 address.kind = AddressKind::DoubleRegisterHigh;
             else
-                return malformed("malformed double register '" + shown +
+                return malformed("malformed double register '" + shown() +
                                  "': only .Lo or .Hi may follow");
             pos = word.size();
         }
@@ -187,10 +194,10 @@ AddressWord readAddressWord(std::string_view word) {
         if (pos < word.size() && word[pos] == '.') {
             ++pos;
             if (!readNumber(word, pos, address.bit, tooLong) || tooLong)
-                return malformed("malformed AS-i address '" + shown + "': expected a bit number");
+                return malformed("malformed AS-i address '" + shown() + "': expected a bit number");
         }
         if ((address.asiB || prefix->kind == AddressKind::AsiOutput) && address.bit < 0)
-            return malformed("malformed AS-i address '" + shown +
+            return malformed("malformed AS-i address '" + shown() +
                              "': expected a bit number, as in " +
                              std::string(addressPrefix(prefix->kind)) + "0.1.1");
         return finish();

@@ -3,6 +3,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,3 +79,16 @@ std::string toString(const StepAddress& step);
 std::string_view addressPrefix(AddressKind kind);
 
 } // namespace rs::lang
+
+// For hashed sets of addresses: every field, in one word.
+namespace std {
+template <> struct hash<rs::lang::Address> {
+    size_t operator()(const rs::lang::Address& a) const noexcept {
+        const auto field = [](int value, int shift) {
+            return static_cast<uint64_t>(static_cast<uint32_t>(value)) << shift;
+        };
+        return hash<uint64_t>{}(field(static_cast<int>(a.kind), 56) ^ field(a.unit, 48) ^
+                                field(a.index, 16) ^ field(a.bit + 1, 4) ^ (a.asiB ? 1U : 0U));
+    }
+};
+} // namespace std

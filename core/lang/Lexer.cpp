@@ -40,6 +40,10 @@ bool isAsciiWordChar(unsigned char c) {
            c == '.';
 }
 
+bool isAsciiDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
 bool isDigits(std::string_view s) {
     if (s.empty())
         return false;
@@ -123,8 +127,10 @@ Token Lexer::next() {
             end = m_source.size();
         token.kind = TokenKind::Comment;
         token.text = m_source.substr(start + 1, end - start - 1);
-        while (m_pos < end)
-            advance();
+        // A column counts characters: every byte but UTF-8 continuations.
+        for (; m_pos < end; ++m_pos)
+            if (!isContinuationByte(static_cast<unsigned char>(m_source[m_pos])))
+                ++m_column;
         return token;
     }
     case '(':
@@ -178,12 +184,22 @@ Token Lexer::next() {
         token.text = m_source.substr(start, badLength);
         return token;
     }
-    while (m_pos < m_source.size() && (length = wordCharLength(m_pos)) != 0)
+    for (;;) {
+        // Most words are ASCII: no character to decode.
+        while (m_pos < m_source.size() &&
+               isAsciiWordChar(static_cast<unsigned char>(m_source[m_pos])))
+            advance();
+        if (m_pos >= m_source.size() || static_cast<unsigned char>(m_source[m_pos]) < 0x80 ||
+            (length = wordCharLength(m_pos)) == 0)
+            break;
         for (std::size_t i = 0; i < length; ++i)
             advance();
+    }
     token.text = m_source.substr(start, m_pos - start);
     token.kind = TokenKind::Word;
-    if (isDigits(token.text)) {
+    if (!isAsciiDigit(token.text.front())) {
+        // A number or a time begins with a digit.
+    } else if (isDigits(token.text)) {
         token.kind = TokenKind::Number;
     } else {
         std::size_t s = token.text.find_first_of("sS");

@@ -24,6 +24,20 @@ void collapseRuns(std::vector<lang::Line>& lines, bool atDocumentStart) {
 
 } // namespace
 
+void tidyUnitBlankLines(lang::Document& document, int station) {
+    for (std::size_t i = 0; i < document.units.size(); ++i) {
+        auto& unit = document.units[i];
+        if (unit.station() != station)
+            continue;
+        collapseRuns(unit.declarations, false);
+        for (auto& step : unit.steps)
+            collapseRuns(step.lines, false);
+        auto& last = unit.steps.empty() ? unit.declarations : unit.steps.back().lines;
+        if (i + 1 == document.units.size() && !last.empty() && isBlank(last.back()))
+            last.pop_back();
+    }
+}
+
 void tidyBlankLines(lang::Document& document) {
     collapseRuns(document.preamble, true);
     for (auto& unit : document.units) {

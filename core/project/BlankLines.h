@@ -10,5 +10,7 @@ namespace rs::project {
 // remove lines end with this, so that writing and reading the project gives
 // the same tree back.
 void tidyBlankLines(lang::Document& document);
+// The same, of the code of one unit, when the rest is in that shape already.
+void tidyUnitBlankLines(lang::Document& document, int station);
 
 } // namespace rs::project

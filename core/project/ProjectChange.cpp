@@ -43,6 +43,24 @@ void ProjectChange::setRecords(Project& project, const Records& records) {
 }
 
 ProjectChange ProjectChange::between(const Project& before, const Project& after) {
+    return between(before, after, std::nullopt);
+}
+
+ProjectChange ProjectChange::ofUnitCode(const Project& before, const Project& after, int station) {
+    if (sameStations(before.program.units, after.program.units))
+        return between(before, after, station);
+    // Units added or removed: the whole program, with the other units' code.
+    Project whole = after;
+    for (std::size_t i = 0; i < whole.program.units.size(); ++i)
+        if (const int other = whole.program.units[i].station(); other != station)
+            for (const auto& unit : before.program.units)
+                if (unit.station() == other)
+                    whole.program.units[i].steps = unit.steps;
+    return between(before, whole, std::nullopt);
+}
+
+ProjectChange ProjectChange::between(const Project& before, const Project& after,
+                                     std::optional<int> onlyCodeOf) {
     ProjectChange change;
     Records was = recordsOf(before);
     Records is = recordsOf(after);
@@ -60,6 +78,8 @@ ProjectChange ProjectChange::between(const Project& before, const Project& after
     for (std::size_t i = 0; i < unitsBefore.size(); ++i) {
         const auto& was = unitsBefore[i];
         const auto& is = unitsAfter[i];
+        if (onlyCodeOf && was.station() != *onlyCodeOf)
+            continue; // its code is not in `after`, and it is unchanged
         UnitChange unit;
         unit.index = i;
         if (!(was.declarations == is.declarations))
@@ -69,12 +89,46 @@ ProjectChange ProjectChange::between(const Project& before, const Project& after
         } else {
             for (std::size_t s = 0; s < was.steps.size(); ++s)
                 if (!(was.steps[s] == is.steps[s]))
-                    unit.steps.push_back({s, {was.steps[s], is.steps[s]}});
+                    unit.steps.push_back(stepChange(s, was.steps[s], is.steps[s]));
         }
         if (unit.declarations || unit.allSteps || !unit.steps.empty())
             change.m_unitChanges.push_back(std::move(unit));
     }
     return change;
+}
+
+ProjectChange::StepChange ProjectChange::stepChange(std::size_t index, const lang::Step& before,
+                                                    const lang::Step& after) {
+    const auto& was = before.lines;
+    const auto& is = after.lines;
+    std::size_t first = 0;
+    while (first < was.size() && first < is.size() && was[first] == is[first])
+        ++first;
+    std::size_t same = 0; // at the end
+    while (same < was.size() - first && same < is.size() - first &&
+           was[was.size() - 1 - same] == is[is.size() - 1 - same])
+        ++same;
+    const auto run = [&](const std::vector<lang::Line>& lines) {
+        return std::vector<lang::Line>(lines.begin() + static_cast<std::ptrdiff_t>(first),
+                                       lines.end() - static_cast<std::ptrdiff_t>(same));
+    };
+    return {index,
+            {{before.address, before.comment, before.location, {}},
+             {after.address, after.comment, after.location, {}}},
+            first,
+            {run(was), run(is)}};
+}
+
+void ProjectChange::changeStep(lang::Step& step, const StepChange& change, bool forward) {
+    const lang::Step& header = forward ? change.header.after : change.header.before;
+    const auto& removed = forward ? change.lines.before : change.lines.after;
+    const auto& added = forward ? change.lines.after : change.lines.before;
+    step.address = header.address;
+    step.comment = header.comment;
+    step.location = header.location;
+    const auto at = step.lines.begin() + static_cast<std::ptrdiff_t>(change.firstLine);
+    const auto kept = step.lines.erase(at, at + static_cast<std::ptrdiff_t>(removed.size()));
+    step.lines.insert(kept, added.begin(), added.end());
 }
 
 bool ProjectChange::empty() const {
@@ -107,8 +161,8 @@ void ProjectChange::change(Project& project, bool forward) const {
             program.declarations = pick(*unit.declarations);
         if (unit.allSteps)
             program.steps = pick(*unit.allSteps);
-        for (const auto& [index, step] : unit.steps)
-            program.steps.at(index) = pick(step);
+        for (const auto& step : unit.steps)
+            changeStep(program.steps.at(step.index), step, forward);
     }
 }
 

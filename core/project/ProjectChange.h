@@ -16,6 +16,11 @@ namespace rs::project {
 class ProjectChange {
 public:
     static ProjectChange between(const Project& before, const Project& after);
+    // The same, where `after` holds the code of `station` only (its other
+    // units' code left out, as withOnlyCodeOf does) and leaves the other
+    // units as they were: only this unit, the preamble and the records are
+    // compared, so the cost is the unit's.
+    static ProjectChange ofUnitCode(const Project& before, const Project& after, int station);
 
     bool empty() const;
     // Turns the project as it was before into the project after, and back.
@@ -45,13 +50,26 @@ private:
         std::optional<Protection> protection;
         friend bool operator==(const Records&, const Records&) = default;
     };
+    // A step's header, and the run of its lines that differs: the lines
+    // before and after it are the same, so a long step is not kept twice.
+    struct StepChange {
+        std::size_t index = 0;
+        Replacement<lang::Step> header; // without lines
+        std::size_t firstLine = 0;
+        Replacement<std::vector<lang::Line>> lines;
+    };
     struct UnitChange {
         std::size_t index = 0;
         std::optional<Replacement<std::vector<lang::Line>>> declarations;
         std::optional<Replacement<std::vector<lang::Step>>> allSteps; // steps added or removed
-        std::vector<std::pair<std::size_t, Replacement<lang::Step>>> steps;
+        std::vector<StepChange> steps;
     };
+    static StepChange stepChange(std::size_t index, const lang::Step& before,
+                                 const lang::Step& after);
+    static void changeStep(lang::Step& step, const StepChange& change, bool forward);
 
+    static ProjectChange between(const Project& before, const Project& after,
+                                 std::optional<int> onlyCodeOf);
     static Records recordsOf(const Project& project);
     static void setRecords(Project& project, const Records& records);
     void change(Project& project, bool forward) const;

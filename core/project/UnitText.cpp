@@ -7,6 +7,7 @@
 #include "lang/Printer.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace rs::project {
 
@@ -72,7 +73,26 @@ std::string unitText(const Project& project, int station) {
     return "! pgm_pluto:" + twoDigits(station) + "\n";
 }
 
-UnitTextResult readUnitText(const Project& project, int station, std::string_view text) {
+Project withOnlyCodeOf(const Project& project, int station) {
+    Project part = headOf(project);
+    part.libraries = project.libraries;
+    part.baseline = project.baseline;
+    part.protection = project.protection;
+    for (const auto& unit : project.program.units) {
+        lang::UnitProgram& copy = part.program.units.emplace_back();
+        copy.header = unit.header;
+        copy.declarations = unit.declarations;
+        if (unit.station() == station)
+            copy.steps = unit.steps;
+    }
+    return part;
+}
+
+namespace {
+
+// `base`: the project the unit's code goes into, the project itself or a part of it.
+UnitTextResult readUnitInto(const Project& project, int station, std::string_view text,
+                            const std::function<Project()>& base) {
     const std::string head = writeProject(headOf(project));
     const int offset = lineCount(head);
     std::string whole = head;
@@ -108,11 +128,11 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     if (!result.ok()) {
         std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
                          [](const auto& a, const auto& b) { return a.line < b.line; });
-        result.project = project;
+        result.project = base();
         return result;
     }
 
-    result.project = project;
+    result.project = base();
     lang::UnitProgram& target = programOf(result.project, station);
     const bool separated = endsWithBlank(target);
     target = std::move(units.front());
@@ -131,8 +151,18 @@ UnitTextResult readUnitText(const Project& project, int station, std::string_vie
     result.project.variableDescriptions = std::move(read.project.variableDescriptions);
     result.project.exportedVariables = std::move(read.project.exportedVariables);
     result.project.remanentVariables = std::move(read.project.remanentVariables);
-    tidyBlankLines(result.project.program);
+    tidyUnitBlankLines(result.project.program, station);
     return result;
+}
+
+} // namespace
+
+UnitTextResult readUnitText(const Project& project, int station, std::string_view text) {
+    return readUnitInto(project, station, text, [&] { return project; });
+}
+
+UnitTextResult readUnitCode(const Project& project, int station, std::string_view text) {
+    return readUnitInto(project, station, text, [&] { return withOnlyCodeOf(project, station); });
 }
 
 } // namespace rs::project

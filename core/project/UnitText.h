@@ -27,5 +27,13 @@ struct UnitTextResult {
 // resolve against the global ones, ";@" records in it become the project's.
 // The text must be the code of this unit alone.
 UnitTextResult readUnitText(const Project& project, int station, std::string_view text);
+// The same, into the project without the other units' code (withOnlyCodeOf),
+// for ProjectDocument::replaceUnitCode: the cost is that of the unit.
+UnitTextResult readUnitCode(const Project& project, int station, std::string_view text);
+
+// The project with the code of every other unit left out (their
+// declarations stay): all a check of this unit's code reads, a small part of
+// a large project to copy.
+Project withOnlyCodeOf(const Project& project, int station);
 
 } // namespace rs::project

@@ -168,7 +168,8 @@ TEST(SystemBlock, ABodyFollowsTheCall) {
               std::string::npos)
         << text;
     const compiler::CompileResult compiled =
-        blocks::compileProject(result.read.project, result.read.diagnostics, {false});
+        blocks::compileProject(result.read.project, result.read.diagnostics,
+                               {.warnUnconfiguredIo = false, .onlyUnit = {}});
     ASSERT_EQ(compiled.errors(), 0) << diagnosticsText(compiled.diagnostics);
     const sim::ScenarioReport report =
         simulate(result, compiled.images, "scans 2\nexpect M1.1 1\nexpect Q1.10 0\n");

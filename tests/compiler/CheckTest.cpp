@@ -20,7 +20,8 @@ namespace {
 
 using Lines = std::vector<std::string>;
 
-const CheckOptions kQuiet{false}; // no unconfigured-I/O warnings
+const CheckOptions kQuiet{.warnUnconfiguredIo = false,
+                          .onlyUnit = {}}; // no unconfigured-I/O warnings
 
 std::string join(const Lines& lines) {
     std::string text;

@@ -47,7 +47,7 @@ TEST(SystemCall, ACallIsASystemInstructionAndItsOperandsInTheParametersOrder) {
                           ";@system registervalid value=\"Speed\" Valid=\"m1.1\" Input=\"R0.5\"\n"
                           "Q1.10 = M1.1\n",
                           "! R1.7=Speed\n"),
-        {false});
+        {.warnUnconfiguredIo = false, .onlyUnit = {}});
     ASSERT_EQ(problemsText(result), "");
     const auto& code = unitOne(result).code;
     // M1.0 = I1.0: Rung, Contact, Coil; then the call; then Q1.10 = M1.1.
@@ -119,7 +119,8 @@ TEST(SystemCall, WrongCallsAreErrorsAtTheRecord) {
          "12:50: error: R0.6 belongs to unit 0; a unit writes only its own variables\n"},
     };
     for (const auto& c : cases) {
-        const auto result = compiler::compileText(twoUnitsExporting(c.call + "\n"), {false});
+        const auto result = compiler::compileText(twoUnitsExporting(c.call + "\n"),
+                                                  {.warnUnconfiguredIo = false, .onlyUnit = {}});
         EXPECT_EQ(problemsText(result), c.expected) << c.call;
         EXPECT_TRUE(result.images.empty()) << c.call;
     }
@@ -129,7 +130,7 @@ TEST(SystemCall, AnOutputWrittenElsewhereTooIsWarnedAboutAsACoilIs) {
     const auto result = compiler::compileText(
         twoUnitsExporting(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"
                           "M1.1 = I1.0\n"),
-        {false});
+        {.warnUnconfiguredIo = false, .onlyUnit = {}});
     EXPECT_EQ(problemsText(result),
               "13:1: warning: M1.1 is also written at line 12; the write that runs last in each "
               "scan wins\n");
@@ -140,7 +141,7 @@ TEST(SystemCall, AnOutputWrittenElsewhereTooIsWarnedAboutAsACoilIs) {
 TEST(SystemCall, ADamagedCallIsRefusedWhenTheImageIsRead) {
     const auto result = compiler::compileText(
         twoUnitsExporting(";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" Value=\"R1.6\"\n"),
-        {false});
+        {.warnUnconfiguredIo = false, .onlyUnit = {}});
     ASSERT_EQ(result.errors(), 0);
     const compiler::UnitImage& image = unitOne(result);
     std::size_t call = 0;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ladder/Layout.h"
 #include "ManualNetworks.h"
+#include "RandomProgram.h"
 #include "StepText.h"
 #include "compiler/Compiler.h"
 #include "ladder/ElementVocabulary.h"
+#include "ladder/TextToLadder.h"
 #include "ladder/UnitLadder.h"
 
 #include <gtest/gtest.h>
@@ -238,3 +240,29 @@ TEST(Layout, NothingIsClippedOrOverlapsInAnyManualExample) {
 }
 
 } // namespace
+
+// An edit above a network moves it (issue 23): its layout moved to another
+// number and first statement is the layout made there, for random networks.
+TEST(Layout, ANetworkMovedIsLaidOutAsIfLaidOutWhereItIsNow) {
+    int networks = 0;
+    for (unsigned seed = 1; seed <= 150; ++seed) {
+        rs::test::RandomProgram program(seed);
+        for (const auto& unit : program.document().units)
+            for (const auto& step : unit.steps)
+                for (const auto& network : toLadder(step).networks) {
+                    LayoutContext from;
+                    from.number = static_cast<int>(seed % 7) + 1;
+                    from.firstStatement = seed * 3;
+                    LayoutContext to;
+                    to.number = from.number + 12;
+                    to.firstStatement = seed * 3 + seed % 5 * 100;
+                    if (seed % 3 == 0)
+                        to.title = QStringLiteral("Netzwerk %1").arg(to.number);
+                    NetworkLayout moved = layoutNetwork(network, from);
+                    moveLayout(moved, from, to);
+                    ASSERT_EQ(moved, layoutNetwork(network, to)) << "seed " << seed;
+                    ++networks;
+                }
+    }
+    EXPECT_GT(networks, 300);
+}

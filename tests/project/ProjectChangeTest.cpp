@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "project/ProjectChange.h"
 #include "ProjectText.h"
+#include "RandomProgram.h"
 #include "project/IoOptions.h"
 #include "project/ProjectProperties.h"
 #include "project/Sequences.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <random>
 
 using namespace rs;
 using lang::AddressKind;
@@ -92,4 +94,84 @@ TEST(ProjectChange, ApplyAndRevertWalkTheHistoryExactly) {
 TEST(ProjectChange, NoEditIsAnEmptyChange) {
     const project::Project p = start();
     EXPECT_TRUE(project::ProjectChange::between(p, p).empty());
+}
+
+// The text view's edits compare and copy one unit (issue 23): the change
+// made from the project without the other units' code does to the whole
+// project what the change of the whole project does.
+TEST(ProjectChange, AChangeOfOneUnitsCodeMadeWithoutTheOtherUnitsCodeIsTheWholeChange) {
+    project::Project before = start();
+    project::UnitSettings unit;
+    unit.station = 5;
+    unit.type = target::UnitType::A20;
+    ASSERT_FALSE(project::addUnit(before, unit));
+    // The last unit's declarations end with a blank line, before its code:
+    // left out of the part, that code must not make the blank line "last".
+    auto last =
+        project::readUnitText(before, 5, "! pgm_pluto:05\n! M5.1=Lamp\n\nS5.0_0\nQ5.2 = Lamp\n");
+    ASSERT_TRUE(last.ok());
+    before = last.project;
+    const std::string typed = "! pgm_pluto:02\n! M2.4=Busy\n;@var M2.4 description=\"busy\"\n"
+                              "S2.0_0\nQ2.2 = Busy\n";
+    const auto whole = project::readUnitText(before, 2, typed);
+    const auto part = project::readUnitCode(before, 2, typed);
+    ASSERT_TRUE(whole.ok());
+    ASSERT_TRUE(part.ok());
+    EXPECT_TRUE(part.project.program.units.back().steps.empty()) << "the other code is left out";
+
+    project::Project changed = before;
+    const auto change = project::ProjectChange::ofUnitCode(before, part.project, 2);
+    change.apply(changed);
+    EXPECT_TRUE(changed == whole.project);
+    EXPECT_EQ(textOf(changed), textOf(whole.project));
+    change.revert(changed);
+    EXPECT_TRUE(changed == before);
+    EXPECT_TRUE(
+        project::ProjectChange::ofUnitCode(before, project::withOnlyCodeOf(before, 2), 2).empty());
+}
+
+// A change of a step keeps the run of lines that differs (issue 23): random
+// insertions, removals and replacements of lines, anywhere in a step, and a
+// changed step header, are undone and redone exactly.
+TEST(ProjectChange, RandomEditsOfAStepsLinesAreUndoneAndRedone) {
+    test::RandomProgram random(23);
+    std::mt19937 pick(23);
+    const auto uniform = [&](int low, int high) {
+        return std::uniform_int_distribution<int>(low, high)(pick);
+    };
+    for (int round = 0; round < 200; ++round) {
+        project::Project before = start();
+        lang::Step& step = project::programOf(before, 2).steps.front();
+        for (int i = uniform(0, 12); i > 0; --i)
+            step.lines.push_back({random.statement(), std::nullopt, {}});
+        project::Project after = before;
+        lang::Step& edited = project::programOf(after, 2).steps.front();
+        for (int edit = uniform(1, 4); edit > 0; --edit) {
+            const auto at = [&] {
+                return edited.lines.begin() + uniform(0, static_cast<int>(edited.lines.size()) - 1);
+            };
+            switch (edited.lines.empty() ? 0 : uniform(0, 3)) {
+            case 0:
+                edited.lines.insert(edited.lines.begin() +
+                                        uniform(0, static_cast<int>(edited.lines.size())),
+                                    {random.statement(), std::nullopt, {}});
+                break;
+            case 1:
+                edited.lines.erase(at());
+                break;
+            case 2:
+                *at() = {random.statement(), std::string(" changed"), {}};
+                break;
+            default:
+                edited.comment = " step " + std::to_string(round);
+                break;
+            }
+        }
+        const auto change = project::ProjectChange::between(before, after);
+        project::Project current = before;
+        change.apply(current);
+        ASSERT_TRUE(current == after) << "round " << round;
+        change.revert(current);
+        ASSERT_TRUE(current == before) << "round " << round;
+    }
 }

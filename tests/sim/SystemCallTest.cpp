@@ -34,7 +34,8 @@ const std::string kBoth = ";@system RegisterValid Input=\"R0.5\" Valid=\"M1.1\" 
                           "Value=\"DR1.20\"\n";
 
 std::vector<compiler::UnitImage> images(const std::string& text) {
-    compiler::CompileResult result = compiler::compileText(text, {false});
+    compiler::CompileResult result =
+        compiler::compileText(text, {.warnUnconfiguredIo = false, .onlyUnit = {}});
     EXPECT_EQ(result.errors(), 0);
     return result.images;
 }

@@ -6,6 +6,7 @@
 #include "pl110/ProgramText.h"
 #include "project/ProjectFile.h"
 #include "project/ProtectedText.h"
+#include "project/UnitText.h"
 
 #include <QCoreApplication>
 
@@ -101,7 +102,29 @@ bool ProjectDocument::edit(const QString& text,
 }
 
 bool ProjectDocument::replace(const QString& text, const project::Project& after) {
-    project::ProjectChange change = project::ProjectChange::between(m_project, after);
+    return push(text, project::ProjectChange::between(m_project, after), &after);
+}
+
+bool ProjectDocument::editUnitCode(const QString& text, int station,
+                                   const std::function<void(project::Project&)>& change) {
+    project::Project after = project::withOnlyCodeOf(m_project, station);
+    change(after);
+    return replaceUnitCode(text, station, after);
+}
+
+bool ProjectDocument::replaceUnitCode(const QString& text, int station,
+                                      const project::Project& after) {
+    project::ProjectChange change = project::ProjectChange::ofUnitCode(m_project, after, station);
+    if (m_permission != project::Permission::Configure)
+        return push(text, std::move(change), nullptr);
+    // Whether only options change is told of whole projects; rare enough to copy.
+    project::Project whole = m_project;
+    change.apply(whole);
+    return push(text, std::move(change), &whole);
+}
+
+bool ProjectDocument::push(const QString& text, project::ProjectChange change,
+                           const project::Project* afterForPermission) {
     if (change.empty())
         return false;
     if (m_permission == project::Permission::ReadOnly) {
@@ -109,7 +132,7 @@ bool ProjectDocument::replace(const QString& text, const project::Project& after
         return false;
     }
     if (m_permission == project::Permission::Configure &&
-        !project::changesOnlyOptions(m_project, after)) {
+        !project::changesOnlyOptions(m_project, *afterForPermission)) {
         refuse(tr("The project is open with permission to configure: only its Config Options "
                   "can change."));
         return false;

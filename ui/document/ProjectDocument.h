@@ -45,6 +45,12 @@ public:
     // Returns whether it changed the project.
     bool edit(const QString& text, const std::function<void(project::Project&)>& change);
     bool replace(const QString& text, const project::Project& after);
+    // The same, of the code of one unit: `change` is given, and `after` is,
+    // the project without the other units' code (project::withOnlyCodeOf),
+    // so an edit of a large project copies and compares one unit, not all.
+    bool editUnitCode(const QString& text, int station,
+                      const std::function<void(project::Project&)>& change);
+    bool replaceUnitCode(const QString& text, int station, const project::Project& after);
 
     // The libraries the project uses (Project::libraries, found as
     // blocks::librariesFor finds them), read when first asked for and again
@@ -126,6 +132,8 @@ signals:
 private:
     void emitModification();
     void refuse(const QString& reason);
+    bool push(const QString& text, project::ProjectChange change,
+              const project::Project* afterForPermission);
 
     project::Project m_project;
     QUndoStack m_undoStack;

@@ -93,7 +93,7 @@ void LadderPage::commitSteps(const QString& name,
     }
     const int station = m_station;
     const blocks::LibrarySet& libraries = m_document->libraries();
-    m_document->edit(name, [&](project::Project& p) {
+    m_document->editUnitCode(name, station, [&](project::Project& p) {
         lang::UnitProgram& unit = project::programOf(p, station);
         for (const auto& [stepAddress, ladder] : written) {
             // Named, as clang 14 cannot capture a structured binding.
@@ -410,7 +410,7 @@ void LadderPage::editStepComment(int step) {
     if (!ok || comment == m_stepComments[step])
         return;
     const int station = m_station;
-    m_document->edit(tr("Comment Step %1").arg(header), [&](project::Project& p) {
+    m_document->editUnitCode(tr("Comment Step %1").arg(header), station, [&](project::Project& p) {
         for (auto& s : project::programOf(p, station).steps)
             if (s.address == address)
                 s.comment = comment.isEmpty()
@@ -426,11 +426,12 @@ void LadderPage::newStep() {
     std::string refusal;
     const int station = m_station;
     const int sequence = m_sequence;
-    m_document->edit(tr("New Step of Sequence %1").arg(sequence), [&](project::Project& p) {
-        const project::AddedStep step = project::addStep(p, station, sequence);
-        added = step.step;
-        refusal = step.refusal;
-    });
+    m_document->editUnitCode(
+        tr("New Step of Sequence %1").arg(sequence), station, [&](project::Project& p) {
+            const project::AddedStep step = project::addStep(p, station, sequence);
+            added = step.step;
+            refusal = step.refusal;
+        });
     if (added < 0) {
         setMessage(QString::fromStdString(refusal));
         return;

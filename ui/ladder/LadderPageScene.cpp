@@ -29,6 +29,40 @@ void LadderPage::followModel() {
     updateTitle();
 }
 
+namespace {
+
+// Gives each network of a step its item: networks inserted or removed in
+// the middle leave the items after them with their networks (to be
+// numbered anew, not laid out again); the rest are kept by place. Places
+// left without an item are null.
+void keepItemsWithTheirNetworks(std::vector<NetworkItem*>& items,
+                                const std::vector<ladder::Network>& networks) {
+    const std::size_t before = items.size();
+    const std::size_t after = networks.size();
+    const std::size_t shorter = std::min(before, after);
+    std::size_t prefix = 0;
+    while (prefix < shorter && items[prefix]->network() == networks[prefix])
+        ++prefix;
+    std::size_t suffix = 0;
+    while (before != after && suffix < shorter - prefix &&
+           items[before - 1 - suffix]->network() == networks[after - 1 - suffix])
+        ++suffix;
+    std::vector<NetworkItem*> kept(after, nullptr);
+    std::copy(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(prefix), kept.begin());
+    std::copy(items.end() - static_cast<std::ptrdiff_t>(suffix), items.end(),
+              kept.end() - static_cast<std::ptrdiff_t>(suffix));
+    // Between them, by place, as many as both have; the other old ones go.
+    for (std::size_t i = prefix; i < before - suffix; ++i) {
+        if (i < after - suffix)
+            kept[i] = items[i];
+        else
+            delete items[i];
+    }
+    items = std::move(kept);
+}
+
+} // namespace
+
 void LadderPage::rebuild() {
     m_steps.clear();
     m_stepComments.clear();
@@ -115,14 +149,11 @@ void LadderPage::rebuild() {
         m_headers[s]->setVisible(m_sequence != 0);
         auto& items = m_items[s];
         const int count = static_cast<int>(page.ladder.networks.size());
-        while (static_cast<int>(items.size()) > count) {
-            delete items.back();
-            items.pop_back();
-        }
+        keepItemsWithTheirNetworks(items, page.ladder.networks);
         for (int n = 0; n < count; ++n) {
-            if (n >= static_cast<int>(items.size())) {
-                items.push_back(new NetworkItem(&m_drawing, static_cast<int>(s), n));
-                m_scene->addItem(items.back());
+            if (!items[n]) {
+                items[n] = new NetworkItem(&m_drawing, static_cast<int>(s), n);
+                m_scene->addItem(items[n]);
             }
             ladder::LayoutContext context;
             context.number = n + 1;

@@ -8,10 +8,11 @@ namespace rs::ui {
 
 compiler::CompileResult compileProjectText(const std::string& canonicalText,
                                            const QString& executableDir, const QString& projectPath,
-                                           const compiler::CheckOptions& options) {
+                                           const compiler::CheckOptions& options,
+                                           compiler::Output output) {
     const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
         canonicalText, blocks::LibraryPlaces{executableDir, projectPath, {}});
-    return blocks::compileProject(read.read.project, read.read.diagnostics, options);
+    return blocks::compileProject(read.read.project, read.read.diagnostics, options, {}, output);
 }
 
 lang::Diagnostics unitCodeDiagnostics(const std::string& canonicalText,

@@ -16,7 +16,8 @@ namespace rs::ui {
 // that text.
 compiler::CompileResult compileProjectText(const std::string& canonicalText,
                                            const QString& executableDir, const QString& projectPath,
-                                           const compiler::CheckOptions& options);
+                                           const compiler::CheckOptions& options,
+                                           compiler::Output output = compiler::Output::Images);
 
 // The diagnostics that concern the code of one unit, with lines of its code.
 lang::Diagnostics unitCodeDiagnostics(const std::string& canonicalText,

@@ -3,6 +3,7 @@
 
 #include "output/ProjectCompile.h"
 #include "project/ProjectFile.h"
+#include "project/UnitText.h"
 
 #include <QCoreApplication>
 #include <QtConcurrent/QtConcurrentRun>
@@ -12,7 +13,12 @@
 namespace rs::ui {
 
 struct CodeCheck::Request {
-    project::Project project; // a copy: the model goes on changing meanwhile
+    // A copy, as the model goes on changing meanwhile: the whole project
+    // when what the other units use is not known yet, else all of it but
+    // the other units' code.
+    project::Project project;
+    std::shared_ptr<const std::vector<lang::Address>> usedByOtherUnits; // none: not known
+    quint64 generation = 0;
     QString projectPath;
     int station = 0;
     quint64 ticket = 0;
@@ -21,7 +27,10 @@ struct CodeCheck::Request {
 
 CodeCheck::CodeCheck(QObject* parent) : QObject(parent) {
     connect(&m_watcher, &QFutureWatcher<Result>::finished, this, [this] {
-        const Result result = m_watcher.result();
+        Result result = m_watcher.result();
+        if (result.generation == m_generation && !m_otherUnits)
+            m_otherUnits = OtherUnits{result.station, result.warnUnconfiguredIo,
+                                      std::move(result.usedByOtherUnits)};
         emit checked(result.ticket, result.diagnostics);
         startWaiting();
     });
@@ -33,9 +42,20 @@ CodeCheck::~CodeCheck() {
 
 void CodeCheck::request(const project::Project& project, const QString& projectPath, int station,
                         quint64 ticket) {
+    const bool known = m_otherUnits && m_otherUnits->station == station &&
+                       m_otherUnits->warnUnconfiguredIo == m_warnUnconfiguredIo;
+    if (!known)
+        otherCodeChanged();
     m_waiting = std::make_unique<Request>(
-        Request{project, projectPath, station, ticket, m_warnUnconfiguredIo});
+        Request{known ? project::withOnlyCodeOf(project, station) : project,
+                known ? m_otherUnits->used : nullptr, m_generation, projectPath, station, ticket,
+                m_warnUnconfiguredIo});
     startWaiting();
+}
+
+void CodeCheck::otherCodeChanged() {
+    m_otherUnits.reset();
+    ++m_generation;
 }
 
 bool CodeCheck::isBusy() const {
@@ -49,10 +69,18 @@ void CodeCheck::startWaiting() {
                                            executableDir = QCoreApplication::applicationDirPath()] {
         compiler::CheckOptions options;
         options.warnUnconfiguredIo = request->warnUnconfiguredIo;
-        const std::string text = project::writeProject(request->project);
-        const compiler::CompileResult result =
-            compileProjectText(text, executableDir, request->projectPath, options);
-        lang::Diagnostics found = unitCodeDiagnostics(text, result.diagnostics, request->station);
+        const int station = request->station;
+        const bool known = request->usedByOtherUnits != nullptr;
+        const auto used =
+            known ? request->usedByOtherUnits
+                  : std::make_shared<const std::vector<lang::Address>>(
+                        compiler::unitScope(request->project, station, options).usedByOtherUnits);
+        const std::string text = project::writeProject(
+            known ? request->project : project::withOnlyCodeOf(request->project, station));
+        options.onlyUnit = compiler::UnitScope{station, *used};
+        const compiler::CompileResult result = compileProjectText(
+            text, executableDir, request->projectPath, options, compiler::Output::DiagnosticsOnly);
+        lang::Diagnostics found = unitCodeDiagnostics(text, result.diagnostics, station);
         if (found.size() > kMostFindings) {
             std::stable_partition(found.begin(), found.end(), [](const auto& diagnostic) {
                 return diagnostic.severity == lang::Severity::Error;
@@ -60,7 +88,12 @@ void CodeCheck::startWaiting() {
             found.resize(kMostFindings);
             lang::sortByPlace(found);
         }
-        return Result{request->ticket, std::move(found)};
+        return Result{request->ticket,
+                      std::move(found),
+                      station,
+                      request->generation,
+                      request->warnUnconfiguredIo,
+                      used};
     }));
 }
 

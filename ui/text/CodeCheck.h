@@ -7,6 +7,12 @@
 #include <QObject>
 
 #include <memory>
+#include <optional>
+#include <vector>
+
+namespace rs::lang {
+struct Address;
+}
 
 namespace rs::project {
 struct Project;
@@ -19,6 +25,9 @@ namespace rs::ui {
 // request made meanwhile waits, replacing any older one, so that the newest
 // text is the one checked next. At most kMostFindings are given, errors
 // first: thousands of marks would only slow typing down; F7 lists them all.
+// Only the unit's code is checked (issue 23): what the other units' code
+// tells its check (the variables it uses) is kept from the first check and
+// found again after otherCodeChanged().
 class CodeCheck : public QObject {
     Q_OBJECT
 public:
@@ -35,6 +44,9 @@ public:
                  quint64 ticket);
     // A check runs or waits.
     bool isBusy() const;
+    // The project changed other than by the checked unit's code: the next
+    // request looks at the whole project again.
+    void otherCodeChanged();
 
 signals:
     // The diagnostics of the unit's code, in lines of its code.
@@ -45,12 +57,25 @@ private:
     struct Result {
         quint64 ticket = 0;
         lang::Diagnostics diagnostics;
+        int station = 0;
+        quint64 generation = 0;
+        bool warnUnconfiguredIo = true;
+        std::shared_ptr<const std::vector<lang::Address>> usedByOtherUnits;
     };
     void startWaiting();
 
     QFutureWatcher<Result> m_watcher;
     std::unique_ptr<Request> m_waiting;
     bool m_warnUnconfiguredIo = true;
+    // What the other units' code uses, for the check of one station's code,
+    // as it was when the generation was current.
+    struct OtherUnits {
+        int station = 0;
+        bool warnUnconfiguredIo = true;
+        std::shared_ptr<const std::vector<lang::Address>> used;
+    };
+    std::optional<OtherUnits> m_otherUnits;
+    quint64 m_generation = 0;
 };
 
 } // namespace rs::ui

@@ -62,6 +62,7 @@ void TextPage::showUnit(ProjectDocument* document, int station) {
     m_document = document;
     m_station = station;
     m_hasErrors = false;
+    m_check->otherCodeChanged();
     if (!document) {
         setEditorText({}, false);
         setDiagnostics({});
@@ -138,7 +139,7 @@ bool TextPage::applyNow() {
         return !m_hasErrors;
     }
     project::UnitTextResult read =
-        project::readUnitText(m_document->project(), m_station, view(text));
+        project::readUnitCode(m_document->project(), m_station, view(text));
     setDiagnostics(read.diagnostics);
     m_hasErrors = !read.ok();
     if (m_hasErrors)
@@ -147,7 +148,8 @@ bool TextPage::applyNow() {
         m_canonical = QByteArray::fromStdString(project::unitText(read.project, m_station));
         m_shown = text;
         m_applying = true;
-        m_document->replace(tr("Edit Code of Pluto %1").arg(m_station), read.project);
+        m_document->replaceUnitCode(tr("Edit Code of Pluto %1").arg(m_station), m_station,
+                                    read.project);
         m_applying = false;
     }
     checkCode();
@@ -183,6 +185,7 @@ bool TextPage::formatText() {
 void TextPage::followModel() {
     if (m_applying || !m_document || m_station == kWholeProject)
         return;
+    m_check->otherCodeChanged(); // undone, redone, or edited on another page
     updateTitle();
     const QByteArray canonical =
         QByteArray::fromStdString(project::unitText(m_document->project(), m_station));
@@ -195,7 +198,7 @@ void TextPage::followModel() {
     setEditorText(canonical, true);
     m_hasErrors = false;
     project::UnitTextResult read =
-        project::readUnitText(m_document->project(), m_station, view(canonical));
+        project::readUnitCode(m_document->project(), m_station, view(canonical));
     setDiagnostics(read.diagnostics);
     checkCode();
 }
