@@ -8,6 +8,8 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace rs::blocks {
 
 QStringList standardLibraryFolders(const QString& executableDir) {
@@ -67,7 +69,15 @@ void addLibraryFile(LibrarySet& set, const QString& path, LibraryOrigin origin) 
         return;
     }
     // One byte past the limit is enough for the reader to refuse the file.
-    const QByteArray bytes = file.read(static_cast<qint64>(kMaxLibraryBytes) + 1);
+    // Read in pieces: QIODevice::read(n) allocates n bytes before reading.
+    const qint64 limit = static_cast<qint64>(kMaxLibraryBytes) + 1;
+    QByteArray bytes;
+    while (bytes.size() < limit) {
+        const QByteArray piece = file.read(std::min<qint64>(qint64{1} << 16, limit - bytes.size()));
+        if (piece.isEmpty())
+            break;
+        bytes += piece;
+    }
     if (file.error() != QFileDevice::NoError) {
         set.problems.push_back(
             {path, QStringLiteral("cannot read %1: %2").arg(path, file.errorString()), {}});

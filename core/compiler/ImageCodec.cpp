@@ -30,6 +30,10 @@ constexpr std::uint32_t kMaxIncludedSourceBytes = project::kMaxTextFileBytes;
 
 class Writer {
 public:
+    // Room for the image's code (16 bytes an instruction) and its tables.
+    explicit Writer(const UnitImage& image) {
+        m_bytes.reserve(256 + 16 * image.code.size() + 12 * image.steps.size());
+    }
     void u8(std::uint8_t v) { m_bytes.push_back(v); }
     void u16(std::uint16_t v) {
         u8(static_cast<std::uint8_t>(v));
@@ -40,6 +44,9 @@ public:
         u16(static_cast<std::uint16_t>(v >> 16));
     }
     void bytes(std::string_view s) { m_bytes.insert(m_bytes.end(), s.begin(), s.end()); }
+    void append(const std::uint8_t* data, std::size_t size) {
+        m_bytes.insert(m_bytes.end(), data, data + size);
+    }
     std::vector<std::uint8_t>& data() { return m_bytes; }
 
 private:
@@ -125,18 +132,30 @@ std::optional<lang::Address> readAddress(Reader& r) {
 
 // The parts of an instruction that decide what it does; where it came from
 // follows them in the image.
+// Sixteen bytes, little-endian, made apart and appended at once: images
+// hold hundreds of thousands of instructions.
 void writeInstructionAction(Writer& w, const Instruction& in) {
-    w.u8(static_cast<std::uint8_t>(in.op));
-    w.u8(in.flags);
-    w.u8(in.aux);
-    w.u8(static_cast<std::uint8_t>(in.operand.kind));
-    w.u8(static_cast<std::uint8_t>(in.operand.unit));
-    w.u8(static_cast<std::uint8_t>(static_cast<std::int8_t>(in.operand.bit)));
-    w.u8(in.operand.asiB ? 1 : 0);
-    w.u8(0);
-    w.u16(static_cast<std::uint16_t>(in.operand.index));
-    w.u16(in.slot);
-    w.u32(static_cast<std::uint32_t>(in.constant));
+    const auto index = static_cast<std::uint16_t>(in.operand.index);
+    const auto constant = static_cast<std::uint32_t>(in.constant);
+    const std::uint8_t bytes[16] = {
+        static_cast<std::uint8_t>(in.op),
+        in.flags,
+        in.aux,
+        static_cast<std::uint8_t>(in.operand.kind),
+        static_cast<std::uint8_t>(in.operand.unit),
+        static_cast<std::uint8_t>(static_cast<std::int8_t>(in.operand.bit)),
+        static_cast<std::uint8_t>(in.operand.asiB ? 1 : 0),
+        0,
+        static_cast<std::uint8_t>(index),
+        static_cast<std::uint8_t>(index >> 8),
+        static_cast<std::uint8_t>(in.slot),
+        static_cast<std::uint8_t>(in.slot >> 8),
+        static_cast<std::uint8_t>(constant),
+        static_cast<std::uint8_t>(constant >> 8),
+        static_cast<std::uint8_t>(constant >> 16),
+        static_cast<std::uint8_t>(constant >> 24),
+    };
+    w.append(bytes, sizeof bytes);
 }
 
 void writeCounts(Writer& w, const UnitImage& image) {
@@ -289,7 +308,7 @@ std::size_t encodedSizeBound(const UnitImage& image) {
 }
 
 std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
-    Writer w;
+    Writer w(image);
     w.bytes(std::string_view(kMagic, 4));
     w.u16(kVersion);
     w.u8(image.station);
@@ -480,7 +499,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
 }
 
 std::string behaviourBytes(const UnitImage& image) {
-    Writer w;
+    Writer w(image);
     w.u8(image.station);
     w.u8(image.unitType);
     w.u8(image.instructionSet);
