@@ -56,9 +56,9 @@ public:
         if (statement.condition)
             note(*statement.condition);
         if (statement.kind == lang::StatementKind::Assign) {
-            note(statement.assignment.left);
-            note(statement.assignment.right);
-            note(statement.assignment.target, true);
+            note(statement.assignment->left);
+            note(statement.assignment->right);
+            note(statement.assignment->target, true);
         } else {
             note(statement.target, true);
         }
@@ -233,9 +233,9 @@ BlockDraft draftBlock(const std::string& blockName, const std::vector<lang::Line
         if (statement.condition)
             rename(*statement.condition, placeholders);
         rename(statement.target, placeholders);
-        rename(statement.assignment.target, placeholders);
-        rename(statement.assignment.left, placeholders);
-        rename(statement.assignment.right, placeholders);
+        rename(statement.assignment->target, placeholders);
+        rename(statement.assignment->left, placeholders);
+        rename(statement.assignment->right, placeholders);
         draft.block.body.push_back(lang::printStatement(statement));
     }
     return draft;

@@ -167,9 +167,9 @@ void placeAt(lang::Line& line, lang::SourceLocation at) {
     if (auto* statement = std::get_if<lang::Statement>(&line.body)) {
         statement->location = at;
         placeAt(statement->target, at);
-        placeAt(statement->assignment.target, at);
-        placeAt(statement->assignment.left, at);
-        placeAt(statement->assignment.right, at);
+        placeAt(statement->assignment->target, at);
+        placeAt(statement->assignment->left, at);
+        placeAt(statement->assignment->right, at);
         if (statement->condition)
             placeAt(*statement->condition, at);
     }

@@ -65,9 +65,9 @@ public:
     void add(const lang::Line& line) {
         if (const auto* statement = std::get_if<lang::Statement>(&line.body)) {
             add(statement->target);
-            add(statement->assignment.target);
-            add(statement->assignment.left);
-            add(statement->assignment.right);
+            add(statement->assignment->target);
+            add(statement->assignment->left);
+            add(statement->assignment->right);
             if (statement->condition)
                 add(*statement->condition);
         } else if (const auto* declaration = std::get_if<lang::Declaration>(&line.body)) {

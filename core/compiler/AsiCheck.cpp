@@ -98,7 +98,7 @@ void checkAsiSlaves(const project::Project& project, const UnitSetups& units,
             for (const auto& line : step.lines)
                 if (const auto* statement = std::get_if<lang::Statement>(&line.body)) {
                     const lang::Operand* written[] = {&statement->target,
-                                                      &statement->assignment.target};
+                                                      &statement->assignment->target};
                     lang::forEachOperand(*statement, [&](const lang::Operand& operand) {
                         const bool isWritten = std::find(std::begin(written), std::end(written),
                                                          &operand) != std::end(written);

@@ -122,7 +122,7 @@ private:
                 static_cast<std::uint16_t>(s.target.address.index);
             break;
         case StatementKind::Assign:
-            assignment(s.assignment);
+            assignment(*s.assignment);
             break;
         }
     }

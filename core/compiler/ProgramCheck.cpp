@@ -205,11 +205,11 @@ private:
 
     template <typename F> static void visitStatementOperands(const Statement& s, F& visit) {
         if (s.kind == StatementKind::Assign) {
-            visit(s.assignment.target, s.assignment.target.location);
-            if (s.assignment.left.operand)
-                visit(*s.assignment.left.operand, s.assignment.left.operand->location);
-            if (s.assignment.right.operand)
-                visit(*s.assignment.right.operand, s.assignment.right.operand->location);
+            visit(s.assignment->target, s.assignment->target.location);
+            if (s.assignment->left.operand)
+                visit(*s.assignment->left.operand, s.assignment->left.operand->location);
+            if (s.assignment->right.operand)
+                visit(*s.assignment->right.operand, s.assignment->right.operand->location);
         } else if (s.kind != StatementKind::Jump) {
             visit(s.target, s.target.location);
         }
@@ -348,7 +348,7 @@ private:
     }
 
     void checkAssignment(const Statement& s) {
-        const auto& a = s.assignment;
+        const auto& a = *s.assignment;
         if (!checkOperand(a.target, Use::WriteWord))
             return;
         const bool set3 = m_unit->instructionSet >= 3;

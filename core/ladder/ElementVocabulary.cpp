@@ -203,7 +203,7 @@ const std::vector<ElementKindInfo>& kinds() {
              Statement made = statement(p, StatementKind::Assign);
              made.target = {};
              made.assignment = p.assignment;
-             made.assignment.target = p.operand;
+             made.assignment->target = p.operand;
              return made;
          },
          [](const ElementNode& n) {
@@ -227,9 +227,9 @@ struct PartsReader {
     }
     ElementParts operator()(const Statement& statement) const {
         ElementParts parts;
-        parts.operand = statement.kind == StatementKind::Assign ? statement.assignment.target
+        parts.operand = statement.kind == StatementKind::Assign ? statement.assignment->target
                                                                 : statement.target;
-        parts.assignment = statement.assignment;
+        parts.assignment = *statement.assignment;
         parts.assignment.target = {};
         parts.relativeJump = statement.relativeJump;
         parts.jumpStep = statement.jumpStep;

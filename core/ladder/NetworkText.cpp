@@ -56,7 +56,8 @@ NetworksReading readNetworksText(std::string_view text) {
         return {{}, "the text holds more than networks"};
     for (const auto& line : parsed.document.units.front().steps.front().lines)
         if (const auto* statement = std::get_if<lang::Statement>(&line.body))
-            for (const lang::Operand* operand : {&statement->target, &statement->assignment.target})
+            for (const lang::Operand* operand :
+                 {&statement->target, &statement->assignment->target})
                 if (operand->isName())
                     return {{},
                             "the text uses the name " + operand->name +

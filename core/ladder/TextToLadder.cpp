@@ -71,7 +71,7 @@ Output toOutput(const lang::Statement& statement, const std::optional<std::strin
     output.target = statement.target;
     output.relativeJump = statement.relativeJump;
     output.jumpStep = statement.jumpStep;
-    output.assignment = statement.assignment;
+    output.assignment = *statement.assignment;
     output.comment = comment;
     output.location = statement.location;
     return output;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Address.h"
+#include "Rare.h"
 #include "SourceLocation.h"
 
 #include <cstdint>
@@ -112,8 +113,8 @@ struct Statement {
     StatementKind kind = StatementKind::Coil;
     Operand target; // Coil, Set, Reset, Toggle, SequenceReset
     bool relativeJump = false;
-    int jumpStep = 0;      // absolute step, or signed offset when relative
-    Assignment assignment; // Assign
+    int jumpStep = 0;            // absolute step, or signed offset when relative
+    Rare<Assignment> assignment; // Assign: most statements are none
     std::optional<Expr> condition;
     SourceLocation location;
     friend bool operator==(const Statement&, const Statement&) = default;

@@ -220,10 +220,10 @@ private:
         case StatementKind::Jump:
             break;
         case StatementKind::Assign:
-            resolve(statement.assignment.target, local, station);
-            requireKind(statement.assignment.target, false, "the target of an assignment");
-            resolveValue(statement.assignment.left, local, station);
-            resolveValue(statement.assignment.right, local, station);
+            resolve(statement.assignment->target, local, station);
+            requireKind(statement.assignment->target, false, "the target of an assignment");
+            resolveValue(statement.assignment->left, local, station);
+            resolveValue(statement.assignment->right, local, station);
             break;
         }
         if (statement.condition)

@@ -28,10 +28,12 @@ template <typename S, typename Visit>
 requires std::same_as<std::remove_const_t<S>, Statement>
 void forEachOperand(S& statement, Visit&& visit) {
     visit(statement.target);
-    visit(statement.assignment.target);
-    for (auto* value : {&statement.assignment.left, &statement.assignment.right})
-        if (value->operand)
-            visit(*value->operand);
+    if (statement.assignment.held()) { // else it has no operands
+        visit(statement.assignment->target);
+        for (auto* value : {&statement.assignment->left, &statement.assignment->right})
+            if (value->operand)
+                visit(*value->operand);
+    }
     if (statement.condition)
         forEachOperand(*statement.condition, visit);
 }

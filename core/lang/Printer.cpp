@@ -193,7 +193,7 @@ std::string printStatement(const Statement& statement) {
         text += ")";
         break;
     case StatementKind::Assign:
-        text = "(" + printAssignment(statement.assignment) + ")";
+        text = "(" + printAssignment(*statement.assignment) + ")";
         break;
     }
     if (statement.condition)

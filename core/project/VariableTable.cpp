@@ -109,8 +109,8 @@ template <typename Unit, typename Visit> void forEachOperand(Unit& unit, Visit v
             if (!statement)
                 continue;
             if (statement->kind == lang::StatementKind::Assign) {
-                visit(statement->assignment.target);
-                for (auto* value : {&statement->assignment.left, &statement->assignment.right})
+                visit(statement->assignment->target);
+                for (auto* value : {&statement->assignment->left, &statement->assignment->right})
                     if (value->operand)
                         visit(*value->operand);
             } else if (statement->kind != lang::StatementKind::Jump &&

@@ -42,9 +42,9 @@ void unname(lang::Expr& expr) {
 
 std::string meaning(lang::Statement statement) {
     unname(statement.target);
-    unname(statement.assignment.target);
-    unname(statement.assignment.left);
-    unname(statement.assignment.right);
+    unname(statement.assignment->target);
+    unname(statement.assignment->left);
+    unname(statement.assignment->right);
     if (statement.condition)
         unname(*statement.condition);
     return lang::printStatement(statement);

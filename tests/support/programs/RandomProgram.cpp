@@ -200,7 +200,7 @@ Statement RandomProgram::statement() {
         break;
     default: {
         s.kind = StatementKind::Assign;
-        auto& a = s.assignment;
+        auto& a = *s.assignment;
         a.target = wordOperand();
         a.op = static_cast<AssignOp>(uniform(0, 7));
         if (a.op != AssignOp::Increment && a.op != AssignOp::Decrement)
