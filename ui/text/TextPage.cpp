@@ -189,8 +189,10 @@ void TextPage::followModel() {
     updateTitle();
     const QByteArray canonical =
         QByteArray::fromStdString(project::unitText(m_document->project(), m_station));
-    if (canonical == m_canonical)
+    if (canonical == m_canonical) {
+        checkCode(); // another unit changed: what it uses may change the findings
         return;
+    }
     // Undo, redo or another page changed this unit: show the project's text.
     m_applyTimer.stop();
     m_canonical = canonical;

@@ -494,6 +494,50 @@ TEST_F(MainWindowTest, TheTextViewMarksWhatTheCompilerRejectsAfterThePause) {
     EXPECT_TRUE(summary().startsWith(QStringLiteral("0 errors"))) << summary().toStdString();
 }
 
+// Issue 23: the text view checks only the unit typed in, with what the
+// other units' code uses; a change of another unit (or its undo) is seen.
+TEST_F(MainWindowTest, TheTextViewsCheckFollowsWhatTheOtherUnitsUse) {
+    ASSERT_TRUE(window
+                    .loadFile(writeFile(QStringLiteral("two.sps"), "$name Two\n"
+                                                                   "! id_pluto:00=000000000000\n"
+                                                                   "! type_pluto:00=A20,is3\n"
+                                                                   "! id_pluto:01=000000000000\n"
+                                                                   "! type_pluto:01=A20,is3\n"
+                                                                   "! pgm_pluto:00\n"
+                                                                   "! GM0.3=Shared\n"
+                                                                   "S0.0_0\n"
+                                                                   "GM0.4 = I0.1\n"
+                                                                   "! pgm_pluto:01\n"
+                                                                   "S1.0_0\n"
+                                                                   "Q1.2 = GM0.3\n"))
+                    .isEmpty());
+    showWindow();
+    showCodeAsText();
+    rs::ui::TextPage* page = window.textPage();
+    ASSERT_NE(page, nullptr);
+    const auto unused = [&] {
+        for (const auto& diagnostic : page->diagnostics())
+            if (diagnostic.message == "'Shared' (GM0.3) is named but never used")
+                return true;
+        return false;
+    };
+    const auto checked = [&] {
+        return QTest::qWaitFor([&] { return !page->isChecking(); }, MainWindow::kCheckDelayMs * 20);
+    };
+    ASSERT_TRUE(checked());
+    EXPECT_FALSE(unused()) << "unit 1 reads it";
+
+    rs::project::Project edited = document()->project();
+    const auto read = rs::project::readUnitText(edited, 1, "! pgm_pluto:01\nS1.0_0\nQ1.2 = I1.0\n");
+    ASSERT_TRUE(read.ok());
+    document()->replace(QStringLiteral("another unit"), read.project);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return unused() && !page->isChecking(); },
+                                MainWindow::kCheckDelayMs * 20));
+    document()->undoStack()->undo();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !unused() && !page->isChecking(); },
+                                MainWindow::kCheckDelayMs * 20));
+}
+
 // Issue 18: the project and unit pages show the program signatures that
 // rungsmith-cli signature prints, and follow an edit of the code.
 TEST_F(MainWindowTest, TheProjectAndUnitPagesShowTheProgramSignatures) {
