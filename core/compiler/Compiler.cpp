@@ -64,6 +64,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
                 continue;
             UnitImage image = generateCode(unit);
             addSetup(image, unit, project);
+            image.projectName = project.name(); // it counts, as the source does
             image.source = canonical;
             fitsTheUnit(image, unit, units, result.diagnostics);
         }
