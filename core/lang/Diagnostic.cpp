@@ -12,11 +12,18 @@ int errorCount(const Diagnostics& diagnostics) {
 }
 
 std::string visibleText(std::string_view text) {
+    const auto visible = [](char c) {
+        const auto byte = static_cast<unsigned char>(c);
+        return byte >= 0x20 && byte != 0x7F;
+    };
+    // Most messages have nothing to show otherwise: copied whole.
+    if (std::all_of(text.begin(), text.end(), visible))
+        return std::string(text);
     std::string shown;
     shown.reserve(text.size());
     for (char c : text) {
         const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte != 0x7F) {
+        if (visible(c)) {
             shown += c;
             continue;
         }
@@ -45,9 +52,14 @@ std::string visibleText(std::string_view text) {
 }
 
 std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diagnostic) {
-    std::string text = fileName;
-    text += ':' + std::to_string(diagnostic.line) + ':' + std::to_string(diagnostic.column) + ": ";
-    text += diagnostic.severity == Severity::Error ? "error: " : "warning: ";
+    std::string text;
+    text.reserve(fileName.size() + diagnostic.message.size() + 32);
+    text += fileName;
+    text += ':';
+    text += std::to_string(diagnostic.line);
+    text += ':';
+    text += std::to_string(diagnostic.column);
+    text += diagnostic.severity == Severity::Error ? ": error: " : ": warning: ";
     text += visibleText(diagnostic.message);
     return text;
 }
