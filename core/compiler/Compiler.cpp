@@ -18,6 +18,15 @@ namespace rs::compiler {
 
 namespace {
 
+// The units as their declarations, the project's exports and their system
+// calls set them up; what contradicts itself is reported.
+UnitSetups setUpUnits(const project::Project& project, lang::Diagnostics& diagnostics) {
+    UnitSetups units = collectUnits(project.program, diagnostics);
+    collectExports(project, units, diagnostics);
+    collectSystemCalls(project.program, units, diagnostics);
+    return units;
+}
+
 // A unit's image larger than a Pluto holds is an error at its code's header.
 // Encoding (and compressing the source) only to measure is needed just near
 // the limit.
@@ -44,9 +53,7 @@ bool fitsTheUnit(const UnitImage& image, const UnitSetup& unit, const UnitSetups
 CompileResult compile(const project::Project& project, const CheckOptions& options,
                       std::string_view readFrom, Output output) {
     CompileResult result;
-    UnitSetups units = collectUnits(project.program, result.diagnostics);
-    collectExports(project, units, result.diagnostics);
-    collectSystemCalls(project.program, units, result.diagnostics);
+    UnitSetups units = setUpUnits(project, result.diagnostics);
     checkAsiSlaves(project, units, result.diagnostics);
     checkGatewayBlocks(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
@@ -83,9 +90,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         canonicalAlready ? project::ProjectReadResult{} : project::readProject(canonical);
     const project::Project& source = canonicalAlready || !reread.ok() ? project : reread.project;
     lang::Diagnostics again; // the same as above: the checks passed
-    UnitSetups sourceUnits = collectUnits(source.program, again);
-    collectExports(source, sourceUnits, again);
-    collectSystemCalls(source.program, sourceUnits, again);
+    UnitSetups sourceUnits = setUpUnits(source, again);
     for (const auto& [station, unit] : sourceUnits) {
         UnitImage image = generateCode(unit);
         addSetup(image, unit, source);
@@ -114,9 +119,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
 
 UnitScope unitScope(const project::Project& project, int station, const CheckOptions& options) {
     lang::Diagnostics ignored; // the whole check reports them
-    UnitSetups units = collectUnits(project.program, ignored);
-    collectExports(project, units, ignored);
-    collectSystemCalls(project.program, units, ignored);
+    const UnitSetups units = setUpUnits(project, ignored);
     return {station, usedByOtherUnits(project.program, units, options, station)};
 }
 

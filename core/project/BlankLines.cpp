@@ -22,36 +22,31 @@ void collapseRuns(std::vector<lang::Line>& lines, bool atDocumentStart) {
     lines = std::move(kept);
 }
 
+// A unit's lists of lines; its last line is dropped when blank if the unit
+// ends the document.
+void tidyUnit(lang::UnitProgram& unit, bool lastInDocument) {
+    collapseRuns(unit.declarations, false);
+    for (auto& step : unit.steps)
+        collapseRuns(step.lines, false);
+    auto& last = unit.steps.empty() ? unit.declarations : unit.steps.back().lines;
+    if (lastInDocument && !last.empty() && isBlank(last.back()))
+        last.pop_back();
+}
+
 } // namespace
 
 void tidyUnitBlankLines(lang::Document& document, int station) {
-    for (std::size_t i = 0; i < document.units.size(); ++i) {
-        auto& unit = document.units[i];
-        if (unit.station() != station)
-            continue;
-        collapseRuns(unit.declarations, false);
-        for (auto& step : unit.steps)
-            collapseRuns(step.lines, false);
-        auto& last = unit.steps.empty() ? unit.declarations : unit.steps.back().lines;
-        if (i + 1 == document.units.size() && !last.empty() && isBlank(last.back()))
-            last.pop_back();
-    }
+    for (std::size_t i = 0; i < document.units.size(); ++i)
+        if (document.units[i].station() == station)
+            tidyUnit(document.units[i], i + 1 == document.units.size());
 }
 
 void tidyBlankLines(lang::Document& document) {
     collapseRuns(document.preamble, true);
-    for (auto& unit : document.units) {
-        collapseRuns(unit.declarations, false);
-        for (auto& step : unit.steps)
-            collapseRuns(step.lines, false);
-    }
-    std::vector<lang::Line>* last = &document.preamble;
-    if (!document.units.empty()) {
-        auto& unit = document.units.back();
-        last = unit.steps.empty() ? &unit.declarations : &unit.steps.back().lines;
-    }
-    if (!last->empty() && isBlank(last->back()))
-        last->pop_back();
+    for (std::size_t i = 0; i < document.units.size(); ++i)
+        tidyUnit(document.units[i], i + 1 == document.units.size());
+    if (document.units.empty() && !document.preamble.empty() && isBlank(document.preamble.back()))
+        document.preamble.pop_back();
 }
 
 } // namespace rs::project
