@@ -30,4 +30,15 @@ int statementCount(const Network& network) {
     return count;
 }
 
+std::size_t lineCount(const Network& network) {
+    std::size_t count = network.record ? 1 : 0;
+    if (network.block)
+        count += network.block->lines.size();
+    for (const auto& item : network.items) {
+        const auto* rung = std::get_if<Rung>(&item);
+        count += rung ? rung->outputs.size() : 1;
+    }
+    return count;
+}
+
 } // namespace rs::ladder

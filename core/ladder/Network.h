@@ -5,6 +5,7 @@
 
 #include "blocks/BlockInstance.h"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <variant>
@@ -48,6 +49,9 @@ BlockCall unexpandedCall(blocks::BlockInstance instance);
 // Statements the network stands for: one per output, or the statements of
 // its block instance.
 int statementCount(const Network& network);
+// The lines of the step the network was read from (toLadder): its record,
+// block, statements and comment lines.
+std::size_t lineCount(const Network& network);
 
 // The ladder form of one step.
 struct StepLadder {

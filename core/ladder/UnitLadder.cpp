@@ -15,7 +15,7 @@ std::vector<StepPage> unitLadder(const lang::UnitProgram& unit, const UnitBlockS
             inStep = [&](const blocks::BlockInstance& instance) {
                 return shown(step, instance);
             };
-        StepPage page{step.address, toLadder(step, inStep), {}};
+        StepPage page{step.address, toLadder(step, inStep), {}, statement};
         for (const auto& network : page.ladder.networks) {
             page.firstStatements.push_back(statement);
             statement += static_cast<std::uint32_t>(statementCount(network));

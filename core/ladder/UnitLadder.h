@@ -17,6 +17,7 @@ struct StepPage {
     lang::StepAddress address;
     StepLadder ladder;
     std::vector<std::uint32_t> firstStatements; // one per network
+    std::uint32_t firstStatement = 0;           // the number of the step's first statement
 };
 
 // Every step of the unit's code in file order; block instances are boxes

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProjectChange.h"
 
+#include <stdexcept>
+
 namespace rs::project {
 
 namespace {
@@ -131,8 +133,41 @@ void ProjectChange::changeStep(lang::Step& step, const StepChange& change, bool 
     step.lines.insert(kept, added.begin(), added.end());
 }
 
+ProjectChange ProjectChange::ofStepLines(const Project& before, std::size_t unit, std::size_t step,
+                                         std::size_t first, std::size_t removed,
+                                         std::vector<lang::Line> added) {
+    const lang::Step& was = before.program.units.at(unit).steps.at(step);
+    if (first > was.lines.size() || removed > was.lines.size() - first)
+        throw std::out_of_range("ProjectChange::ofStepLines: the run is not in the step");
+    const auto from = was.lines.begin() + static_cast<std::ptrdiff_t>(first);
+    std::vector<lang::Line> old(from, from + static_cast<std::ptrdiff_t>(removed));
+    ProjectChange change;
+    if (old == added)
+        return change;
+    const lang::Step header{was.address, was.comment, was.location, {}};
+    UnitChange unitChange;
+    unitChange.index = unit;
+    unitChange.steps.push_back({step, {header, header}, first, {std::move(old), std::move(added)}});
+    change.m_unitChanges.push_back(std::move(unitChange));
+    return change;
+}
+
 bool ProjectChange::empty() const {
     return !m_records && !m_preamble && !m_units && m_unitChanges.empty();
+}
+
+std::optional<StepLinesChange> ProjectChange::stepLines(bool forward) const {
+    if (m_records || m_preamble || m_units || m_unitChanges.size() != 1)
+        return std::nullopt;
+    const UnitChange& unit = m_unitChanges.front();
+    if (unit.declarations || unit.allSteps || unit.steps.size() != 1)
+        return std::nullopt;
+    const StepChange& step = unit.steps.front();
+    if (!(step.header.before == step.header.after))
+        return std::nullopt;
+    return StepLinesChange{unit.index, step.index, step.firstLine,
+                           forward ? step.lines.before : step.lines.after,
+                           forward ? step.lines.after : step.lines.before};
 }
 
 void ProjectChange::apply(Project& project) const {

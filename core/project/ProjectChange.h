@@ -5,10 +5,22 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
 namespace rs::project {
+
+// A change that replaced a run of one step's lines and nothing else: lines
+// [first, first + removed.size()) of the step became `added`. The spans
+// point into the change that tells it.
+struct StepLinesChange {
+    std::size_t unit = 0; // its index in the program's units
+    std::size_t step = 0; // its index in the unit's steps
+    std::size_t first = 0;
+    std::span<const lang::Line> removed;
+    std::span<const lang::Line> added;
+};
 
 // The difference between two states of a project, as an undo step keeps it:
 // only the parts that differ (the preamble, one unit's declarations, one
@@ -22,7 +34,17 @@ public:
     // compared, so the cost is the unit's.
     static ProjectChange ofUnitCode(const Project& before, const Project& after, int station);
 
+    // Lines [first, first + removed) of step `step` of unit `unit` (indices in
+    // the program) replaced by `added`; the cost is the lines', not the step's.
+    static ProjectChange ofStepLines(const Project& before, std::size_t unit, std::size_t step,
+                                     std::size_t first, std::size_t removed,
+                                     std::vector<lang::Line> added);
+
     bool empty() const;
+    // What applying (forward) or reverting the change does, when all it does
+    // is replace a run of one step's lines: so that a view of the step can
+    // read again only what the run touches.
+    std::optional<StepLinesChange> stepLines(bool forward) const;
     // Turns the project as it was before into the project after, and back.
     void apply(Project& project) const;
     void revert(Project& project) const;

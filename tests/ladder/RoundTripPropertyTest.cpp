@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "RandomCondition.h"
+#include "RandomNetworks.h"
 #include "RandomProgram.h"
 #include "Sanitized.h"
 #include "StepText.h"
@@ -56,37 +57,6 @@ TEST(RoundTripProperty, ConditionToLadderAndBackIsTheIdentityWithEqualTruthTable
     EXPECT_GT(withTimers, static_cast<int>(cases / 6));
 }
 
-std::string randomComment(rs::test::RandomCondition& random) {
-    static const char* const comments[] = {"", "Safety outputs", "Muting \"A\" and B", "två\nrader",
-                                           "back\\slash"};
-    return comments[random.uniform(0, 4)];
-}
-
-// Puts network records into a random step, and gives some statements the
-// condition of the statement before, so that rungs with several outputs occur.
-void addNetworkStructure(rs::lang::Step& step, rs::test::RandomCondition& random) {
-    std::vector<rs::lang::Line> lines;
-    const rs::lang::Statement* previous = nullptr;
-    for (auto& line : step.lines) {
-        if (random.chance(20)) {
-            rs::project::Annotation record{"network", {}, {{"comment", randomComment(random)}}};
-            if (random.chance(20))
-                record.attributes.emplace_back("collapsed", "yes");
-            lines.push_back(
-                {rs::lang::CommentLine{rs::project::formatAnnotation(record), random.chance(20)},
-                 std::nullopt,
-                 {}});
-        }
-        if (auto* statement = std::get_if<rs::lang::Statement>(&line.body)) {
-            if (previous && random.chance(40))
-                statement->condition = previous->condition;
-            previous = statement;
-        }
-        lines.push_back(line);
-    }
-    step.lines = std::move(lines);
-}
-
 // Whole programs (statements, comment lines, blank lines, trailing comments,
 // records) go through the ladder model and come back line for line.
 TEST(RoundTripProperty, StepsToLadderAndBackGiveTheSameLines) {
@@ -98,7 +68,7 @@ TEST(RoundTripProperty, StepsToLadderAndBackGiveTheSameLines) {
         rs::lang::Document document = program.document();
         for (auto& unit : document.units)
             for (auto& step : unit.steps) {
-                addNetworkStructure(step, random);
+                rs::test::addNetworkStructure(step, random);
                 const StepLadder ladder = toLadder(step);
                 ASSERT_EQ(toLines(ladder), step.lines) << "seed " << seed;
                 ASSERT_EQ(rs::test::printLines(toLines(ladder)), rs::test::printLines(step.lines));

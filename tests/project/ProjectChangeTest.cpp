@@ -173,5 +173,58 @@ TEST(ProjectChange, RandomEditsOfAStepsLinesAreUndoneAndRedone) {
         ASSERT_TRUE(current == after) << "round " << round;
         change.revert(current);
         ASSERT_TRUE(current == before) << "round " << round;
+
+        // What a view of the step is told: the run, both ways, unless the
+        // step's header changed too.
+        if (change.empty())
+            continue;
+        const bool headerChanged = edited.comment != step.comment;
+        for (const bool forward : {true, false}) {
+            const auto run = change.stepLines(forward);
+            ASSERT_EQ(run.has_value(), !headerChanged) << "round " << round;
+            if (!run)
+                continue;
+            EXPECT_EQ(before.program.units[run->unit].station(), 2);
+            EXPECT_EQ(run->step, 0u);
+            std::vector<lang::Line> lines = (forward ? step : edited).lines;
+            const auto at = lines.begin() + static_cast<std::ptrdiff_t>(run->first);
+            ASSERT_TRUE(std::equal(run->removed.begin(), run->removed.end(), at));
+            lines.insert(lines.erase(at, at + static_cast<std::ptrdiff_t>(run->removed.size())),
+                         run->added.begin(), run->added.end());
+            ASSERT_EQ(lines, (forward ? edited : step).lines) << "round " << round;
+        }
     }
+}
+
+// An edit that knows its run of lines makes the change without comparing the step.
+TEST(ProjectChange, ARunOfAStepsLinesReplacedIsTheChangeOfTheProject) {
+    test::RandomProgram random(7);
+    project::Project before = start();
+    lang::Step& step = project::programOf(before, 2).steps.front();
+    for (int i = 0; i < 10; ++i)
+        step.lines.push_back({random.statement(), std::nullopt, {}});
+    const std::vector<lang::Line> added{{random.statement(), std::nullopt, {}},
+                                        {lang::CommentLine{" new", false}, std::nullopt, {}}};
+    const auto change = project::ProjectChange::ofStepLines(before, 1, 0, 3, 4, added);
+
+    project::Project after = before;
+    auto& lines = project::programOf(after, 2).steps.front().lines;
+    lines.insert(lines.erase(lines.begin() + 3, lines.begin() + 7), added.begin(), added.end());
+    project::Project current = before;
+    change.apply(current);
+    EXPECT_TRUE(current == after);
+    change.revert(current);
+    EXPECT_TRUE(current == before);
+    const auto run = change.stepLines(true);
+    ASSERT_TRUE(run);
+    EXPECT_EQ(run->unit, 1u);
+    EXPECT_EQ(run->first, 3u);
+    EXPECT_EQ(run->removed.size(), 4u);
+    EXPECT_EQ(run->added.size(), 2u);
+
+    // The same lines again change nothing; a run outside the step is refused.
+    const std::vector<lang::Line> same(step.lines.begin() + 2, step.lines.begin() + 4);
+    EXPECT_TRUE(project::ProjectChange::ofStepLines(before, 1, 0, 2, 2, same).empty());
+    EXPECT_THROW((void)project::ProjectChange::ofStepLines(before, 1, 0, 9, 2, {}),
+                 std::out_of_range);
 }

@@ -14,6 +14,8 @@
 #include <QFileInfo>
 #include <QUuid>
 
+#include <algorithm>
+
 namespace rs::ui {
 
 namespace {
@@ -123,6 +125,25 @@ bool ProjectDocument::replaceUnitCode(const QString& text, int station,
     return push(text, std::move(change), &whole);
 }
 
+bool ProjectDocument::replaceStepLines(const QString& text, int station, std::size_t step,
+                                       std::size_t first, std::size_t removed,
+                                       std::vector<lang::Line> lines) {
+    const auto& units = m_project.program.units;
+    const auto unit = std::find_if(units.begin(), units.end(), [&](const lang::UnitProgram& u) {
+        return u.station() == station;
+    });
+    if (unit == units.end())
+        return false;
+    project::ProjectChange change = project::ProjectChange::ofStepLines(
+        m_project, static_cast<std::size_t>(unit - units.begin()), step, first, removed,
+        std::move(lines));
+    if (m_permission != project::Permission::Configure)
+        return push(text, std::move(change), nullptr);
+    project::Project whole = m_project;
+    change.apply(whole);
+    return push(text, std::move(change), &whole);
+}
+
 bool ProjectDocument::push(const QString& text, project::ProjectChange change,
                            const project::Project* afterForPermission) {
     if (change.empty())
@@ -146,7 +167,9 @@ void ProjectDocument::applyChange(const project::ProjectChange& change, bool for
         change.apply(m_project);
     else
         change.revert(m_project);
+    m_changedStepLines = change.stepLines(forward);
     emit changed();
+    m_changedStepLines.reset();
     emitModification();
 }
 

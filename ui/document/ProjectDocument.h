@@ -15,8 +15,10 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <cstddef>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace rs::ui {
 
@@ -51,6 +53,16 @@ public:
     bool editUnitCode(const QString& text, int station,
                       const std::function<void(project::Project&)>& change);
     bool replaceUnitCode(const QString& text, int station, const project::Project& after);
+    // The same, of a run of one step's lines: lines [first, first + removed)
+    // of the unit's step `step` (its index) become `lines`. The cost is the run's.
+    bool replaceStepLines(const QString& text, int station, std::size_t step, std::size_t first,
+                          std::size_t removed, std::vector<lang::Line> lines);
+    // While changed() is emitted for an undo step that replaced a run of one
+    // step's lines and nothing else: which (ProjectChange::stepLines), so
+    // that a view of the step reads again only what the run touches.
+    const std::optional<project::StepLinesChange>& changedStepLines() const {
+        return m_changedStepLines;
+    }
 
     // The libraries the project uses (Project::libraries, found as
     // blocks::librariesFor finds them), read when first asked for and again
@@ -149,6 +161,7 @@ private:
     project::Permission m_permission = project::Permission::Full;
     project::Keyring m_keys;
     std::optional<lang::Diagnostic> m_tampering;
+    std::optional<project::StepLinesChange> m_changedStepLines;
     struct Libraries {
         std::vector<std::string> entries;
         QString path;

@@ -6,6 +6,7 @@
 #include "LadderLiveState.h"
 #ifndef Q_MOC_RUN
 #include "blocks/InstanceStanding.h"
+#include "ladder/Layout.h"
 #include "ladder/UnitLadder.h"
 #include "lang/Diagnostic.h"
 #endif
@@ -221,6 +222,17 @@ private:
     // Marks the networks the document's SettledCompile found changed since validation.
     void showChangesSinceValidation();
     void rebuild();
+    // Follows an undo step that replaced a run of one step's lines by reading
+    // and laying out only the networks the run touches; false where only
+    // rebuild() can (block instances, a new network pending, a page too long).
+    bool followStepLines();
+    ladder::LayoutContext layoutContext(int step, int network) const;
+    // Gives a network its item, laid out unless it is laid out already.
+    void showNetwork(int step, int network);
+    // A network whose item is laid out already, numbered where it is now.
+    void renumberNetwork(int step, int network);
+    // After items changed: placed, the cursor kept where it can be, repainted.
+    void settleItems();
     void placeItems();
     void updateTitle();
     QString pageTitle() const;
@@ -314,6 +326,7 @@ private:
     int m_namesVersion = 0;
     std::size_t m_undrawnLines = 0;               // the code's lines when above what the page draws
     std::optional<std::pair<int, int>> m_pending; // a new network not yet holding a rung
+    bool m_pendingShown = false;                  // m_steps holds it, which the project does not
     Placement m_placement = Placement::After;
     std::unique_ptr<LadderActions> m_actions;
     std::unique_ptr<IdleTool> m_idleTool;

@@ -11,12 +11,14 @@
 #include "StepHeaderItem.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
+#include "ladder/StepLineChange.h"
 #include "ladder/UnitLadder.h"
 
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 
 #include <algorithm>
+#include <span>
 
 namespace rs::ui {
 
@@ -25,8 +27,68 @@ void LadderPage::followModel() {
         endEditSession();
         setMessage(tr("The project changed, so the network's edits were dropped."));
     }
-    rebuild();
+    if (!followStepLines())
+        rebuild();
     updateTitle();
+}
+
+bool LadderPage::followStepLines() {
+    const auto& run = m_document ? m_document->changedStepLines() : std::nullopt;
+    if (!run || m_pendingShown || m_undrawnLines > 0 || !m_blockStatuses.empty())
+        return false;
+    const lang::UnitProgram& unit = m_document->project().program.units.at(run->unit);
+    if (unit.station() != m_station)
+        return true; // another unit's code: nothing the page shows
+    if (ladder::sequenceLines(unit, m_sequence) > ladder::kMostDrawnLines)
+        return false;
+    // The page's steps are the unit's steps of its sequence, in file order.
+    std::size_t shown = 0;
+    for (std::size_t s = 0; s < run->step; ++s)
+        shown += unit.steps[s].address.sequence == m_sequence ? 1 : 0;
+    const lang::Step& step = unit.steps.at(run->step);
+    std::int64_t shift = 0;
+    if (step.address.sequence == m_sequence) {
+        if (shown >= m_steps.size())
+            return false;
+        const auto change = ladder::followLineChange(m_steps[shown], step, run->first, run->removed,
+                                                     run->added.size());
+        if (!change)
+            return false;
+        auto& items = m_items[shown];
+        const auto at = [&](std::size_t index) {
+            return items.begin() + static_cast<std::ptrdiff_t>(index);
+        };
+        for (auto item = at(change->first); item != at(change->first + change->removed); ++item)
+            delete *item;
+        items.erase(at(change->first), at(change->first + change->removed));
+        items.insert(at(change->first), change->added, nullptr);
+        const auto s = static_cast<int>(shown);
+        for (std::size_t n = change->first; n < change->first + change->added; ++n)
+            showNetwork(s, static_cast<int>(n));
+        if (change->added != change->removed || change->statementShift != 0)
+            for (std::size_t n = change->first + change->added; n < items.size(); ++n)
+                renumberNetwork(s, static_cast<int>(n));
+        shift = change->statementShift;
+        ++shown;
+    } else {
+        const auto statements = [](std::span<const lang::Line> lines) {
+            return std::count_if(lines.begin(), lines.end(), [](const lang::Line& line) {
+                return std::holds_alternative<lang::Statement>(line.body);
+            });
+        };
+        shift = statements(run->added) - statements(run->removed);
+    }
+    // The statements of the steps after it are numbered anew.
+    for (std::size_t s = shown; shift != 0 && s < m_steps.size(); ++s) {
+        ladder::StepPage& page = m_steps[s];
+        page.firstStatement = static_cast<std::uint32_t>(page.firstStatement + shift);
+        for (auto& first : page.firstStatements)
+            first = static_cast<std::uint32_t>(first + shift);
+        for (std::size_t n = 0; n < m_items[s].size(); ++n)
+            renumberNetwork(static_cast<int>(s), static_cast<int>(n));
+    }
+    settleItems();
+    return true;
 }
 
 namespace {
@@ -67,6 +129,7 @@ void LadderPage::rebuild() {
     m_steps.clear();
     m_stepComments.clear();
     m_undrawnLines = 0;
+    m_pendingShown = false;
     m_blockStatuses.clear();
     if (m_document) {
         const project::Project& project = m_document->project();
@@ -106,7 +169,7 @@ void LadderPage::rebuild() {
         m_stepComments.clear();
         m_pending.reset();
     } else if (m_steps.empty() && m_document && m_sequence == 0) {
-        m_steps.push_back({{m_station, 0, 0}, {}, {}});
+        m_steps.push_back({{m_station, 0, 0}, {}, {}, 0});
         m_stepComments.emplace_back();
     }
     if (m_pending) {
@@ -120,6 +183,7 @@ void LadderPage::rebuild() {
                             : 0;
             page.ladder.networks.insert(page.ladder.networks.begin() + index, ladder::Network{});
             page.firstStatements.insert(page.firstStatements.begin() + index, first);
+            m_pendingShown = true;
         } else {
             m_pending.reset();
         }
@@ -147,28 +211,45 @@ void LadderPage::rebuild() {
         }
         m_headers[s]->setText(page.address.step, stepText.trimmed());
         m_headers[s]->setVisible(m_sequence != 0);
-        auto& items = m_items[s];
-        const int count = static_cast<int>(page.ladder.networks.size());
-        keepItemsWithTheirNetworks(items, page.ladder.networks);
-        for (int n = 0; n < count; ++n) {
-            if (!items[n]) {
-                items[n] = new NetworkItem(&m_drawing, static_cast<int>(s), n);
-                m_scene->addItem(items[n]);
-            }
-            ladder::LayoutContext context;
-            context.number = n + 1;
-            context.title = tr("Network %1").arg(n + 1);
-            context.firstStatement = page.firstStatements[n];
-            context.symbols = &m_symbols;
-            if (const blocks::InstanceStatus* status = blockStatus(static_cast<int>(s), n)) {
-                context.block = status->block;
-                context.language = BlockText::descriptionLanguage();
-                context.blockNote = blockNote(*status);
-            }
-            items[n]->setIndex(static_cast<int>(s), n);
-            items[n]->setNetwork(page.ladder.networks[n], context, m_namesVersion);
-        }
+        keepItemsWithTheirNetworks(m_items[s], page.ladder.networks);
+        for (int n = 0; n < static_cast<int>(page.ladder.networks.size()); ++n)
+            showNetwork(static_cast<int>(s), n);
     }
+    settleItems();
+}
+
+ladder::LayoutContext LadderPage::layoutContext(int step, int network) const {
+    ladder::LayoutContext context;
+    context.number = network + 1;
+    context.title = tr("Network %1").arg(network + 1);
+    context.firstStatement = m_steps[step].firstStatements[network];
+    context.symbols = &m_symbols;
+    if (const blocks::InstanceStatus* status = blockStatus(step, network)) {
+        context.block = status->block;
+        context.language = BlockText::descriptionLanguage();
+        context.blockNote = blockNote(*status);
+    }
+    return context;
+}
+
+void LadderPage::showNetwork(int step, int network) {
+    NetworkItem*& item = m_items[step][network];
+    if (!item) {
+        item = new NetworkItem(&m_drawing, step, network);
+        m_scene->addItem(item);
+    }
+    item->setIndex(step, network);
+    item->setNetwork(m_steps[step].ladder.networks[network], layoutContext(step, network),
+                     m_namesVersion);
+}
+
+void LadderPage::renumberNetwork(int step, int network) {
+    NetworkItem* item = m_items[step][network];
+    item->setIndex(step, network);
+    item->renumber(layoutContext(step, network));
+}
+
+void LadderPage::settleItems() {
     placeItems();
     // The cursor stays where it was while that place exists.
     LadderCursor& cursor = m_drawing.cursor;

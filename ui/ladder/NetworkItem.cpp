@@ -32,19 +32,8 @@ NetworkItem::NetworkItem(const LadderDrawing* drawing, int step, int index)
 bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::LayoutContext& context,
                              int namesVersion) {
     if (m_laidOut && network == m_network && namesVersion == m_namesVersion &&
-        context.block == m_block && context.blockNote == m_blockNote) {
-        if (context.number == m_number && context.firstStatement == m_firstStatement)
-            return false;
-        // Moved by an edit above it: the same drawing, numbered anew.
-        ladder::LayoutContext from = context;
-        from.number = m_number;
-        from.firstStatement = m_firstStatement;
-        ladder::moveLayout(m_layout, from, context);
-        m_number = context.number;
-        m_firstStatement = context.firstStatement;
-        update();
-        return true;
-    }
+        context.block == m_block && context.blockNote == m_blockNote)
+        return renumber(context);
     prepareGeometryChange();
     m_network = network;
     m_number = context.number;
@@ -56,6 +45,19 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
     m_layout = ladder::layoutNetwork(network, context);
     m_option = ladder::configOptionOf(network);
     m_laidOut = true;
+    update();
+    return true;
+}
+
+bool NetworkItem::renumber(const ladder::LayoutContext& context) {
+    if (context.number == m_number && context.firstStatement == m_firstStatement)
+        return false;
+    ladder::LayoutContext from = context;
+    from.number = m_number;
+    from.firstStatement = m_firstStatement;
+    ladder::moveLayout(m_layout, from, context);
+    m_number = context.number;
+    m_firstStatement = context.firstStatement;
     update();
     return true;
 }

@@ -25,6 +25,9 @@ public:
     // Lays the network out unless it is the one laid out already. Returns whether it did.
     bool setNetwork(const ladder::Network& network, const ladder::LayoutContext& context,
                     int namesVersion);
+    // The network laid out already, numbered as `context` says (an edit
+    // above it moved it): nothing is laid out again. Returns whether it moved.
+    bool renumber(const ladder::LayoutContext& context);
     void setIndex(int step, int index);
     int step() const { return m_step; }
     int index() const { return m_index; }
