@@ -112,29 +112,87 @@ std::vector<lang::Line> toLines(const Rung& rung) {
     return lines;
 }
 
-std::vector<lang::Line> toLines(const StepLadder& step) {
-    std::vector<lang::Line> lines = step.leading;
-    const bool anyRecord = std::any_of(step.networks.begin(), step.networks.end(),
-                                       [](const Network& n) { return n.record.has_value(); });
-    const bool anyNeeds = std::any_of(step.networks.begin(), step.networks.end(), needsOwnRecord);
-    bool recording = anyNeeds && !anyRecord;
-    for (const auto& network : step.networks) {
-        recording = recording || needsOwnRecord(network);
-        if (network.block)
-            lines.insert(lines.end(), network.block->lines.begin(), network.block->lines.end());
-        else if (recording)
-            lines.push_back(recordLine(network));
-        for (const auto& item : network.items) {
-            if (const auto* rung = std::get_if<Rung>(&item)) {
-                auto statements = toLines(*rung);
-                lines.insert(lines.end(), std::make_move_iterator(statements.begin()),
-                             std::make_move_iterator(statements.end()));
-            } else {
-                lines.push_back(std::get<lang::Line>(item));
-            }
+namespace {
+
+// Writes a network; `recording` says whether the networks before it were
+// written with records, and then whether it was.
+void appendLines(std::vector<lang::Line>& lines, const Network& network, bool& recording) {
+    recording = recording || needsOwnRecord(network);
+    if (network.block)
+        lines.insert(lines.end(), network.block->lines.begin(), network.block->lines.end());
+    else if (recording)
+        lines.push_back(recordLine(network));
+    for (const auto& item : network.items) {
+        if (const auto* rung = std::get_if<Rung>(&item)) {
+            auto statements = toLines(*rung);
+            lines.insert(lines.end(), std::make_move_iterator(statements.begin()),
+                         std::make_move_iterator(statements.end()));
+        } else {
+            lines.push_back(std::get<lang::Line>(item));
         }
     }
+}
+
+bool hasRecord(const Network& network) {
+    return network.record.has_value();
+}
+
+} // namespace
+
+std::vector<lang::Line> toLines(const StepLadder& step) {
+    std::vector<lang::Line> lines = step.leading;
+    const bool anyRecord = std::any_of(step.networks.begin(), step.networks.end(), hasRecord);
+    const bool anyNeeds = std::any_of(step.networks.begin(), step.networks.end(), needsOwnRecord);
+    bool recording = anyNeeds && !anyRecord;
+    for (const auto& network : step.networks)
+        appendLines(lines, network, recording);
     return lines;
+}
+
+std::optional<LineRun> networkRunLines(const StepLadder& step, std::size_t first,
+                                       std::size_t removed, const std::vector<Network>& added) {
+    const auto& networks = step.networks;
+    if (first > networks.size() || removed > networks.size() - first)
+        return std::nullopt;
+    const auto begin = networks.begin() + static_cast<std::ptrdiff_t>(first);
+    const auto end = begin + static_cast<std::ptrdiff_t>(removed);
+    const auto isBlock = [](const Network& n) {
+        return n.block.has_value();
+    };
+    if (std::any_of(begin, end, isBlock) || std::any_of(added.begin(), added.end(), isBlock))
+        return std::nullopt;
+    // Whether a network is written with a record depends on the networks
+    // before it and, in a step where none had one, on all of them (toLines).
+    const auto any = [](auto from, auto to, auto what) {
+        return std::any_of(from, to, what);
+    };
+    const bool recordsKept =
+        any(networks.begin(), begin, hasRecord) || any(end, networks.end(), hasRecord);
+    const bool needsKept =
+        any(networks.begin(), begin, needsOwnRecord) || any(end, networks.end(), needsOwnRecord);
+    const bool was = (needsKept || any(begin, end, needsOwnRecord)) &&
+                     !(recordsKept || any(begin, end, hasRecord));
+    const bool is = (needsKept || any(added.begin(), added.end(), needsOwnRecord)) &&
+                    !(recordsKept || any(added.begin(), added.end(), hasRecord));
+    if (was != is)
+        return std::nullopt;
+    bool recording = is || any(networks.begin(), begin, needsOwnRecord);
+    // After the run, networks that need no record of their own are written
+    // with one only while the networks before them were.
+    const bool wasRecording = recording || any(begin, end, needsOwnRecord);
+    const bool isRecording = recording || any(added.begin(), added.end(), needsOwnRecord);
+    if (wasRecording != isRecording && end != networks.end() && !needsOwnRecord(*end))
+        return std::nullopt;
+
+    LineRun run;
+    run.first = step.leading.size();
+    for (auto network = networks.begin(); network != begin; ++network)
+        run.first += lineCount(*network);
+    for (auto network = begin; network != end; ++network)
+        run.removed += lineCount(*network);
+    for (const auto& network : added)
+        appendLines(run.lines, network, recording);
+    return run;
 }
 
 } // namespace rs::ladder

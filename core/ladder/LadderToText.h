@@ -3,6 +3,8 @@
 
 #include "Network.h"
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace rs::ladder {
@@ -23,5 +25,22 @@ std::vector<lang::Line> toLines(const Rung& rung);
 // once one network needs a record every network gets one
 // (docs/file-format.md).
 std::vector<lang::Line> toLines(const StepLadder& step);
+
+// Lines [first, first + removed) of a step's text and what they become.
+struct LineRun {
+    std::size_t first = 0;
+    std::size_t removed = 0;
+    std::vector<lang::Line> lines;
+};
+
+// What replacing networks [first, first + removed) of `step` by `added`
+// changes in the step's lines as toLines writes them, at the cost of those
+// networks: `step` must be as read from its lines (toLadder), so that its
+// networks give back the lines they were read from. Nothing when more of the
+// step is written anew (a record the other networks gain or lose) or a block
+// network is among the networks removed or added (its instance's statements
+// and variables come from its block).
+std::optional<LineRun> networkRunLines(const StepLadder& step, std::size_t first,
+                                       std::size_t removed, const std::vector<Network>& added);
 
 } // namespace rs::ladder

@@ -55,11 +55,11 @@ std::optional<NetworkRunChange> followLineChange(StepPage& page, const lang::Ste
     // network's last line may be its comments) to the last the run touches;
     // the leading lines too when the run begins among them.
     const bool fromLeading = first <= leading;
-    const std::size_t from =
-        fromLeading ? 0
-                    : static_cast<std::size_t>(
-                          std::upper_bound(starts.begin(), starts.end() - 1, first - 1) -
-                          starts.begin() - 1);
+    std::size_t from = fromLeading
+                           ? 0
+                           : static_cast<std::size_t>(
+                                 std::upper_bound(starts.begin(), starts.end() - 1, first - 1) -
+                                 starts.begin() - 1);
     std::size_t to = static_cast<std::size_t>(
         std::lower_bound(starts.begin() + static_cast<std::ptrdiff_t>(from), starts.end() - 1,
                          end) -
@@ -86,6 +86,18 @@ std::optional<NetworkRunChange> followLineChange(StepPage& page, const lang::Ste
     }
     if (!fromLeading && !read.leading.empty())
         return std::nullopt;
+    // The networks read again that are what they were stay, with their items.
+    std::size_t same = 0;
+    while (from + same < to && same < read.networks.size() &&
+           read.networks[same] == networks[from + same])
+        ++same;
+    read.networks.erase(read.networks.begin(),
+                        read.networks.begin() + static_cast<std::ptrdiff_t>(same));
+    from += same;
+    while (from < to && !read.networks.empty() && read.networks.back() == networks[to - 1]) {
+        read.networks.pop_back();
+        --to;
+    }
 
     const auto at = [](auto& vector, std::size_t index) {
         return vector.begin() + static_cast<std::ptrdiff_t>(index);
@@ -94,7 +106,10 @@ std::optional<NetworkRunChange> followLineChange(StepPage& page, const lang::Ste
         statementsOf(read.networks) -
         statementsOf(std::span<const Network>(networks).subspan(from, to - from));
     std::uint32_t statement =
-        from < networks.size() ? page.firstStatements[from] : page.firstStatement;
+        from < networks.size() ? page.firstStatements[from]
+        : from > 0             ? page.firstStatements[from - 1] +
+                         static_cast<std::uint32_t>(statementCount(networks[from - 1]))
+                   : page.firstStatement;
     std::vector<std::uint32_t> numbers;
     numbers.reserve(read.networks.size());
     for (const auto& network : read.networks) {

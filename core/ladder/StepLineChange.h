@@ -11,7 +11,8 @@
 namespace rs::ladder {
 
 // Networks [first, first + removed) of a step's page replaced by `added`
-// others, and how far the numbers of the statements after them moved.
+// others (only those that differ), and how far the numbers of the
+// statements after them moved.
 struct NetworkRunChange {
     std::size_t first = 0;
     std::size_t removed = 0;

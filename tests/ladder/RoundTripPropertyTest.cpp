@@ -101,3 +101,62 @@ TEST(RoundTripProperty, StepsToLadderAndBackGiveTheSameLines) {
 }
 
 } // namespace
+
+namespace {
+
+// Networks of random steps replaced by networks of other steps: the lines
+// the run says change are the lines toLines writes for the whole new step,
+// and the run is refused only where records of other networks change.
+TEST(RoundTripProperty, ANetworkRunsLinesAreTheWholeStepsLinesWhereTheyChange) {
+    int written = 0;
+    int refused = 0;
+    for (unsigned seed = 1; seed <= 300; ++seed) {
+        rs::test::RandomProgram program(seed);
+        rs::test::RandomCondition random(seed);
+        rs::lang::Document document = program.document();
+        std::vector<Network> donors;
+        std::vector<StepLadder> ladders;
+        for (auto& unit : document.units)
+            for (auto& step : unit.steps) {
+                rs::test::addNetworkStructure(step, random);
+                ladders.push_back(toLadder(step));
+                donors.insert(donors.end(), ladders.back().networks.begin(),
+                              ladders.back().networks.end());
+            }
+        for (const auto& ladder : ladders) {
+            const std::vector<rs::lang::Line> lines = toLines(ladder);
+            const auto size = static_cast<int>(ladder.networks.size());
+            const auto first = static_cast<std::size_t>(random.uniform(0, size));
+            const auto removed = static_cast<std::size_t>(
+                random.uniform(0, std::min(3, size - static_cast<int>(first))));
+            std::vector<Network> added;
+            for (int i = random.uniform(0, 3); i > 0 && !donors.empty(); --i)
+                added.push_back(donors[static_cast<std::size_t>(
+                    random.uniform(0, static_cast<int>(donors.size()) - 1))]);
+            StepLadder changed = ladder;
+            const auto at = changed.networks.begin() + static_cast<std::ptrdiff_t>(first);
+            changed.networks.insert(
+                changed.networks.erase(at, at + static_cast<std::ptrdiff_t>(removed)),
+                added.begin(), added.end());
+
+            const auto run = networkRunLines(ladder, first, removed, added);
+            if (!run) {
+                ++refused;
+                continue;
+            }
+            std::vector<rs::lang::Line> spliced = lines;
+            ASSERT_LE(run->first + run->removed, spliced.size());
+            const auto from = spliced.begin() + static_cast<std::ptrdiff_t>(run->first);
+            spliced.insert(spliced.erase(from, from + static_cast<std::ptrdiff_t>(run->removed)),
+                           run->lines.begin(), run->lines.end());
+            ASSERT_EQ(rs::test::printLines(spliced), rs::test::printLines(toLines(changed)))
+                << "seed " << seed;
+            ++written;
+        }
+    }
+    EXPECT_GT(written, 300);
+    EXPECT_GT(refused, 0);
+    EXPECT_LT(refused * 4, written);
+}
+
+} // namespace

@@ -15,6 +15,7 @@
 #include "blocks/ProjectInstances.h"
 #include "document/ProjectDocument.h"
 #include "ladder/CursorNavigation.h"
+#include "ladder/LadderToText.h"
 #include "project/Sequences.h"
 #include "project/UnitSettings.h"
 #include "project/UnitText.h"
@@ -50,8 +51,8 @@ bool LadderPage::editNetwork(const QString& name, int step, int network,
         return false;
     NetworkItem* item = networkItem(step, network);
     const std::vector<QString> before = signaturesOf(item->layout());
-    ladder::StepLadder ladder = m_steps[step].ladder;
-    const ladder::EditResult result = edit(ladder.networks[network]);
+    ladder::Network edited = m_steps[step].ladder.networks[network];
+    const ladder::EditResult result = edit(edited);
     if (!result.done()) {
         setMessage(tr("Not done: %1").arg(QString::fromStdString(result.refusal)));
         return false;
@@ -59,19 +60,52 @@ bool LadderPage::editNetwork(const QString& name, int step, int network,
     setMessage({});
     if (const EditSession* session = editSession();
         session && session->step == step && session->network == network) {
-        m_steps[step].ladder = std::move(ladder);
-        ladder::LayoutContext context;
-        context.number = network + 1;
-        context.title = tr("Network %1").arg(network + 1);
-        context.firstStatement = m_steps[step].firstStatements[network];
-        context.symbols = &m_symbols;
-        item->setNetwork(m_steps[step].ladder.networks[network], context, m_namesVersion);
+        m_steps[step].ladder.networks[network] = std::move(edited);
+        showNetwork(step, network);
         placeItems();
     } else {
-        commitStep(name, step, std::move(ladder));
+        commitNetworks(name, step, network, 1, {std::move(edited)});
     }
     selectAdded(step, network, before);
     return true;
+}
+
+std::optional<std::size_t> LadderPage::unitStepIndex(int step) const {
+    if (step < 0 || step >= stepCount())
+        return std::nullopt;
+    const auto& units = m_document->project().program.units;
+    for (const auto& unit : units) {
+        if (unit.station() != m_station)
+            continue;
+        int shown = 0;
+        for (std::size_t s = 0; s < unit.steps.size(); ++s)
+            if (unit.steps[s].address.sequence == m_sequence && shown++ == step)
+                return unit.steps[s].address == m_steps[step].address
+                           ? std::optional<std::size_t>(s)
+                           : std::nullopt;
+    }
+    return std::nullopt;
+}
+
+void LadderPage::commitNetworks(const QString& name, int step, int first, int removed,
+                                std::vector<ladder::Network> added) {
+    // A network without rungs is the page's until it holds one.
+    std::erase_if(added, [](const ladder::Network& n) { return n.items.empty() && !n.block; });
+    if (const auto unitStep = unitStepIndex(step); unitStep && !m_pendingShown) {
+        if (auto run =
+                ladder::networkRunLines(m_steps[step].ladder, static_cast<std::size_t>(first),
+                                        static_cast<std::size_t>(removed), added)) {
+            m_document->replaceStepLines(name, m_station, *unitStep, run->first, run->removed,
+                                         std::move(run->lines));
+            return;
+        }
+    }
+    ladder::StepLadder ladder = m_steps[step].ladder;
+    const auto at = ladder.networks.begin() + first;
+    ladder.networks.insert(ladder.networks.erase(at, at + removed),
+                           std::make_move_iterator(added.begin()),
+                           std::make_move_iterator(added.end()));
+    commitStep(name, step, std::move(ladder));
 }
 
 void LadderPage::commitStep(const QString& name, int step, ladder::StepLadder ladder) {

@@ -291,6 +291,14 @@ private:
     bool editNetwork(const QString& name, int step, int network,
                      const std::function<ladder::EditResult(ladder::Network&)>& edit);
     void commitStep(const QString& name, int step, ladder::StepLadder ladder);
+    // Networks [first, first + removed) of a step replaced by `added`, as one
+    // undo step: only their lines are written where the step's other
+    // networks keep theirs (ladder::networkRunLines), else the whole step.
+    void commitNetworks(const QString& name, int step, int first, int removed,
+                        std::vector<ladder::Network> added);
+    // The index in the unit's steps of the page's step; nothing for a step
+    // the project does not hold yet.
+    std::optional<std::size_t> unitStepIndex(int step) const;
     // Several steps changed by one edit, as one undo step.
     void commitSteps(const QString& name, std::vector<std::pair<int, ladder::StepLadder>> steps);
     void selectAdded(int step, int network, const std::vector<QString>& before);

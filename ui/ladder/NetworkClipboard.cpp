@@ -72,13 +72,11 @@ void LadderPage::pasteNetworks() {
     const LadderCursor cursor = m_drawing.cursor;
     const int step = cursor.valid() ? cursor.step : stepCount() - 1;
     const int index = cursor.valid() ? cursor.network + 1 : networkCount(step);
-    ladder::StepLadder ladder = m_steps[step].ladder;
     const auto count = static_cast<int>(read.networks.size());
-    ladder.networks.insert(ladder.networks.begin() + index, read.networks.begin(),
-                           read.networks.end());
     if (m_pending && m_pending->first == step && m_pending->second >= index)
         m_pending->second += count;
-    commitStep(tr("Paste %n Network(s)", nullptr, count), step, std::move(ladder));
+    commitNetworks(tr("Paste %n Network(s)", nullptr, count), step, index, 0,
+                   std::move(read.networks));
     m_drawing.marked.clear();
     for (int n = index; n < index + count && n < networkCount(step); ++n)
         m_drawing.marked.insert({step, n});
@@ -94,19 +92,30 @@ void LadderPage::deleteNetworks() {
     undoNetwork();
     std::sort(chosen.begin(), chosen.end());
     const int step = chosen.front().first;
-    ladder::StepLadder ladder = m_steps[step].ladder;
-    int removed = 0;
-    for (auto it = chosen.rbegin(); it != chosen.rend(); ++it)
-        if (it->first == step && it->second < static_cast<int>(ladder.networks.size())) {
-            if (m_pending == *it)
-                m_pending.reset();
-            ladder.networks.erase(ladder.networks.begin() + it->second);
-            ++removed;
-        }
-    m_drawing.marked.clear();
+    std::erase_if(chosen, [&](const std::pair<int, int>& c) {
+        return c.first != step || c.second >= networkCount(step);
+    });
+    if (chosen.empty())
+        return;
     const int first = chosen.front().second;
-    commitStep(tr("Delete %n Network(s)", nullptr, removed), step, std::move(ladder));
-    rebuild();
+    const auto removed = static_cast<int>(chosen.size());
+    // The network the page holds alone goes without an undo step.
+    const bool pendingRemoved =
+        m_pending && std::find(chosen.begin(), chosen.end(), *m_pending) != chosen.end();
+    if (pendingRemoved)
+        m_pending.reset();
+    m_drawing.marked.clear();
+    const QString name = tr("Delete %n Network(s)", nullptr, removed);
+    if (removed > 0 && chosen.back().second - first + 1 == removed) {
+        commitNetworks(name, step, first, removed, {});
+    } else {
+        ladder::StepLadder ladder = m_steps[step].ladder;
+        for (auto it = chosen.rbegin(); it != chosen.rend(); ++it)
+            ladder.networks.erase(ladder.networks.begin() + it->second);
+        commitStep(name, step, std::move(ladder));
+    }
+    if (pendingRemoved)
+        rebuild();
     if (networkCount(step) > 0)
         setCursor({step, std::min(first, networkCount(step) - 1), std::nullopt, std::nullopt, -1});
     else

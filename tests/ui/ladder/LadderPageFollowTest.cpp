@@ -98,7 +98,7 @@ TEST(LadderPageFollow, RandomEditsUndoAndRedoLeaveThePagesAsPagesOpenedAnew) {
             const int step = uniform(0, page.stepCount() - 1);
             const int networks = page.networkCount(step);
             std::string what;
-            switch (uniform(0, 6)) {
+            switch (uniform(0, 7)) {
             case 0:
             case 1:
                 what = "paste";
@@ -123,11 +123,24 @@ TEST(LadderPageFollow, RandomEditsUndoAndRedoLeaveThePagesAsPagesOpenedAnew) {
                     page.cutNetworks();
                 }
                 break;
-            case 4:
+            case 4: {
+                // An edit of one network: an element or output of it deleted.
+                what = "delete element";
+                const auto& elements =
+                    page.networkItem(step, uniform(0, networks - 1))->layout().elements;
+                if (!elements.empty()) {
+                    const auto& element = elements[static_cast<std::size_t>(
+                        uniform(0, static_cast<int>(elements.size()) - 1))];
+                    ASSERT_TRUE(page.selectElement(element.statement, element.element));
+                    page.deleteSelection();
+                }
+                break;
+            }
+            case 5:
                 what = "undo";
                 document.undoStack()->undo();
                 break;
-            case 5:
+            case 6:
                 what = "redo";
                 document.undoStack()->redo();
                 break;
