@@ -3,6 +3,8 @@
 
 #include "compiler/Compiler.h"
 #include "document/ProjectDocument.h"
+#include "ladder/LadderPage.h"
+#include "ladder/NetworkItem.h"
 #include "output/CompileOutput.h"
 #include "project/ProjectFile.h"
 #include "shell/MainWindow.h"
@@ -13,6 +15,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QTemporaryDir>
+#include <QUndoStack>
 
 #include <benchmark/benchmark.h>
 
@@ -115,6 +118,54 @@ void BM_RecheckAfterTyping(benchmark::State& state) {
     state.counters["lines"] = editor->lines();
 }
 BENCHMARK(BM_RecheckAfterTyping)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+// One ladder edit in the window (an element of a network in the middle of
+// unit 0 deleted, then undone), from the command to the window idle again:
+// what every view of the project that follows the edit adds to the page's
+// own cost (rungsmith_bench_ladder_scroll).
+void BM_LadderEditInTheWindow(benchmark::State& state) {
+    QTemporaryDir directory;
+    const QString path = directory.filePath(QStringLiteral("plant.sps"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        state.SkipWithError("cannot write the project");
+        return;
+    }
+    file.write(QByteArray::fromStdString(plant().text));
+    file.close();
+    rs::ui::MainWindow window;
+    if (!window.loadFile(path).isEmpty()) {
+        state.SkipWithError("cannot open the project");
+        return;
+    }
+    window.resize(1280, 900);
+    window.show();
+    QApplication::processEvents();
+    rs::ui::LadderPage* page = window.ladderPage();
+    const int middle = page->networkCount(0) / 2;
+    const auto& element = page->networkItem(0, middle)->layout().elements.front();
+    const std::uint32_t statement = element.statement;
+    const std::uint16_t number = element.element;
+    const auto timed = [](const auto& command) {
+        const auto start = std::chrono::steady_clock::now();
+        command();
+        QApplication::processEvents();
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+    };
+    double edit = 0;
+    double undo = 0;
+    for (auto _ : state) {
+        page->selectElement(statement, number);
+        edit += timed([&] { page->deleteSelection(); });
+        undo += timed([&] { page->document()->undoStack()->undo(); });
+    }
+    const auto iterations = static_cast<double>(state.iterations());
+    state.counters["edit_ms"] = edit / iterations;
+    state.counters["undo_ms"] = undo / iterations;
+    state.counters["networks"] = page->networkCount(0);
+}
+BENCHMARK(BM_LadderEditInTheWindow)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 } // namespace
 

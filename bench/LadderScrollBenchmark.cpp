@@ -4,6 +4,7 @@
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "ladder/LadderView.h"
+#include "ladder/NetworkItem.h"
 #include "project/ProjectFile.h"
 
 #include <QApplication>
@@ -131,15 +132,58 @@ void BM_PasteAndUndoMidway(benchmark::State& state) {
     const int middle = open.page->networkCount(0) / 2;
     open.page->setCursor({0, middle, std::nullopt, std::nullopt, -1});
     open.page->copyNetworks();
+    double paste = 0;
+    double undo = 0;
     for (auto _ : state) {
+        auto start = Clock::now();
         open.page->pasteNetworks();
         open.paintFrame();
+        paste += millisecondsSince(start);
+        start = Clock::now();
         open.document->undoStack()->undo();
         open.paintFrame();
+        undo += millisecondsSince(start);
     }
+    const auto iterations = static_cast<double>(state.iterations());
     state.counters["networks"] = open.page->networkCount(0);
+    state.counters["paste_ms"] = paste / iterations;
+    state.counters["undo_ms"] = undo / iterations;
 }
 BENCHMARK(BM_PasteAndUndoMidway)
+    ->Arg(kPlantStatements)
+    ->Arg(kSmallUnitStatements)
+    ->Unit(benchmark::kMillisecond);
+
+// One element deleted from a network in the middle of the page (an edit of
+// one network, as inserting or changing an element is), a frame, the undo
+// and a frame: each half is one ladder edit as the user waits for it.
+void BM_DeleteElementAndUndoMidway(benchmark::State& state) {
+    OpenPage open(static_cast<int>(state.range(0)));
+    const int middle = open.page->networkCount(0) / 2;
+    const auto& element = open.page->networkItem(0, middle)->layout().elements.front();
+    const std::uint32_t statement = element.statement;
+    const std::uint16_t number = element.element;
+    double edit = 0;
+    double undo = 0;
+    for (auto _ : state) {
+        if (!open.page->selectElement(statement, number)) {
+            state.SkipWithError("the element is not on the page");
+            break;
+        }
+        auto start = Clock::now();
+        open.page->deleteSelection();
+        open.paintFrame();
+        edit += millisecondsSince(start);
+        start = Clock::now();
+        open.document->undoStack()->undo();
+        open.paintFrame();
+        undo += millisecondsSince(start);
+    }
+    const auto iterations = static_cast<double>(state.iterations());
+    state.counters["edit_ms"] = edit / iterations;
+    state.counters["undo_ms"] = undo / iterations;
+}
+BENCHMARK(BM_DeleteElementAndUndoMidway)
     ->Arg(kPlantStatements)
     ->Arg(kSmallUnitStatements)
     ->Unit(benchmark::kMillisecond);

@@ -43,6 +43,9 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
     m_block = context.block;
     m_blockNote = context.blockNote;
     m_layout = ladder::layoutNetwork(network, context);
+    m_title = context.title;
+    m_layoutNumber = m_number;
+    m_layoutFirstStatement = m_firstStatement;
     m_option = ladder::configOptionOf(network);
     m_laidOut = true;
     update();
@@ -52,14 +55,27 @@ bool NetworkItem::setNetwork(const ladder::Network& network, const ladder::Layou
 bool NetworkItem::renumber(const ladder::LayoutContext& context) {
     if (context.number == m_number && context.firstStatement == m_firstStatement)
         return false;
-    ladder::LayoutContext from = context;
-    from.number = m_number;
-    from.firstStatement = m_firstStatement;
-    ladder::moveLayout(m_layout, from, context);
     m_number = context.number;
     m_firstStatement = context.firstStatement;
+    m_title = context.title;
     update();
     return true;
+}
+
+const ladder::NetworkLayout& NetworkItem::layout() const {
+    if (m_layoutNumber != m_number || m_layoutFirstStatement != m_firstStatement) {
+        ladder::LayoutContext from;
+        from.number = m_layoutNumber;
+        from.firstStatement = m_layoutFirstStatement;
+        ladder::LayoutContext to;
+        to.number = m_number;
+        to.title = m_title;
+        to.firstStatement = m_firstStatement;
+        ladder::moveLayout(m_layout, from, to);
+        m_layoutNumber = m_number;
+        m_layoutFirstStatement = m_firstStatement;
+    }
+    return m_layout;
 }
 
 void NetworkItem::setIndex(int step, int index) {
@@ -100,8 +116,8 @@ int NetworkItem::elementAt(const QPointF& point) const {
     if (m_collapsed)
         return -1;
     const QPointF local = point - QPointF(kGutter, 0);
-    for (std::size_t i = 0; i < m_layout.elements.size(); ++i)
-        if (m_layout.elements[i].cell.contains(local))
+    for (std::size_t i = 0; i < layout().elements.size(); ++i)
+        if (layout().elements[i].cell.contains(local))
             return static_cast<int>(i);
     return -1;
 }
@@ -112,7 +128,7 @@ QRectF NetworkItem::elementRect(const ladder::ElementLayout& element) const {
 
 QRectF NetworkItem::groupRect(const ladder::ElementPath& path) const {
     QRectF rect;
-    for (const auto& element : m_layout.elements)
+    for (const auto& element : layout().elements)
         if (element.output < 0 && element.path.item == path.item &&
             startsWith(element.path.node, path.node))
             rect = rect.united(elementRect(element));
@@ -141,7 +157,7 @@ void NetworkItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     if (m_collapsed)
         painter->setClipRect(QRectF(0, 0, m_layout.size.width(),
                                     m_layout.metrics.titleHeight + m_layout.metrics.margin));
-    render::paintNetwork(*painter, m_layout, style,
+    render::paintNetwork(*painter, layout(), style,
                          m_drawing->live ? &m_drawing->live->power : nullptr);
     painter->restore();
     if (m_drawing->marked.count({m_step, m_index}) > 0)
@@ -234,14 +250,14 @@ void NetworkItem::paintSketch(QPainter& painter) const {
                             m_layout.metrics.titleHeight * 0.6),
                      style.commentInk);
     if (!m_collapsed) {
-        for (const auto& wire : m_layout.wires) {
+        for (const auto& wire : layout().wires) {
             const bool powered = power && power->powers(wire.feed);
             painter.setPen(QPen(powered ? style.powered : style.ink, wire.rail ? 3 : 0));
             painter.drawLine(wire.line);
         }
         // Live, an element that is open (or an output that is 0) is only
         // outlined, as it is hollow at full size.
-        for (const auto& element : m_layout.elements) {
+        for (const auto& element : layout().elements) {
             const bool powered = power && power->conducts(element.statement, element.element);
             const QColor& colour = powered ? style.powered : style.ink;
             if (!power || power->closed(element.statement, element.element)) {
@@ -272,7 +288,7 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
         } else if (cursor.node) {
             selected = groupRect(*cursor.node);
         } else {
-            for (const auto& element : m_layout.elements)
+            for (const auto& element : layout().elements)
                 if (element.output == cursor.outputIndex &&
                     element.path.item == cursor.output->item)
                     selected = elementRect(element);
@@ -291,7 +307,7 @@ void NetworkItem::paintOverlay(QPainter& painter) const {
         return;
     QFont small = drawing.style.font(drawing.style.labelPixelSize, true);
     painter.setFont(small);
-    for (const auto& element : m_layout.elements) {
+    for (const auto& element : layout().elements) {
         const auto key = std::make_pair(element.statement, element.element);
         const QRectF cell = elementRect(element);
         const bool problem =

@@ -32,7 +32,9 @@ public:
     int step() const { return m_step; }
     int index() const { return m_index; }
     const ladder::Network& network() const { return m_network; }
-    const ladder::NetworkLayout& layout() const { return m_layout; }
+    // Numbered as the item is now (renumber() only notes the numbers; they
+    // are written into the layout when it is first asked for).
+    const ladder::NetworkLayout& layout() const;
     std::uint32_t firstStatement() const { return m_firstStatement; }
     // A Config Option network: drawn with its check box at the right.
     const std::optional<ladder::ConfigOption>& option() const { return m_option; }
@@ -69,9 +71,14 @@ private:
     int m_step;
     int m_index;
     ladder::Network m_network;
-    ladder::NetworkLayout m_layout;
+    mutable ladder::NetworkLayout m_layout;
     int m_number = 0;
     std::uint32_t m_firstStatement = 0;
+    QString m_title;
+    // What m_layout is numbered with; an edit above moves many networks, of
+    // which a frame draws a few.
+    mutable int m_layoutNumber = 0;
+    mutable std::uint32_t m_layoutFirstStatement = 0;
     std::uint32_t m_statementCount = 0;
     int m_namesVersion = -1;
     const blocks::BlockDefinition* m_block = nullptr; // of a block network, as laid out

@@ -500,8 +500,10 @@ ProgramEditor* MainWindow::editor() const {
 
 void MainWindow::documentAdded(ProjectDocument* document) {
     m_undoGroup.addStack(document->undoStack());
-    connect(document, &ProjectDocument::changed, this, [this] {
-        rebuildTree();
+    connect(document, &ProjectDocument::changed, this, [this, document] {
+        // The tree shows units, sequences and gateways; lines of a step change none.
+        if (!document->changedStepLines())
+            rebuildTree();
         updateTitle();
         updateActions(); // a baseline marked or undone
     });

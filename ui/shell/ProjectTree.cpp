@@ -68,8 +68,11 @@ PageRef ProjectTree::pageOf(const QTreeWidgetItem* item) {
 
 QTreeWidgetItem* ProjectTree::add(QTreeWidgetItem* parent, const QString& text, const QString& icon,
                                   const PageRef& page) {
+    auto found = m_icons.find(icon);
+    if (found == m_icons.end())
+        found = m_icons.insert(icon, QIcon(QStringLiteral(":/icons/%1.svg").arg(icon)));
     auto* item = new QTreeWidgetItem(parent, {text});
-    item->setIcon(0, QIcon(QStringLiteral(":/icons/%1.svg").arg(icon)));
+    item->setIcon(0, *found);
     item->setData(0, kKindRole, static_cast<int>(page.kind));
     item->setData(0, kDocumentRole, QVariant::fromValue<QObject*>(page.document.data()));
     item->setData(0, kStationRole, page.station);

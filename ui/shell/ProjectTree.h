@@ -3,6 +3,8 @@
 
 #include "shell/PageRef.h"
 
+#include <QHash>
+#include <QIcon>
 #include <QTreeWidget>
 
 #include <vector>
@@ -38,6 +40,7 @@ private:
 
     std::vector<ProjectDocument*> m_documents;
     bool m_selecting = false;
+    QHash<QString, QIcon> m_icons; // read once: the tree is made anew after most edits
 };
 
 } // namespace rs::ui
