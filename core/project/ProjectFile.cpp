@@ -403,9 +403,13 @@ FileText readTextFile(const QString& path, qint64 maxBytes) {
         text.reserve(static_cast<std::size_t>(std::min(file.size(), maxBytes) + 1));
     for (;;) {
         const std::size_t used = text.size();
-        const qint64 room = std::min<qint64>(kPiece, maxBytes + 1 - static_cast<qint64>(used));
+        qint64 room = std::min<qint64>(kPiece, maxBytes + 1 - static_cast<qint64>(used));
         if (room <= 0)
             break;
+        // Within what was reserved while it lasts: the byte reserved past the
+        // reported size finds the end without the string doubling.
+        if (text.capacity() > used)
+            room = std::min<qint64>(room, static_cast<qint64>(text.capacity() - used));
         text.resize(used + static_cast<std::size_t>(room));
         const qint64 got = file.read(text.data() + used, room);
         text.resize(used + static_cast<std::size_t>(std::max<qint64>(got, 0)));
