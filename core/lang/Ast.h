@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Address.h"
+#include "OptionalApart.h"
 #include "Rare.h"
 #include "SourceLocation.h"
 
@@ -29,7 +30,7 @@ struct Operand {
 
 // A register operand or an integer constant.
 struct Value {
-    std::optional<Operand> operand;
+    OptionalApart<Operand> operand;
     std::int64_t constant = 0;
     SourceLocation location;
 
@@ -45,7 +46,7 @@ enum class TimerSpelling : std::uint8_t { TON, TPS, TOF, T, IT };
 TimerKind timerKind(TimerSpelling spelling);
 
 struct TimerPreset {
-    std::optional<Operand> registerOperand; // a register holding hundredths of a second
+    OptionalApart<Operand> registerOperand; // a register holding hundredths of a second
     int hundredths = 0;                     // a time constant such as 5s10 = 510
     friend bool operator==(const TimerPreset&, const TimerPreset&) = default;
 };
