@@ -58,24 +58,34 @@ void BM_ShowCompileResult(benchmark::State& state) {
 }
 BENCHMARK(BM_ShowCompileResult)->Unit(benchmark::kMillisecond);
 
-// Build > Compile in the window, from the action to the result shown: the
-// compile on its worker, the image written beside the project, the Output.
-void BM_CompileInTheWindow(benchmark::State& state) {
-    QTemporaryDir directory;
+// The plant saved in a folder of its own and opened in a window, as a user
+// opens it; false, and the benchmark skipped, when that fails.
+bool openPlant(benchmark::State& state, const QTemporaryDir& directory,
+               rs::ui::MainWindow& window) {
     const QString path = directory.filePath(QStringLiteral("plant.sps"));
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         state.SkipWithError("cannot write the project");
-        return;
+        return false;
     }
     file.write(QByteArray::fromStdString(plant().text));
     file.close();
-    rs::ui::MainWindow window;
     if (!window.loadFile(path).isEmpty()) {
         state.SkipWithError("cannot open the project");
-        return;
+        return false;
     }
+    window.resize(1280, 900);
     window.show();
+    return true;
+}
+
+// Build > Compile in the window, from the action to the result shown: the
+// compile on its worker, the image written beside the project, the Output.
+void BM_CompileInTheWindow(benchmark::State& state) {
+    QTemporaryDir directory;
+    rs::ui::MainWindow window;
+    if (!openPlant(state, directory, window))
+        return;
     QAction* compile = window.findChild<QAction*>(QStringLiteral("compileAction"));
     for (auto _ : state) {
         compile->trigger();
@@ -125,21 +135,9 @@ BENCHMARK(BM_RecheckAfterTyping)->Unit(benchmark::kMillisecond)->Iterations(5);
 // own cost (rungsmith_bench_ladder_scroll).
 void BM_LadderEditInTheWindow(benchmark::State& state) {
     QTemporaryDir directory;
-    const QString path = directory.filePath(QStringLiteral("plant.sps"));
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        state.SkipWithError("cannot write the project");
-        return;
-    }
-    file.write(QByteArray::fromStdString(plant().text));
-    file.close();
     rs::ui::MainWindow window;
-    if (!window.loadFile(path).isEmpty()) {
-        state.SkipWithError("cannot open the project");
+    if (!openPlant(state, directory, window))
         return;
-    }
-    window.resize(1280, 900);
-    window.show();
     QApplication::processEvents();
     rs::ui::LadderPage* page = window.ladderPage();
     const int middle = page->networkCount(0) / 2;
