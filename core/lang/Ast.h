@@ -186,7 +186,7 @@ using LineBody = std::variant<BlankLine, CommentLine, Directive, Declaration, St
 
 struct Line {
     LineBody body;
-    std::optional<std::string> comment; // trailing comment, text after ';'
+    OptionalApart<std::string> comment; // trailing comment, text after ';'
     SourceLocation location;
     friend bool operator==(const Line&, const Line&) = default;
 };

@@ -9,14 +9,17 @@ namespace rs::lang {
 
 // An optional value held apart, with std::optional's interface: for a part
 // of a syntax node that few nodes have (a register as a timer's preset or a
-// comparison's right side), so that a node without it stays small (issue 23:
-// an operand takes 72 bytes in a std::optional, 8 here). Copies are deep.
+// comparison's right side, a line's trailing comment), so that a node
+// without it stays small (issue 23: an operand takes 72 bytes in a
+// std::optional, 8 here). Copies are deep.
 template <typename T> class OptionalApart {
 public:
     OptionalApart() = default;
     OptionalApart(std::nullopt_t) {}
     OptionalApart(const T& value) : m_value(std::make_unique<T>(value)) {}
     OptionalApart(T&& value) : m_value(std::make_unique<T>(std::move(value))) {}
+    OptionalApart(const std::optional<T>& value)
+        : m_value(value ? std::make_unique<T>(*value) : nullptr) {}
     OptionalApart(const OptionalApart& other)
         : m_value(other.m_value ? std::make_unique<T>(*other.m_value) : nullptr) {}
     OptionalApart(OptionalApart&&) noexcept = default;
@@ -60,6 +63,14 @@ public:
         if (!m_value)
             throw std::bad_optional_access();
         return *m_value;
+    }
+
+    template <typename U> T value_or(U&& fallback) const {
+        return m_value ? *m_value : static_cast<T>(std::forward<U>(fallback));
+    }
+    // What std::optional code is given.
+    operator std::optional<T>() const {
+        return m_value ? std::optional<T>(*m_value) : std::nullopt;
     }
 
     friend bool operator==(const OptionalApart& a, const OptionalApart& b) {

@@ -28,7 +28,7 @@ TEST(OptionalApart, OnlyARegisterOperandIsHeld) {
               (Address{AddressKind::Register, 0, 3, -1, false}));
     // What makes a condition's node and a line small (issue 23).
     EXPECT_LE(sizeof(Expr), 160U);
-    EXPECT_LE(sizeof(Line), 320U);
+    EXPECT_LE(sizeof(Line), 288U);
 }
 
 TEST(OptionalApart, CopiesAreDeepAndCompareByValue) {
