@@ -11,6 +11,7 @@
 #include "project/ProjectFile.h"
 
 #include <algorithm>
+#include <iterator>
 #include <string>
 #include <tuple>
 
@@ -57,7 +58,8 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     checkAsiSlaves(project, units, result.diagnostics);
     checkGatewayBlocks(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
-    result.diagnostics.insert(result.diagnostics.end(), checks.begin(), checks.end());
+    result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(checks.begin()),
+                              std::make_move_iterator(checks.end()));
     lang::sortByPlace(result.diagnostics);
     if (result.errors())
         return result;
