@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The ladder page following the model: the unit's ladder read again after
-// every change of the project, one item per network laid out again only
-// when its network changed, and the items placed one below the other.
+// The ladder page following the model: after a change of a run of one
+// step's lines, only the networks it touches are read and laid out again;
+// after any other change the unit's ladder is read again, an item laid out
+// again only when its network changed; the items are placed one below the
+// other.
 #include "LadderPage.h"
 
 #include "BlockText.h"
