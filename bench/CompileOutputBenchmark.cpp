@@ -5,6 +5,7 @@
 #include "document/ProjectDocument.h"
 #include "ladder/LadderPage.h"
 #include "ladder/NetworkItem.h"
+#include "memory/HugePageHeap.h"
 #include "output/CompileOutput.h"
 #include "project/ProjectFile.h"
 #include "shell/MainWindow.h"
@@ -168,6 +169,7 @@ BENCHMARK(BM_LadderEditInTheWindow)->Unit(benchmark::kMillisecond)->Iterations(2
 } // namespace
 
 int main(int argc, char* argv[]) {
+    rs::memory::backTheHeapWithHugePages(); // as the IDE does
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     benchmark::Initialize(&argc, argv);

@@ -2,7 +2,7 @@
 // What a user waits for on a large project, as whole processes (issue 23):
 // `rungsmith-cli check` and `compile` of the generated plant, each against
 // `wc -w` of the same file in the same iteration, with the peak memory of
-// the process as the kernel counts it.
+// the process and its page faults as the kernel counts them.
 #include "ProjectGenerator.h"
 
 #include <benchmark/benchmark.h>
@@ -28,6 +28,7 @@ namespace {
 struct Run {
     double ms = 0;
     double peakMb = 0;
+    double pageFaults = 0;
 };
 
 // Runs the command with its output thrown away; its wall time and peak memory.
@@ -53,6 +54,7 @@ Run run(const std::vector<std::string>& command) {
     result.ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result.peakMb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+    result.pageFaults = static_cast<double>(usage.ru_minflt);
     if (!WIFEXITED(status) || WEXITSTATUS(status) > 1) // 1: the project has errors
         throw std::runtime_error(command.front() + " failed");
     return result;
@@ -72,6 +74,7 @@ void measure(benchmark::State& state, const std::vector<std::string>& command) {
     double total = 0;
     double words = 0;
     double peak = 0;
+    double faults = 0;
     for (auto _ : state) {
         const Run counted = run({"wc", "-w", plantFile()});
         const Run measured = run(command);
@@ -79,12 +82,14 @@ void measure(benchmark::State& state, const std::vector<std::string>& command) {
         total += measured.ms;
         words += counted.ms;
         peak = std::max(peak, measured.peakMb);
+        faults += measured.pageFaults;
     }
     const auto n = static_cast<double>(state.iterations());
     state.counters["ms"] = total / n;
     state.counters["wc_ms"] = words / n;
     state.counters["ratio_to_wc"] = words > 0 ? total / words : 0;
     state.counters["peak_MB"] = peak;
+    state.counters["page_faults"] = faults / n;
 }
 
 void BM_CheckPlant(benchmark::State& state) {

@@ -13,6 +13,7 @@
 #include "VarsVerbs.h"
 #include "Verbs.h"
 #include "lang/Diagnostic.h"
+#include "memory/HugePageHeap.h"
 #include "pl110/ProgramFile.h"
 
 #include <QCoreApplication>
@@ -281,6 +282,7 @@ int run(int argc, char* argv[]) {
 int main(int argc, char* argv[]) {
     // A last resort: a bug must end with a message and the exit code of a
     // failure the user cannot fix, not with an abort.
+    rs::memory::backTheHeapWithHugePages();
     try {
         return run(argc, argv);
     } catch (const std::exception& error) {

@@ -2,6 +2,7 @@
 #include "RungsmithBuildVersion.h"
 #include "document/ProjectDocument.h"
 #include "lang/Diagnostic.h"
+#include "memory/HugePageHeap.h"
 #include "output/SettledCompile.h"
 #include "pl110/Pl110Document.h"
 #include "pl110/Pl110Window.h"
@@ -195,6 +196,7 @@ int openPl110(const Pl110Request& request) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    rs::memory::backTheHeapWithHugePages();
     QApplication application(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Rungsmith"));
     QApplication::setApplicationName(QStringLiteral("Rungsmith"));
