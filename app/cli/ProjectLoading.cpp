@@ -57,10 +57,25 @@ LoadedProject loadProject(const QString& path, const QStringList& libraryFiles) 
     return loaded;
 }
 
+// The standard error is unbuffered: a line at a time was a system call for
+// each of a large project's thousands of warnings. Written in pieces of
+// 64 KB instead, each piece whole lines.
 void printDiagnostics(const QString& path, const lang::Diagnostics& diagnostics) {
+    constexpr std::size_t kPiece = 64 * 1024;
     const std::string name = path.toStdString();
-    for (const auto& diagnostic : diagnostics)
-        std::fprintf(stderr, "%s\n", lang::formatDiagnostic(name, diagnostic).c_str());
+    std::string piece;
+    piece.reserve(kPiece + 4096);
+    const auto write = [&piece] {
+        std::fwrite(piece.data(), 1, piece.size(), stderr);
+        piece.clear();
+    };
+    for (const auto& diagnostic : diagnostics) {
+        piece += lang::formatDiagnostic(name, diagnostic);
+        piece += '\n';
+        if (piece.size() >= kPiece)
+            write();
+    }
+    write();
 }
 
 } // namespace rs::cli

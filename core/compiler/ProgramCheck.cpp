@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ProgramCheck.h"
 
+#include "lang/AddressSet.h"
 #include "lang/Keywords.h"
 #include "lang/Printer.h"
 #include "lang/SymbolicName.h"
 
 #include <algorithm>
 #include <set>
-#include <unordered_set>
 
 namespace rs::compiler {
 
@@ -97,7 +97,7 @@ public:
         checkUnit(unit);
         m_diagnostics.clear();
     }
-    const std::unordered_set<Address>& used() const { return m_used; }
+    const lang::AddressSet& used() const { return m_used; }
 
 private:
     void error(SourceLocation at, std::string message) {
@@ -706,8 +706,8 @@ private:
     bool isUsed(const Address& a) const {
         const Address whole = storage(a);
         if (a == whole)
-            return m_usedStorage.count(whole) != 0;
-        return m_used.count(a) != 0 || m_used.count(whole) != 0;
+            return m_usedStorage.contains(whole);
+        return m_used.contains(a) || m_used.contains(whole);
     }
 
     void warnUnusedNames() {
@@ -740,8 +740,8 @@ private:
     std::map<Address, std::vector<Write>> m_coils;
     std::map<Address, SourceLocation> m_latches;
     std::set<Address> m_coilAndLatch;
-    std::unordered_set<Address> m_used;        // as used
-    std::unordered_set<Address> m_usedStorage; // the registers those belong to
+    lang::AddressSet m_used;        // as used
+    lang::AddressSet m_usedStorage; // the registers those belong to
     std::set<Address> m_unconfigured;
     std::set<int> m_otherProjectUnitsWarned; // stations not in the project that this unit reads
 };
@@ -760,9 +760,7 @@ std::vector<Address> usedByOtherUnits(const lang::Document& document, const Unit
     for (const auto& [other, unit] : units)
         if (unit.program && other != station)
             checker.checkUnitAlone(unit);
-    std::vector<Address> used(checker.used().begin(), checker.used().end());
-    std::sort(used.begin(), used.end());
-    return used;
+    return checker.used().sorted();
 }
 
 } // namespace rs::compiler
