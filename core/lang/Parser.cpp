@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <utility>
 
 namespace rs::lang {
@@ -78,6 +79,7 @@ public:
                 skipToLineEnd();
             }
         }
+        settlePending();
         trimTrailingBlank();
         return {std::move(m_document), std::move(m_diagnostics)};
     }
@@ -159,10 +161,22 @@ private:
         return m_document.preamble;
     }
 
+    // Lines are gathered in one vector that keeps its capacity and moved to
+    // their container when it is complete, in a block of their exact size:
+    // most steps have a few lines, and a vector grown line by line left a
+    // third of a large project's tree as unused capacity.
     void add(Line line) {
         m_lastWasBlank = std::holds_alternative<BlankLine>(line.body);
         m_seenContent = true;
-        container().push_back(std::move(line));
+        m_pending.push_back(std::move(line));
+    }
+
+    // Call before the container changes.
+    void settlePending() {
+        std::vector<Line>& lines = container();
+        lines.reserve(lines.size() + m_pending.size());
+        std::move(m_pending.begin(), m_pending.end(), std::back_inserter(lines));
+        m_pending.clear();
     }
 
     void trimTrailingBlank() {
@@ -258,6 +272,7 @@ private:
                               std::to_string(unit.station()) + "." + std::to_string(step.sequence) +
                               "_" + std::to_string(step.step));
         auto comment = finishLine("the step header");
+        settlePending();
         unit.steps.push_back({step, std::move(comment), loc(token), {}});
         m_section = Section::Steps;
         m_lastWasBlank = false;
@@ -318,6 +333,7 @@ private:
             auto comment = finishLine("the declaration");
             UnitProgram unit;
             unit.header = {std::move(declaration), std::move(comment), loc(bang)};
+            settlePending();
             m_document.units.push_back(std::move(unit));
             m_section = Section::UnitDeclarations;
             m_lastWasBlank = false;
@@ -808,6 +824,7 @@ private:
     Document m_document;
     Diagnostics m_diagnostics;
     Section m_section = Section::Preamble;
+    std::vector<Line> m_pending; // the lines of the current container, not yet in it
     bool m_lastWasBlank = false;
     bool m_seenContent = false;
     int m_depth = 0; // parentheses open around the expression being read

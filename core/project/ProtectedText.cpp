@@ -221,6 +221,9 @@ std::string sealProjectText(std::string_view text, const Keyring& keys) {
 }
 
 std::optional<lang::Diagnostic> verifyProjectText(std::string_view text) {
+    // Most projects are not protected: no record, nothing to split.
+    if (text.find(";@protected") == std::string_view::npos)
+        return std::nullopt;
     const std::vector<std::string_view> lines = splitLines(text);
     const int index = recordIndex(lines);
     if (index == -1)
