@@ -584,6 +584,43 @@ private:
     }
 
     // ----- expressions
+    // An Or's or And's children are gathered in a vector kept for reuse, one
+    // for each Or or And being read, and moved to their node in a block of
+    // their exact size (grown child by child, a quarter of the nodes' memory
+    // was unused capacity).
+    class Gathering {
+    public:
+        explicit Gathering(Parser& parser) : m_parser(parser), m_level(parser.m_gatheringLevels++) {
+            if (parser.m_gathered.size() <= m_level)
+                parser.m_gathered.emplace_back();
+            children().clear();
+        }
+        ~Gathering() { --m_parser.m_gatheringLevels; }
+        Gathering(const Gathering&) = delete;
+        Gathering& operator=(const Gathering&) = delete;
+
+        // a * (b * c) is one series circuit a * b * c: same power flow, one canonical tree.
+        void add(ExprKind kind, Expr&& child) {
+            if (child.kind == kind)
+                std::move(child.children.begin(), child.children.end(),
+                          std::back_inserter(children()));
+            else
+                children().push_back(std::move(child));
+        }
+        std::vector<Expr> take() {
+            std::vector<Expr>& gathered = children();
+            return {std::make_move_iterator(gathered.begin()),
+                    std::make_move_iterator(gathered.end())};
+        }
+
+    private:
+        // By index: reading a child may add a level and move the vectors.
+        std::vector<Expr>& children() { return m_parser.m_gathered[m_level]; }
+
+        Parser& m_parser;
+        std::size_t m_level;
+    };
+
     Expr parseExpression() {
         Expr first = parseTerm();
         if (!at(TokenKind::Plus))
@@ -591,14 +628,15 @@ private:
         Expr result;
         result.kind = ExprKind::Or;
         result.location = first.location;
-        appendFlattened(result, std::move(first));
+        Gathering children(*this);
+        children.add(result.kind, std::move(first));
         while (at(TokenKind::Plus)) {
-            Token plus = take();
+            take();
             if (atLineEnd() || at(TokenKind::RParen))
                 failAt(current(), "expected an operand after '+'");
-            (void)plus;
-            appendFlattened(result, parseTerm());
+            children.add(result.kind, parseTerm());
         }
+        result.children = children.take();
         return result;
     }
 
@@ -609,24 +647,16 @@ private:
         Expr result;
         result.kind = ExprKind::And;
         result.location = first.location;
-        appendFlattened(result, std::move(first));
+        Gathering children(*this);
+        children.add(result.kind, std::move(first));
         while (at(TokenKind::Star)) {
             take();
             if (atLineEnd() || at(TokenKind::RParen))
                 failAt(current(), "expected an operand after '*'");
-            appendFlattened(result, parseFactor());
+            children.add(result.kind, parseFactor());
         }
+        result.children = children.take();
         return result;
-    }
-
-    // a * (b * c) is one series circuit a * b * c: same power flow, one canonical tree.
-    static void appendFlattened(Expr& parent, Expr&& child) {
-        if (child.kind == parent.kind) {
-            for (auto& grandChild : child.children)
-                parent.children.push_back(std::move(grandChild));
-        } else {
-            parent.children.push_back(std::move(child));
-        }
     }
 
     Expr parseFactor() {
@@ -825,6 +855,8 @@ private:
     Diagnostics m_diagnostics;
     Section m_section = Section::Preamble;
     std::vector<Line> m_pending; // the lines of the current container, not yet in it
+    std::vector<std::vector<Expr>> m_gathered; // by level: see Gathering
+    std::size_t m_gatheringLevels = 0;
     bool m_lastWasBlank = false;
     bool m_seenContent = false;
     int m_depth = 0; // parentheses open around the expression being read
