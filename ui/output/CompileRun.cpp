@@ -42,6 +42,9 @@ CompileRun::CompileRun(QMainWindow* window, CompileOutput* output, QDockWidget* 
     m_progress->setMaximumWidth(140);
     m_progress->setFormat(tr("Compiling"));
     m_progress->hide();
+    m_showBusy.setSingleShot(true);
+    m_showBusy.setInterval(kBusyAfterMs);
+    connect(&m_showBusy, &QTimer::timeout, m_progress, &QWidget::show);
     connect(m_watcher.get(), &QFutureWatcher<Compiled>::finished, this, &CompileRun::finish);
 }
 
@@ -74,7 +77,7 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
     m_output->showRunning(document->displayName());
     m_outputDock->show();
     m_outputDock->raise();
-    m_progress->show();
+    m_showBusy.start();
     m_window->statusBar()->showMessage(tr("Compiling %1...").arg(document->displayName()));
     // The image goes beside a project that has a file of its own; it is made
     // and written on the worker too, as a large one takes a while.
@@ -106,6 +109,7 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
 
 void CompileRun::finish() {
     m_running = false;
+    m_showBusy.stop();
     m_progress->hide();
     const Compiled compiled = m_watcher->result();
     const compiler::CompileResult& result = compiled.result;

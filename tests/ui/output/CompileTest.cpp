@@ -4,12 +4,15 @@
 
 #include "document/ProjectDocument.h"
 #include "output/CompileOutput.h"
+#include "output/CompileRun.h"
 #include "project/Project.h"
 #include "text/ProgramEditor.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
+#include <QProgressBar>
 #include <QTest>
 
 #include "QtPrinting.h"
@@ -51,6 +54,26 @@ TEST_F(CompileTest, CompilingOffTheWindowsThreadEndsWithTheOriginalsClosingLine)
         warned = warned || output()->topLevelItem(i)->text(1).contains(QStringLiteral("Q0.17"));
     EXPECT_TRUE(warned);
     EXPECT_TRUE(QFile::exists(directory.filePath(QStringLiteral("muting.hps"))));
+}
+
+TEST_F(CompileTest, ACompileShorterThanHalfASecondShowsNoBusyBar) {
+    openMuting();
+    auto* busy = window.findChild<QProgressBar*>(QStringLiteral("compileProgress"));
+    ASSERT_NE(busy, nullptr);
+    QElapsedTimer running;
+    running.start();
+    action("compileAction")->trigger();
+    bool shown = false;
+    while (window.isCompiling() && running.elapsed() < 30000) {
+        shown = shown || busy->isVisible();
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+    ASSERT_FALSE(window.isCompiling());
+    if (running.elapsed() < rs::ui::CompileRun::kBusyAfterMs) { // as it does, by far
+        EXPECT_FALSE(shown);
+    }
+    EXPECT_FALSE(busy->isVisible());
+    EXPECT_EQ(output()->closingLine(), QStringLiteral("0 Error(s) detected Result=OK"));
 }
 
 TEST_F(CompileTest, AnErrorIsListedWithItsUnitAndLineAndDoubleClickGoesThere) {
