@@ -3,7 +3,9 @@
 
 #include "lang/ElementNumbering.h"
 
-#include <map>
+#include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace rs::compiler {
 
@@ -25,28 +27,47 @@ public:
 
         if (!m_unit.program)
             return std::move(m_image);
-        // Code runs in step order; statements keep their file-order numbers.
-        std::map<const Statement*, std::uint32_t> numbers;
-        std::map<std::pair<int, int>, const lang::Step*> ordered;
-        for (const auto& step : m_unit.program->steps)
-            ordered[{step.address.sequence, step.address.step}] = &step;
-        lang::forEachStatement(*m_unit.program,
-                               [&](const lang::Step&, const Statement& s, std::uint32_t number) {
-                                   numbers[&s] = number;
-                               });
-        for (const auto& [key, step] : ordered) {
-            StepCode code{static_cast<std::uint8_t>(key.first),
-                          static_cast<std::uint8_t>(key.second),
+        // Code runs in step order; statements keep their file-order numbers
+        // (lang::forEachStatement's): each step's first is counted here.
+        const auto& steps = m_unit.program->steps;
+        std::vector<std::uint32_t> firstNumber;
+        std::vector<std::size_t> ordered;
+        firstNumber.reserve(steps.size());
+        ordered.reserve(steps.size());
+        std::uint32_t statements = 0;
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            firstNumber.push_back(statements);
+            ordered.push_back(i);
+            for (const auto& line : steps[i].lines)
+                statements += std::holds_alternative<Statement>(line.body) ? 1 : 0;
+        }
+        const auto key = [&steps](std::size_t i) {
+            return std::pair(steps[i].address.sequence, steps[i].address.step);
+        };
+        std::stable_sort(ordered.begin(), ordered.end(),
+                         [&key](std::size_t a, std::size_t b) { return key(a) < key(b); });
+        for (std::size_t k = 0; k < ordered.size(); ++k) {
+            const std::size_t i = ordered[k];
+            // A step written twice is an error the checks report; the code holds its last.
+            if (k + 1 < ordered.size() && key(ordered[k + 1]) == key(i))
+                continue;
+            const auto& step = steps[i];
+            StepCode code{static_cast<std::uint8_t>(step.address.sequence),
+                          static_cast<std::uint8_t>(step.address.step),
                           static_cast<std::uint32_t>(m_image.code.size()), 0};
-            for (const auto& line : step->lines)
+            std::uint32_t number = firstNumber[i];
+            for (const auto& line : step.lines)
                 if (const auto* s = std::get_if<Statement>(&line.body))
-                    statement(*s, numbers[s], key.second);
+                    statement(*s, number++, step.address.step);
                 else if (auto call = m_unit.systemCalls.find(&line);
                          call != m_unit.systemCalls.end())
                     systemCall(call->second);
             code.count = static_cast<std::uint32_t>(m_image.code.size()) - code.first;
             m_image.steps.push_back(code);
         }
+        // Grown instruction by instruction, the vector held up to twice its
+        // code until the image was written.
+        m_image.code.shrink_to_fit();
         return std::move(m_image);
     }
 
