@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include <QTreeWidget>
+#include "output/CompileOutputModel.h"
+
+#include <QTreeView>
 
 namespace rs::compiler {
 struct CompileResult;
@@ -16,10 +18,12 @@ namespace rs::ui {
 // where it is (a unit's code and line, a unit's settings, a variable) and the
 // closing line "N Error(s) detected Result=OK|FAILED". Activating a finding
 // asks for its place to be shown.
-class CompileOutput : public QTreeWidget {
+class CompileOutput : public QTreeView {
     Q_OBJECT
 public:
-    enum Column { PlaceColumn = 0, MessageColumn = 1 };
+    using Column = CompileOutputModel::Column;
+    static constexpr Column PlaceColumn = CompileOutputModel::PlaceColumn;
+    static constexpr Column MessageColumn = CompileOutputModel::MessageColumn;
 
     explicit CompileOutput(QWidget* parent = nullptr);
 
@@ -29,13 +33,21 @@ public:
     void showResult(const QString& projectName, std::string_view canonicalText,
                     const compiler::CompileResult& result, const QString& writtenFile,
                     const QString& writeError = {});
+    void clear();
     QString closingLine() const;
+
+    // The rows as shown.
+    int rowCount() const;
+    QString text(int row, Column column) const;
 
 signals:
     void placeActivated(const project::TextPlace& place, int column);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
+
+private:
+    CompileOutputModel* m_model;
 };
 
 } // namespace rs::ui

@@ -67,12 +67,14 @@ TEST_F(BlockInstancesTest, ABadCallIsACompileErrorAtItsRecordAndTheRecordIsKept)
     rs::ui::CompileOutput* output = window.compileOutput();
     EXPECT_EQ(output->closingLine(), QStringLiteral("1 Error(s) detected Result=FAILED"));
     bool found = false;
-    for (int i = 0; i < output->topLevelItemCount(); ++i) {
-        const QTreeWidgetItem* item = output->topLevelItem(i);
-        if (item->text(1).contains(QStringLiteral("pin Out takes"))) {
+    using rs::ui::CompileOutput;
+    for (int i = 0; i < output->rowCount(); ++i) {
+        if (output->text(i, CompileOutput::MessageColumn)
+                .contains(QStringLiteral("pin Out takes"))) {
             found = true;
-            EXPECT_EQ(item->text(0), QStringLiteral("Pluto 0, line 3:62"))
-                << item->text(1).toStdString();
+            EXPECT_EQ(output->text(i, CompileOutput::PlaceColumn),
+                      QStringLiteral("Pluto 0, line 3:62"))
+                << output->text(i, CompileOutput::MessageColumn).toStdString();
         }
     }
     EXPECT_TRUE(found);

@@ -99,9 +99,8 @@ TEST_F(SaveFailureTest, ACompiledFileThatCannotBeWrittenIsInTheOutput) {
     EXPECT_TRUE(box.answered());
     bool said = false;
     rs::ui::CompileOutput* output = window.compileOutput();
-    for (int i = 0; i < output->topLevelItemCount(); ++i)
-        said |= output->topLevelItem(i)
-                    ->text(rs::ui::CompileOutput::MessageColumn)
+    for (int i = 0; i < output->rowCount(); ++i)
+        said |= output->text(i, rs::ui::CompileOutput::MessageColumn)
                     .contains(QStringLiteral("not written"));
     EXPECT_TRUE(said);
     EXPECT_TRUE(QFileInfo(directory.filePath("muting.hps")).isDir());

@@ -50,8 +50,10 @@ TEST_F(CompileTest, CompilingOffTheWindowsThreadEndsWithTheOriginalsClosingLine)
     EXPECT_TRUE(action("compileAction")->isEnabled());
     // The manual's example leaves Q0.17 without an I/O declaration.
     bool warned = false;
-    for (int i = 0; i < output()->topLevelItemCount(); ++i)
-        warned = warned || output()->topLevelItem(i)->text(1).contains(QStringLiteral("Q0.17"));
+    for (int i = 0; i < output()->rowCount(); ++i)
+        warned = warned || output()
+                               ->text(i, rs::ui::CompileOutput::MessageColumn)
+                               .contains(QStringLiteral("Q0.17"));
     EXPECT_TRUE(warned);
     EXPECT_TRUE(QFile::exists(directory.filePath(QStringLiteral("muting.hps"))));
 }
@@ -91,14 +93,17 @@ TEST_F(CompileTest, AnErrorIsListedWithItsUnitAndLineAndDoubleClickGoesThere) {
     ASSERT_TRUE(waitForCompile());
     EXPECT_EQ(output()->closingLine(), QStringLiteral("1 Error(s) detected Result=FAILED"));
     EXPECT_FALSE(QFile::exists(directory.filePath(QStringLiteral("bad.hps"))));
-    QTreeWidgetItem* error = nullptr;
-    for (int i = 0; i < output()->topLevelItemCount(); ++i)
-        if (output()->topLevelItem(i)->text(1).startsWith(QStringLiteral("error:")))
-            error = output()->topLevelItem(i);
-    ASSERT_NE(error, nullptr);
-    EXPECT_EQ(error->text(0), QStringLiteral("Pluto 0, line 4:8"));
+    int error = -1;
+    for (int i = 0; i < output()->rowCount(); ++i)
+        if (output()
+                ->text(i, rs::ui::CompileOutput::MessageColumn)
+                .startsWith(QStringLiteral("error:")))
+            error = i;
+    ASSERT_NE(error, -1);
+    EXPECT_EQ(output()->text(error, rs::ui::CompileOutput::PlaceColumn),
+              QStringLiteral("Pluto 0, line 4:8"));
 
-    const QPoint where = output()->visualItemRect(error).center();
+    const QPoint where = output()->visualRect(output()->model()->index(error, 0)).center();
     QTest::mouseClick(output()->viewport(), Qt::LeftButton, {}, where);
     QTest::mouseDClick(output()->viewport(), Qt::LeftButton, {}, where);
     EXPECT_EQ(window.currentPage().kind, PageRef::Kind::Code);
@@ -118,7 +123,7 @@ TEST_F(CompileTest, ClosingTheProjectTakesItsResultAndTheOutputDockAway) {
     ASSERT_TRUE(dock);
     EXPECT_TRUE(dock->isVisible());
     ASSERT_TRUE(window.closeDocument(document()));
-    EXPECT_EQ(output()->topLevelItemCount(), 0);
+    EXPECT_EQ(output()->rowCount(), 0);
     EXPECT_FALSE(dock->isVisible());
 }
 

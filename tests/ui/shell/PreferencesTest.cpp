@@ -42,7 +42,7 @@ TEST_F(PreferencesTest, ChoicesAreKeptAndTheCompilerFollowsThem) {
     // Without unconfigured-I/O warnings the manual's example compiles silently.
     action("compileAction")->trigger();
     ASSERT_TRUE(QTest::qWaitFor([&] { return !window.isCompiling(); }, 30000));
-    EXPECT_EQ(window.compileOutput()->topLevelItemCount(), 2); // "Compiling", closing line
+    EXPECT_EQ(window.compileOutput()->rowCount(), 2); // "Compiling", closing line
 }
 
 TEST(Preferences, DefaultColoursAndValuesSurviveARoundTrip) {
