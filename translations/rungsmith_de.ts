@@ -1287,6 +1287,29 @@
 <context>
     <name>rs::ui::CompileOutput</name>
     <message>
+        <source>Compiling %1...</source>
+        <translation>%1 wird kompiliert …</translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation>%1 wird kompiliert</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation>Erstellen &gt; Kompilieren (F7) prüft das Projekt und schreibt die kompilierte Datei.</translation>
+    </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation>Fehler: die kompilierte Datei wurde nicht geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutputModel</name>
+    <message>
         <source>Pluto %1, line %2:%3</source>
         <translation>Pluto %1, Zeile %2:%3</translation>
     </message>
@@ -1303,26 +1326,6 @@
         <translation>Projekt</translation>
     </message>
     <message>
-        <source>Place</source>
-        <translation>Ort</translation>
-    </message>
-    <message>
-        <source>Message</source>
-        <translation>Meldung</translation>
-    </message>
-    <message>
-        <source>Compiling %1...</source>
-        <translation>%1 wird kompiliert …</translation>
-    </message>
-    <message>
-        <source>Compiling %1</source>
-        <translation>%1 wird kompiliert</translation>
-    </message>
-    <message>
-        <source>Line %1 of the project file</source>
-        <translation>Zeile %1 der Projektdatei</translation>
-    </message>
-    <message>
         <source>error: %1</source>
         <translation>Fehler: %1</translation>
     </message>
@@ -1331,16 +1334,16 @@
         <translation>Warnung: %1</translation>
     </message>
     <message>
-        <source>Wrote %1</source>
-        <translation>%1 geschrieben</translation>
+        <source>Line %1 of the project file</source>
+        <translation>Zeile %1 der Projektdatei</translation>
     </message>
     <message>
-        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
-        <translation>Erstellen &gt; Kompilieren (F7) prüft das Projekt und schreibt die kompilierte Datei.</translation>
+        <source>Place</source>
+        <translation>Ort</translation>
     </message>
     <message>
-        <source>error: the compiled file was not written: %1</source>
-        <translation>Fehler: die kompilierte Datei wurde nicht geschrieben: %1</translation>
+        <source>Message</source>
+        <translation>Meldung</translation>
     </message>
 </context>
 <context>

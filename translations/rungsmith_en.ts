@@ -1287,6 +1287,29 @@
 <context>
     <name>rs::ui::CompileOutput</name>
     <message>
+        <source>Compiling %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutputModel</name>
+    <message>
         <source>Pluto %1, line %2:%3</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1303,26 +1326,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Place</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Message</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compiling %1...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compiling %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Line %1 of the project file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>error: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1331,15 +1334,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Wrote %1</source>
+        <source>Line %1 of the project file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <source>Place</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>error: the compiled file was not written: %1</source>
+        <source>Message</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1287,6 +1287,29 @@
 <context>
     <name>rs::ui::CompileOutput</name>
     <message>
+        <source>Compiling %1...</source>
+        <translation>Kompilerar %1 …</translation>
+    </message>
+    <message>
+        <source>Compiling %1</source>
+        <translation>Kompilerar %1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Skrev %1</translation>
+    </message>
+    <message>
+        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
+        <translation>Bygg &gt; Kompilera (F7) kontrollerar projektet och skriver den kompilerade filen.</translation>
+    </message>
+    <message>
+        <source>error: the compiled file was not written: %1</source>
+        <translation>fel: den kompilerade filen skrevs inte: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rs::ui::CompileOutputModel</name>
+    <message>
         <source>Pluto %1, line %2:%3</source>
         <translation>Pluto %1, rad %2:%3</translation>
     </message>
@@ -1303,26 +1326,6 @@
         <translation>Projekt</translation>
     </message>
     <message>
-        <source>Place</source>
-        <translation>Plats</translation>
-    </message>
-    <message>
-        <source>Message</source>
-        <translation>Meddelande</translation>
-    </message>
-    <message>
-        <source>Compiling %1...</source>
-        <translation>Kompilerar %1 …</translation>
-    </message>
-    <message>
-        <source>Compiling %1</source>
-        <translation>Kompilerar %1</translation>
-    </message>
-    <message>
-        <source>Line %1 of the project file</source>
-        <translation>Rad %1 i projektfilen</translation>
-    </message>
-    <message>
         <source>error: %1</source>
         <translation>fel: %1</translation>
     </message>
@@ -1331,16 +1334,16 @@
         <translation>varning: %1</translation>
     </message>
     <message>
-        <source>Wrote %1</source>
-        <translation>Skrev %1</translation>
+        <source>Line %1 of the project file</source>
+        <translation>Rad %1 i projektfilen</translation>
     </message>
     <message>
-        <source>Build &gt; Compile (F7) checks the project and writes the compiled file.</source>
-        <translation>Bygg &gt; Kompilera (F7) kontrollerar projektet och skriver den kompilerade filen.</translation>
+        <source>Place</source>
+        <translation>Plats</translation>
     </message>
     <message>
-        <source>error: the compiled file was not written: %1</source>
-        <translation>fel: den kompilerade filen skrevs inte: %1</translation>
+        <source>Message</source>
+        <translation>Meddelande</translation>
     </message>
 </context>
 <context>
