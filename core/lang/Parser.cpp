@@ -854,7 +854,7 @@ private:
     Document m_document;
     Diagnostics m_diagnostics;
     Section m_section = Section::Preamble;
-    std::vector<Line> m_pending; // the lines of the current container, not yet in it
+    std::vector<Line> m_pending;               // the lines of the current container, not yet in it
     std::vector<std::vector<Expr>> m_gathered; // by level: see Gathering
     std::size_t m_gatheringLevels = 0;
     bool m_lastWasBlank = false;
