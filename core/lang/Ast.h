@@ -62,16 +62,18 @@ enum class ExprKind : std::uint8_t {
     Compare, // (R0.1>=5); negated: /(R0.1>=5)
 };
 
+// The one-byte fields come first, together: spread between the others they
+// were padded to 8 bytes each (a node 160 bytes, now 144).
 struct Expr {
     ExprKind kind = ExprKind::Contact;
     bool negated = false;
-    std::vector<Expr> children;
-    Operand operand;             // Contact, Edge; left side of Compare
     bool operandNegated = false; // Edge of a negated operand
     bool risingEdge = true;      // Edge: P (true) or N (false)
     TimerSpelling timer = TimerSpelling::TON;
-    TimerPreset preset;
     CompareOp compare = CompareOp::Equal;
+    std::vector<Expr> children;
+    Operand operand; // Contact, Edge; left side of Compare
+    TimerPreset preset;
     Value right; // Compare
     SourceLocation location;
 
@@ -110,11 +112,11 @@ enum class StatementKind : std::uint8_t {
     Assign,        // (R0.1 += 2)
 };
 
-struct Statement {
+struct Statement { // the small fields first, as in Expr
     StatementKind kind = StatementKind::Coil;
-    Operand target; // Coil, Set, Reset, Toggle, SequenceReset
     bool relativeJump = false;
     int jumpStep = 0;            // absolute step, or signed offset when relative
+    Operand target;              // Coil, Set, Reset, Toggle, SequenceReset
     Rare<Assignment> assignment; // Assign: most statements are none
     std::optional<Expr> condition;
     SourceLocation location;
