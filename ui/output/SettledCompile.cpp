@@ -81,8 +81,7 @@ bool SettledCompile::viewerShows() const {
 }
 
 bool SettledCompile::isComputing() const {
-    return m_settle.isActive() || m_watcher->isRunning() || m_again ||
-           (m_waitsToShow && viewerShows());
+    return m_settle.isActive() || m_compiling || m_again || (m_waitsToShow && viewerShows());
 }
 
 bool SettledCompile::eventFilter(QObject* watched, QEvent* event) {
@@ -95,10 +94,11 @@ void SettledCompile::start() {
     m_waitsToShow = !viewerShows();
     if (m_waitsToShow)
         return;
-    if (m_watcher->isRunning()) {
+    if (m_compiling) {
         m_again = true;
         return;
     }
+    m_compiling = true;
     m_running = m_generation;
     m_watcher->setFuture(
         QtConcurrent::run(compileSettled, project::writeProject(m_document->project()),
@@ -106,6 +106,7 @@ void SettledCompile::start() {
 }
 
 void SettledCompile::finish() {
+    m_compiling = false;
     if (m_running == m_generation) {
         m_outcome = m_watcher->result();
         emit computed();

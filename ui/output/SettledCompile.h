@@ -80,6 +80,9 @@ private:
     quint64 m_generation = 0; // of the project; a result of an older one is dropped
     quint64 m_running = 0;    // the generation being compiled
     bool m_again = false;     // settled again while compiling
+    // From the start of a compile until its result is taken: the worker's
+    // future ends before its finished signal is delivered.
+    bool m_compiling = false;
     bool m_waitsToShow = false;
 };
 
