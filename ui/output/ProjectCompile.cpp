@@ -12,7 +12,10 @@ compiler::CompileResult compileProjectText(const std::string& canonicalText,
                                            compiler::Output output) {
     const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
         canonicalText, blocks::LibraryPlaces{executableDir, projectPath, {}});
-    return blocks::compileProject(read.read.project, read.read.diagnostics, options, {}, output);
+    // Given the text it was read from, the compile need not read it again
+    // for its canonical places (it compares the two first).
+    return blocks::compileProject(read.read.project, read.read.diagnostics, options, canonicalText,
+                                  output);
 }
 
 lang::Diagnostics unitCodeDiagnostics(const std::string& canonicalText,

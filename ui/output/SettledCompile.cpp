@@ -21,7 +21,7 @@ SettledCompile::Outcome compileSettled(const std::string& text, const QString& e
     const blocks::ProjectWithInstances read = blocks::readProjectWithInstances(
         text, blocks::LibraryPlaces{executableDir, projectPath, {}});
     const compiler::CompileResult compiled =
-        blocks::compileProject(read.read.project, read.read.diagnostics);
+        blocks::compileProject(read.read.project, read.read.diagnostics, {}, text);
     SettledCompile::Outcome outcome;
     outcome.ok = compiled.errors() == 0;
     if (!outcome.ok)

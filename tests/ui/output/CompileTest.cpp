@@ -12,6 +12,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
 #include <QProgressBar>
 #include <QTest>
 
@@ -56,6 +57,35 @@ TEST_F(CompileTest, CompilingOffTheWindowsThreadEndsWithTheOriginalsClosingLine)
                                .contains(QStringLiteral("Q0.17"));
     EXPECT_TRUE(warned);
     EXPECT_TRUE(QFile::exists(directory.filePath(QStringLiteral("muting.hps"))));
+}
+
+// The window compiles the text it writes from the project, the command line
+// the file: every example, its blocks expanded, compiles to the same bytes.
+TEST_F(CompileTest, TheWindowsImageIsTheCommandLinesByteForByte) {
+    for (const char* example : {"muting.sps", "press-line.sps", "safety-cell.sps",
+                                "gateway-line.sps", "two-hand.sps", "estop.sps"}) {
+        SCOPED_TRACE(example);
+        const QString path =
+            writeFile(QString::fromLatin1(example),
+                      readFile(QStringLiteral(RUNGSMITH_SOURCE_DIR "/resources/examples/") +
+                               QString::fromLatin1(example)));
+        ASSERT_TRUE(window.loadFile(path).isEmpty());
+        showWindow();
+        action("compileAction")->trigger();
+        ASSERT_TRUE(waitForCompile());
+        ASSERT_EQ(output()->closingLine(), QStringLiteral("0 Error(s) detected Result=OK"));
+        const QString cliImage = directory.filePath(QStringLiteral("cli.hps"));
+        QProcess cli;
+        cli.start(QStringLiteral(RUNGSMITH_CLI),
+                  {QStringLiteral("compile"), path, QStringLiteral("-o"), cliImage});
+        ASSERT_TRUE(cli.waitForFinished(30000));
+        ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+        QString windowImage = path;
+        windowImage.replace(QStringLiteral(".sps"), QStringLiteral(".hps"));
+        const QByteArray ours = readFile(windowImage);
+        EXPECT_FALSE(ours.isEmpty());
+        EXPECT_TRUE(ours == readFile(cliImage));
+    }
 }
 
 TEST_F(CompileTest, ACompileShorterThanHalfASecondShowsNoBusyBar) {
