@@ -21,8 +21,10 @@ void backTheHeapWithHugePages() {
 #ifdef MADV_HUGEPAGE
     constexpr std::size_t kReserve = std::size_t{1} << 30;
     constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
-    // Keep the range in one piece: no trimming, and large blocks from it too
-    // (a separate mapping for each would fault page by page again).
+    // Every block from that range: one arena for all threads (the IDE
+    // compiles on a worker; another arena would be a mapping of its own), no
+    // trimming, and large blocks from it too (a separate mapping for each
+    // would fault page by page again).
     mallopt(M_ARENA_MAX, 1);
     mallopt(M_TRIM_THRESHOLD, static_cast<int>(kReserve));
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
@@ -33,7 +35,7 @@ void backTheHeapWithHugePages() {
     void* volatile grow = std::malloc(256 << 10);
     const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
     std::free(grow);
-    mallopt(M_TOP_PAD, 0);
+    mallopt(M_TOP_PAD, 128 * 1024); // mallopt(3)'s default again
     const std::uintptr_t start = (before + kHugePage - 1) & ~(kHugePage - 1);
     if (after > start)
         madvise(reinterpret_cast<void*>(start), after - start, MADV_HUGEPAGE);
