@@ -124,6 +124,31 @@ void BM_ZoomedOutFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_ZoomedOutFrame)->Unit(benchmark::kMillisecond);
 
+// Times `edit` and the undo after it, each with the frame after it: the two
+// halves of what the user waits for, as `name` and undo_ms. `prepare`, not
+// timed, comes before each edit; false stops.
+template <typename Prepare, typename Edit>
+void measureEditAndUndo(benchmark::State& state, OpenPage& open, const char* name, Prepare prepare,
+                        Edit edit) {
+    double edited = 0;
+    double undone = 0;
+    for (auto _ : state) {
+        if (!prepare())
+            break;
+        auto start = Clock::now();
+        edit();
+        open.paintFrame();
+        edited += millisecondsSince(start);
+        start = Clock::now();
+        open.document->undoStack()->undo();
+        open.paintFrame();
+        undone += millisecondsSince(start);
+    }
+    const auto iterations = static_cast<double>(state.iterations());
+    state.counters[name] = edited / iterations;
+    state.counters["undo_ms"] = undone / iterations;
+}
+
 // An edit in the middle of the page and its undo: two changes of the project,
 // each followed by the page (ladder model of the unit, layout of the networks
 // whose statement numbers moved) and a frame.
@@ -132,22 +157,9 @@ void BM_PasteAndUndoMidway(benchmark::State& state) {
     const int middle = open.page->networkCount(0) / 2;
     open.page->setCursor({0, middle, std::nullopt, std::nullopt, -1});
     open.page->copyNetworks();
-    double paste = 0;
-    double undo = 0;
-    for (auto _ : state) {
-        auto start = Clock::now();
-        open.page->pasteNetworks();
-        open.paintFrame();
-        paste += millisecondsSince(start);
-        start = Clock::now();
-        open.document->undoStack()->undo();
-        open.paintFrame();
-        undo += millisecondsSince(start);
-    }
-    const auto iterations = static_cast<double>(state.iterations());
+    measureEditAndUndo(
+        state, open, "paste_ms", [] { return true; }, [&] { open.page->pasteNetworks(); });
     state.counters["networks"] = open.page->networkCount(0);
-    state.counters["paste_ms"] = paste / iterations;
-    state.counters["undo_ms"] = undo / iterations;
 }
 BENCHMARK(BM_PasteAndUndoMidway)
     ->Arg(kPlantStatements)
@@ -163,25 +175,15 @@ void BM_DeleteElementAndUndoMidway(benchmark::State& state) {
     const auto& element = open.page->networkItem(0, middle)->layout().elements.front();
     const std::uint32_t statement = element.statement;
     const std::uint16_t number = element.element;
-    double edit = 0;
-    double undo = 0;
-    for (auto _ : state) {
-        if (!open.page->selectElement(statement, number)) {
+    measureEditAndUndo(
+        state, open, "edit_ms",
+        [&] {
+            if (open.page->selectElement(statement, number))
+                return true;
             state.SkipWithError("the element is not on the page");
-            break;
-        }
-        auto start = Clock::now();
-        open.page->deleteSelection();
-        open.paintFrame();
-        edit += millisecondsSince(start);
-        start = Clock::now();
-        open.document->undoStack()->undo();
-        open.paintFrame();
-        undo += millisecondsSince(start);
-    }
-    const auto iterations = static_cast<double>(state.iterations());
-    state.counters["edit_ms"] = edit / iterations;
-    state.counters["undo_ms"] = undo / iterations;
+            return false;
+        },
+        [&] { open.page->deleteSelection(); });
 }
 BENCHMARK(BM_DeleteElementAndUndoMidway)
     ->Arg(kPlantStatements)

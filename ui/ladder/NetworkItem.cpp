@@ -116,8 +116,9 @@ int NetworkItem::elementAt(const QPointF& point) const {
     if (m_collapsed)
         return -1;
     const QPointF local = point - QPointF(kGutter, 0);
-    for (std::size_t i = 0; i < layout().elements.size(); ++i)
-        if (layout().elements[i].cell.contains(local))
+    const auto& elements = layout().elements;
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        if (elements[i].cell.contains(local))
             return static_cast<int>(i);
     return -1;
 }
