@@ -520,11 +520,23 @@ std::string behaviourBytes(const UnitImage& image) {
     return std::string(bytes.begin(), bytes.end());
 }
 
-std::string writeHps(const std::vector<UnitImage>& images) {
+namespace {
+
+std::vector<HexSegment> hpsSegments(const std::vector<UnitImage>& images) {
     std::vector<HexSegment> segments;
     for (const auto& image : images)
         segments.push_back({image.station * kHpsStationStride, encodeImage(image)});
-    return writeIntelHex(segments);
+    return segments;
+}
+
+} // namespace
+
+std::string writeHps(const std::vector<UnitImage>& images) {
+    return writeIntelHex(hpsSegments(images));
+}
+
+void writeHps(const std::vector<UnitImage>& images, const project::TextSink& sink) {
+    writeIntelHex(hpsSegments(images), sink);
 }
 
 HpsResult readHps(std::string_view text) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Image.h"
+#include "project/TextSink.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -48,6 +49,8 @@ inline constexpr std::size_t kMaxUnitImageBytes = kHpsStationStride;
 std::size_t encodedSizeBound(const UnitImage& image);
 
 std::string writeHps(const std::vector<UnitImage>& images);
+// The same text given to sink in pieces (writeIntelHex).
+void writeHps(const std::vector<UnitImage>& images, const project::TextSink& sink);
 
 using HpsResult = std::variant<std::vector<UnitImage>, ImageError>;
 HpsResult readHps(std::string_view text);

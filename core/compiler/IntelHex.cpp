@@ -251,12 +251,30 @@ HexReadResult failure(int line, int column, std::string message) {
 } // namespace
 
 std::string writeIntelHex(const std::vector<HexSegment>& segments) {
-    checkWritable(segments);
     std::string out;
     std::size_t bytes = 0;
     for (const auto& segment : segments)
         bytes += segment.bytes.size();
-    out.reserve(bytes * 2 + bytes / bytesPerRecord * 12 + 64); // digits and each record's frame
+    // Room for every record's digits and frame, each segment's part-filled last record, and an
+    // 04 record per page: never short, as a string that outgrows it doubles (issue 23).
+    const std::size_t records = bytes / bytesPerRecord + segments.size() + 1;
+    const std::size_t pages = bytes / 0x10000 + segments.size() + 1;
+    out.reserve(bytes * 2 + records * 12 + pages * 17);
+    writeIntelHex(segments, [&out](std::string_view piece) { out += piece; });
+    return out;
+}
+
+void writeIntelHex(const std::vector<HexSegment>& segments, const project::TextSink& sink) {
+    checkWritable(segments);
+    constexpr std::size_t pieceBytes = 64 * 1024;
+    std::string out;
+    out.reserve(pieceBytes + 1 + 2 * (4 + 255 + 1) + 1);
+    const auto handOn = [&] {
+        if (out.size() >= pieceBytes) {
+            sink(out);
+            out.clear();
+        }
+    };
     // Readers start with the upper address bits 0, so page 0 needs no 04 record.
     std::uint32_t page = 0;
     for (const auto& segment : segments) {
@@ -274,10 +292,11 @@ std::string writeIntelHex(const std::vector<HexSegment>& segments) {
             appendRecord(out, Data, static_cast<std::uint16_t>(address & 0xFFFF),
                          bytes.subspan(done, count));
             done += count;
+            handOn();
         }
     }
     appendRecord(out, EndOfFile, 0, {});
-    return out;
+    sink(out);
 }
 
 HexReadResult readIntelHex(std::string_view text) {

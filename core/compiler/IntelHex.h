@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "project/TextSink.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,6 +28,10 @@ struct HexSegment {
 // ones write nothing. Throws std::invalid_argument when segments overlap or one runs past 4 GiB,
 // since such text could not be read back to the same bytes.
 std::string writeIntelHex(const std::vector<HexSegment>& segments);
+
+// The same text given to sink in pieces of about 64 KiB, so that a large image reaches its file
+// without the whole text in memory. Throws, as above, before the first piece.
+void writeIntelHex(const std::vector<HexSegment>& segments, const project::TextSink& sink);
 
 // Where the text is wrong: 1-based line and column (in bytes), and what is wrong.
 struct HexError {

@@ -434,12 +434,21 @@ FileText readTextFile(const QString& path, qint64 maxBytes) {
 }
 
 QString writeTextFile(const QString& path, std::string_view text) {
+    return writeTextFile(path, [text](const TextSink& sink) { sink(text); });
+}
+
+QString writeTextFile(const QString& path, const std::function<void(const TextSink&)>& write) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    if (file.write(text.data(), static_cast<qint64>(text.size())) !=
-        static_cast<qint64>(text.size())) {
-        const QString error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    // After a failed write the rest is not tried; the first reason is kept.
+    QString error;
+    write([&](std::string_view piece) {
+        if (error.isEmpty() && file.write(piece.data(), static_cast<qint64>(piece.size())) !=
+                                   static_cast<qint64>(piece.size()))
+            error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    });
+    if (!error.isEmpty()) {
         file.cancelWriting();
         return error;
     }

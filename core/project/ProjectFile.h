@@ -2,10 +2,12 @@
 #pragma once
 
 #include "Project.h"
+#include "TextSink.h"
 #include "lang/Diagnostic.h"
 
 #include <QString>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,5 +47,9 @@ FileText readTextFile(const QString& path, qint64 maxBytes = kMaxTextFileBytes);
 // Writes through QSaveFile: the old file stays intact unless the whole new
 // text reached the disk. Returns an error message, empty on success.
 QString writeTextFile(const QString& path, std::string_view text);
+
+// The same for text made while it is written: `write` gives it to the sink in
+// pieces. Should `write` throw, the old file stays and the exception goes on.
+QString writeTextFile(const QString& path, const std::function<void(const TextSink&)>& write);
 
 } // namespace rs::project

@@ -106,6 +106,29 @@ TEST(IntelHex, RefusesToWriteWhatCouldNotBeReadBack) {
     EXPECT_NO_THROW(writeIntelHex({{0x10, {1, 2}}, {0x12, {3}}, {0x11, {}}}));
 }
 
+// Written as made: a large image in pieces of about 64 KiB, each ending at a
+// record's end, together the text of the whole.
+TEST(IntelHex, WritesALargeImageInPiecesOfWholeRecords) {
+    std::vector<HexSegment> segments{{0x1000000, std::vector<std::uint8_t>(300000, 0x5A)},
+                                     {0x2000000, std::vector<std::uint8_t>(70000, 0xA5)}};
+    std::vector<std::string> pieces;
+    writeIntelHex(segments, [&](std::string_view piece) { pieces.emplace_back(piece); });
+    ASSERT_GT(pieces.size(), 10u);
+    std::string joined;
+    for (const std::string& piece : pieces) {
+        EXPECT_LE(piece.size(), 64 * 1024 + 44u);
+        EXPECT_EQ(piece.back(), '\n');
+        joined += piece;
+    }
+    const std::string whole = writeIntelHex(segments);
+    EXPECT_EQ(joined, whole);
+    EXPECT_LE(whole.capacity(), whole.size() + whole.size() / 50)
+        << "the text was made in the room reserved for it, not a doubled string";
+    EXPECT_THROW(writeIntelHex({{0x10, {1, 2}}, {0x11, {3}}},
+                               [](std::string_view) { FAIL() << "nothing is written"; }),
+                 std::invalid_argument);
+}
+
 TEST(IntelHex, ReadsAndRewritesThePublishedExample) {
     std::vector<HexSegment> segments = readOk(publishedExample);
     ASSERT_EQ(segments.size(), 1u);
@@ -304,6 +327,12 @@ TEST(IntelHex, RandomBlocksRoundTrip) {
         SCOPED_TRACE(iteration);
 
         const std::string text = writeIntelHex(segments);
+        std::string pieces;
+        writeIntelHex(segments, [&](std::string_view piece) {
+            ASSERT_LE(piece.size(), 64 * 1024 + 1 + 2 * (5 + 16u) + 1);
+            pieces += piece;
+        });
+        ASSERT_EQ(pieces, text);
         for (const std::string& line : linesOf(text)) {
             ASSERT_LE(line.size(), 1 + 2 * (5 + 16u));
             ASSERT_EQ(line.find_first_not_of("0123456789ABCDEF", 1), std::string::npos) << line;

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 using rs::project::readTextFile;
 using rs::project::writeTextFile;
 using rs::test::FullFileSystem;
@@ -71,6 +73,50 @@ TEST(TextFile, SavingWithRoomWritesEveryByte) {
     REQUIRE_FULL_DISK(disk);
     EXPECT_TRUE(writeTextFile(disk.filePath("p.sps"), "Q0.0 = I0.0\n").isEmpty());
     EXPECT_EQ(readAll(disk.filePath("p.sps")), "Q0.0 = I0.0\n");
+}
+
+// A large image is written while it is made; on a full disk the pieces after
+// the first failure are not tried, and the old file stays.
+TEST(TextFile, SavingPiecesToAFullDiskKeepsTheOldFile) {
+    FullFileSystem disk;
+    REQUIRE_FULL_DISK(disk);
+    ASSERT_TRUE(disk.put("image.hps", "old"));
+    ASSERT_TRUE(disk.fill());
+    int pieces = 0;
+    const QString error =
+        writeTextFile(disk.filePath("image.hps"), [&](const rs::project::TextSink& sink) {
+            for (; pieces < 64; ++pieces)
+                sink(std::string(64 * 1024, 'x'));
+        });
+    EXPECT_FALSE(error.isEmpty());
+    EXPECT_EQ(pieces, 64);
+    EXPECT_EQ(readAll(disk.filePath("image.hps")), "old");
+}
+
+TEST(TextFile, SavingPiecesWritesThemInOrder) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("p.hps");
+    EXPECT_TRUE(writeTextFile(path, [](const rs::project::TextSink& sink) {
+                    sink("one ");
+                    sink("");
+                    sink("two");
+                }).isEmpty());
+    EXPECT_EQ(readAll(path), "one two");
+}
+
+// An image the writer refuses part way (issue 13) leaves the old file and no
+// temporary copy beside it.
+TEST(TextFile, AWriterThatThrowsLeavesTheOldFile) {
+    QTemporaryDir dir;
+    const QString path = write(dir, "image.hps", "old");
+    EXPECT_THROW(writeTextFile(path,
+                               [](const rs::project::TextSink& sink) {
+                                   sink("new");
+                                   throw std::invalid_argument("refused");
+                               }),
+                 std::invalid_argument);
+    EXPECT_EQ(readAll(path), "old");
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1);
 }
 
 TEST(TextFile, SavingIntoAMissingFolderSaysWhy) {

@@ -94,7 +94,9 @@ void CompileRun::start(ProjectDocument* document, const compiler::CheckOptions& 
         if (compiled.result.errors() == 0 && !imagePath.isEmpty()) {
             try {
                 compiled.imageError =
-                    project::writeTextFile(imagePath, compiler::writeHps(compiled.result.images));
+                    project::writeTextFile(imagePath, [&](const project::TextSink& sink) {
+                        compiler::writeHps(compiled.result.images, sink);
+                    });
             } catch (const std::exception& e) {
                 // An image the Intel HEX writer refuses (issue 13): said, not a crash.
                 compiled.imageError = QString::fromUtf8(e.what());
