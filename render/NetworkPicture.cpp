@@ -54,10 +54,6 @@ QByteArray networkSvg(const ladder::NetworkLayout& layout, const LadderStyle& st
     return buffer.data();
 }
 
-bool isPictureFileName(const QString& path) {
-    return hasSuffix(path, ".svg") || hasSuffix(path, ".png");
-}
-
 QString writeNetworkPicture(const QString& path, const ladder::NetworkLayout& layout,
                             const LadderStyle& style, const PowerSnapshot* power,
                             const QString& title) {

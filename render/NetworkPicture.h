@@ -2,6 +2,7 @@
 #pragma once
 
 #include "LadderStyle.h"
+#include "PictureFileName.h"
 #include "PowerSnapshot.h"
 #include "ladder/Layout.h"
 
@@ -25,8 +26,5 @@ QByteArray networkSvg(const ladder::NetworkLayout& layout, const LadderStyle& st
 QString writeNetworkPicture(const QString& path, const ladder::NetworkLayout& layout,
                             const LadderStyle& style, const PowerSnapshot* power = nullptr,
                             const QString& title = {});
-
-// Whether writeNetworkPicture can write a file of this name.
-bool isPictureFileName(const QString& path);
 
 } // namespace rs::render

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "ReviewPdf.h"
+#include "Review.h"
 #include "blocks/ProjectInstances.h"
 #include "compiler/Compiler.h"
 #include "project/Project.h"

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "LadderVerbs.h"
 
+#include "Drawing.h"
 #include "LivePower.h"
-#include "NetworkPicture.h"
+#include "PictureFileName.h"
 #include "Pl110Verbs.h"
 #include "Verbs.h"
 #include "compiler/Compiler.h"
@@ -12,8 +13,6 @@
 #include "ladder/TextToLadder.h"
 #include "project/ProjectFile.h"
 #include "sim/ScenarioRunner.h"
-
-#include <QGuiApplication>
 
 #include <algorithm>
 #include <cstdio>
@@ -165,7 +164,7 @@ int runLadder(const Invocation& invocation) {
             return live.status;
     }
     const QString error =
-        render::writeNetworkPicture(output, layout, {}, simulated ? &live.power : nullptr, title);
+        drawing().writeNetworkPicture(output, layout, simulated ? &live.power : nullptr, title);
     if (!error.isEmpty()) {
         std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));
         return UsageOrIo;
@@ -190,16 +189,6 @@ int runRoundtrip(const Invocation& invocation) {
         return failure(path, QStringLiteral("line %1 changed on the way through the ladder model")
                                  .arg(firstDifferingLine(canonical, text)));
     return Ok;
-}
-
-std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
-    const bool draws = std::any_of(argv + 1, argv + argc, [](const char* argument) {
-        return !std::strcmp(argument, "ladder") || !std::strncmp(argument, "--pdf", 5);
-    });
-    if (!draws)
-        return std::make_unique<QCoreApplication>(argc, argv);
-    qputenv("QT_QPA_PLATFORM", "offscreen");
-    return std::make_unique<QGuiApplication>(argc, argv);
 }
 
 } // namespace rs::cli

@@ -3,10 +3,6 @@
 
 #include "Invocation.h"
 
-#include <QCoreApplication>
-
-#include <memory>
-
 namespace rs::cli {
 
 // `ladder FILE.sps --unit U [--sequence S --step N] --network K
@@ -22,10 +18,5 @@ int runLadder(const Invocation& invocation);
 // the text differs from the canonical text (which would be a bug: the
 // differing line is reported).
 int runRoundtrip(const Invocation& invocation);
-
-// Drawing text needs fonts, and fonts need a QGuiApplication, which then
-// runs on the offscreen platform so that no display is needed. The other
-// verbs need only a QCoreApplication.
-std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv);
 
 } // namespace rs::cli

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Pl110Verbs.h"
 
+#include "Drawing.h"
 #include "MarksSnapshot.h"
-#include "NetworkPicture.h"
 #include "ProjectLoading.h"
 #include "TestVerb.h"
 #include "Verbs.h"
@@ -119,8 +119,8 @@ int ladderPl110(const QString& path, const std::string& text, int network, const
             status = ran;
             power = render::snapshotOfMarks(engine.marks());
         }
-        const QString error = render::writeNetworkPicture(
-            output, pl110::layoutRung(*rung.rung, context), {}, power ? &*power : nullptr,
+        const QString error = drawing().writeNetworkPicture(
+            output, pl110::layoutRung(*rung.rung, context), power ? &*power : nullptr,
             QStringLiteral("%1 rung %2").arg(path).arg(network));
         if (!error.isEmpty()) {
             std::fprintf(stderr, "rungsmith-cli: %s\n", qPrintable(error));

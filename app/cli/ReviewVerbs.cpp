@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReviewVerbs.h"
 
+#include "Drawing.h"
 #include "ProtectedWriting.h"
 #include "ReviewPages.h"
 #include "Verbs.h"
@@ -107,7 +108,7 @@ int runDiff(const Invocation& invocation) {
     for (const std::string& line : diff.lines())
         std::printf("%s\n", line.c_str());
     if (const QString pdf = invocation.options.value(QStringLiteral("pdf")); !pdf.isEmpty()) {
-        const QString error = render::writeReviewPdf(
+        const QString error = drawing().writeReviewPdf(
             pdf, render::reviewPages({oldPath, before.project, before.places, oldCompiled},
                                      {newPath, after.project, after.places, newCompiled}, diff,
                                      QStringLiteral("rungsmith-cli")));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "BlocksVerbs.h"
+#include "Drawing.h"
 #include "Invocation.h"
 #include "LadderVerbs.h"
 #include "MergeVerb.h"
@@ -145,6 +146,8 @@ const rs::cli::Verb kVerbs[] = {
 
 int run(int argc, char* argv[]) {
     const auto app = rs::cli::makeApplication(argc, argv);
+    if (!app)
+        return rs::cli::UsageOrIo;
     QCoreApplication::setApplicationName(QStringLiteral("rungsmith-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RUNGSMITH_BUILD_VERSION));
 

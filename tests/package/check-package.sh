@@ -71,6 +71,7 @@ listing=$(dpkg-deb --contents "$deb" | awk '{print $6}')
 for path in \
     ./usr/bin/rungsmith \
     ./usr/bin/rungsmith-cli \
+    ./usr/libexec/rungsmith/rungsmith-drawing.so \
     ./usr/share/rungsmith/examples/muting.sps \
     ./usr/share/rungsmith/examples/muting.prop \
     ./usr/share/rungsmith/examples/estop.sps \
@@ -138,6 +139,12 @@ prove_output=$(env -u LD_LIBRARY_PATH "$cli" prove "$share/rungsmith/examples/es
     "$share/rungsmith/examples/estop.prop" --cex "$scratch/files" 2>&1) ||
     fail "rungsmith-cli prove on the bundled example: $prove_output"
 grep -q "^5 proved, 0 failed, 0 unknown$" <<<"$prove_output" || fail "prove printed: $prove_output"
+# The drawing module is found from the program's own place too, and the
+# command line draws with it.
+ladder_output=$(env -u LD_LIBRARY_PATH "$cli" ladder "$share/rungsmith/examples/muting.sps" \
+    --unit 0 --network 1 -o "$scratch/files/muting.svg" 2>&1) ||
+    fail "rungsmith-cli ladder on the bundled example: $ladder_output"
+grep -q "<svg" "$scratch/files/muting.svg" || fail "rungsmith-cli ladder wrote no SVG"
 # The standard libraries are found from the program's own place, wherever
 # the package is unpacked.
 # (Read whole first: grep -q stops at the first match, and the list, long
@@ -149,7 +156,8 @@ grep -q "^Rungsmith_Basics ResetLatch(" <<<"$blocks_output" ||
 [ "$("$cli" --version)" = "rungsmith-cli $version" ] || fail "rungsmith-cli --version: $("$cli" --version)"
 gui_version=$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/rungsmith" --version 2>/dev/null) || true
 [ "$gui_version" = "rungsmith $version" ] || fail "rungsmith --version: $gui_version"
-file "$cli" "$root/usr/bin/rungsmith" | grep -v ', stripped' && fail "unstripped programs"
+file "$cli" "$root/usr/bin/rungsmith" "$root/usr/libexec/rungsmith/rungsmith-drawing.so" |
+    grep -v ', stripped' && fail "unstripped programs"
 
 # A file manager (GLib's detection) sees each file as its type, and Godot's
 # scenes, which share *.scn, still as theirs.
