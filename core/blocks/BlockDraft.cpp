@@ -31,7 +31,7 @@ public:
                                   [&](const Use& use) { return use.address == operand.address; });
         if (found == m_uses.end()) {
             m_uses.push_back({operand.address,
-                              operand.isName() ? operand.name : lang::toString(operand.address)});
+                              operand.isName() ? operand.name.str() : lang::toString(operand.address)});
             found = m_uses.end() - 1;
         }
         (writes ? found->writes : found->read) = true;

@@ -13,7 +13,7 @@ namespace rs::ladder {
 namespace {
 
 void unname(lang::Statement& statement) {
-    lang::forEachOperand(statement, [](lang::Operand& operand) { operand.name.clear(); });
+    lang::forEachOperand(statement, [](lang::Operand& operand) { operand.name = {}; });
 }
 
 constexpr int kStation = 0;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Address.h"
+#include "Name.h"
 #include "OptionalApart.h"
 #include "Rare.h"
 #include "SourceLocation.h"
@@ -20,7 +21,7 @@ namespace rs::lang {
 
 // A variable reference: an address, or a symbolic name that resolves to one.
 struct Operand {
-    std::string name; // as written, when the program uses a symbolic name
+    Name name;        // as written, when the program uses a symbolic name
     Address address;  // written, or filled in by name resolution
     SourceLocation location;
 

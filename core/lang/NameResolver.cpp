@@ -25,7 +25,7 @@ void collectInstructionSets(const Document& document, std::array<int, 32>& sets)
 }
 
 struct Symbol {
-    std::string spelling;
+    Name spelling; // shared with the operands that use it
     Address address;
     SourceLocation declared;
 };
@@ -137,9 +137,10 @@ private:
         }
         // Halves of a named double register ("Example.Lo") and bits of a
         // named register ("Counter.3").
-        if (auto dot = operand.name.rfind('.'); dot != std::string::npos && dot > 0) {
-            const std::string base = operand.name.substr(0, dot);
-            const std::string suffix = operand.name.substr(dot + 1);
+        const std::string& name = operand.name;
+        if (auto dot = name.rfind('.'); dot != std::string::npos && dot > 0) {
+            const std::string base = name.substr(0, dot);
+            const std::string suffix = name.substr(dot + 1);
             if (const Symbol* symbol = lookupDeclared(foldName(base), local)) {
                 const std::string lower = foldName(suffix);
                 if (symbol->address.kind == AddressKind::DoubleRegister &&

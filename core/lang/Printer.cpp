@@ -110,7 +110,7 @@ std::string formatTime(int hundredths) {
 }
 
 std::string printOperand(const Operand& operand) {
-    return operand.isName() ? operand.name : toString(operand.address);
+    return operand.isName() ? operand.name.str() : toString(operand.address);
 }
 
 std::string printValue(const Value& value) {

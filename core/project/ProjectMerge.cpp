@@ -85,7 +85,7 @@ void localise(lang::Document& program, const std::set<std::string>& shared) {
                     lang::forEachOperand(*statement, [&](lang::Operand& operand) {
                         const std::string used = foldedBase(operand.name);
                         if (operand.isName() && shared.count(used) > 0 && declared.count(used) == 0)
-                            operand.name.clear();
+                            operand.name = {};
                     });
     }
 }

@@ -132,16 +132,17 @@ void renameUses(lang::UnitProgram& unit, const Address& address, std::string_vie
             lang::systemName(operand.name, unit.station()).valid())
             return;
         if (name.empty()) {
-            operand.name.clear();
+            operand.name = {};
             return;
         }
-        operand.name = std::string(name);
+        std::string written(name);
         if (operand.address.kind == AddressKind::RegisterBit)
-            operand.name += "." + std::to_string(operand.address.bit);
+            written += "." + std::to_string(operand.address.bit);
         else if (operand.address.kind == AddressKind::DoubleRegisterLow)
-            operand.name += ".Lo";
+            written += ".Lo";
         else if (operand.address.kind == AddressKind::DoubleRegisterHigh)
-            operand.name += ".Hi";
+            written += ".Hi";
+        operand.name = written;
     });
 }
 

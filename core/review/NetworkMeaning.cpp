@@ -9,7 +9,7 @@ namespace rs::review {
 namespace {
 
 void unname(lang::Operand& operand) {
-    operand.name.clear();
+    operand.name = {};
 }
 
 void unname(lang::Value& value) {
