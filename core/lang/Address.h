@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 
 namespace rs::lang {
 
@@ -30,20 +31,32 @@ enum class AddressKind : std::uint8_t {
     Sequence,           // Su.s, as in R(Su.s)
 };
 
-// One variable of one unit, as the language addresses it.
+// One variable of one unit, as the language addresses it. Made as
+// Address{kind, unit, index[, bit[, asiB]]}. The two one-byte fields lie
+// together (16 bytes, not 20: every operand of a syntax tree holds one,
+// issue 23); addresses still order by kind, unit, index, bit, then asiB.
 struct Address {
     AddressKind kind = AddressKind::None;
+    bool asiB = false; // AS-i B slave ("ASi0.3B.1")
     int unit = 0;
     int index = 0;
-    int bit = -1;      // register bit, or AS-i slave bit 1..4; -1 when absent
-    bool asiB = false; // AS-i B slave ("ASi0.3B.1")
+    int bit = -1; // register bit, or AS-i slave bit 1..4; -1 when absent
+
+    constexpr Address() = default;
+    constexpr Address(AddressKind kind, int unit = 0, int index = 0, int bit = -1,
+                      bool asiB = false)
+        : kind(kind), asiB(asiB), unit(unit), index(index), bit(bit) {}
 
     bool valid() const { return kind != AddressKind::None; }
     // IA inputs are both: an ordinary failsafe input, or an analogue or counter value.
     bool isBit() const;  // usable as a contact or a coil
     bool isWord() const; // usable in comparisons and arithmetic
 
-    friend auto operator<=>(const Address&, const Address&) = default;
+    friend bool operator==(const Address&, const Address&) = default;
+    friend std::strong_ordering operator<=>(const Address& a, const Address& b) {
+        return std::tie(a.kind, a.unit, a.index, a.bit, a.asiB) <=>
+               std::tie(b.kind, b.unit, b.index, b.bit, b.asiB);
+    }
 };
 
 // A step header "Su.s_n".

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 using namespace rs::lang;
 
 namespace {
@@ -71,4 +74,28 @@ TEST(Address, MalformedAddressesSayWhy) {
     EXPECT_EQ(canonical("S0.1_"),
               "<malformed step header 'S0.1_': expected S<unit>.<sequence>_<step>>");
     EXPECT_EQ(canonical("M0.9999999"), "<number too large in address 'M0.9999999'>");
+}
+
+// Sets and sorted lists of addresses (the image's exported variables, the
+// unused names) order by kind, unit, index, bit, then the B slave, whatever
+// the order of the fields in memory.
+TEST(Address, OrdersByKindUnitIndexBitThenBSlave) {
+    const std::vector<Address> ordered{
+        {AddressKind::Input, 0, 7},
+        {AddressKind::Input, 1, 0},
+        {AddressKind::Output, 0, 0},
+        {AddressKind::Register, 0, 3, -1},
+        {AddressKind::Register, 0, 3, 0},
+        {AddressKind::AsiInput, 0, 3, 1, false},
+        {AddressKind::AsiInput, 0, 3, 1, true},
+        {AddressKind::AsiInput, 0, 3, 2, false},
+    };
+    std::vector<Address> shuffled(ordered.rbegin(), ordered.rend());
+    std::swap(shuffled[1], shuffled[5]);
+    std::sort(shuffled.begin(), shuffled.end());
+    EXPECT_EQ(shuffled, ordered);
+    const Address input{AddressKind::Input, 2, 5};
+    EXPECT_EQ(input.bit, -1);
+    EXPECT_FALSE(input.asiB);
+    EXPECT_EQ(toString(input), "I2.5");
 }
