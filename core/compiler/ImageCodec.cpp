@@ -30,18 +30,20 @@ constexpr std::uint32_t kMaxIncludedSourceBytes = project::kMaxTextFileBytes;
 
 class Writer {
 public:
-    // Room for the image's code (16 bytes an instruction) and its tables.
-    explicit Writer(const UnitImage& image) {
-        m_bytes.reserve(256 + 16 * image.code.size() + 12 * image.steps.size());
-    }
+    // Room for all that will be written: grown as it goes, a large unit's
+    // bytes were copied twice over (issue 23).
+    explicit Writer(std::size_t room) { m_bytes.reserve(room); }
     void u8(std::uint8_t v) { m_bytes.push_back(v); }
+    // Little-endian, appended at once.
     void u16(std::uint16_t v) {
-        u8(static_cast<std::uint8_t>(v));
-        u8(static_cast<std::uint8_t>(v >> 8));
+        const std::uint8_t b[] = {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8)};
+        append(b, sizeof b);
     }
     void u32(std::uint32_t v) {
-        u16(static_cast<std::uint16_t>(v));
-        u16(static_cast<std::uint16_t>(v >> 16));
+        const std::uint8_t b[] = {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8),
+                                  static_cast<std::uint8_t>(v >> 16),
+                                  static_cast<std::uint8_t>(v >> 24)};
+        append(b, sizeof b);
     }
     void bytes(std::string_view s) { m_bytes.insert(m_bytes.end(), s.begin(), s.end()); }
     void append(const std::uint8_t* data, std::size_t size) {
@@ -308,7 +310,7 @@ std::size_t encodedSizeBound(const UnitImage& image) {
 }
 
 std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
-    Writer w(image);
+    Writer w(encodedSizeBound(image));
     w.bytes(std::string_view(kMagic, 4));
     w.u16(kVersion);
     w.u8(image.station);
@@ -499,7 +501,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
 }
 
 std::string behaviourBytes(const UnitImage& image) {
-    Writer w(image);
+    Writer w(encodedSizeBound(image)); // the image without places and source
     w.u8(image.station);
     w.u8(image.unitType);
     w.u8(image.instructionSet);

@@ -2,6 +2,8 @@
 #include "IntelHex.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <iterator>
 #include <map>
 #include <span>
@@ -49,17 +51,28 @@ std::string addressText(std::uint32_t value) {
     return text;
 }
 
+// The two digits of every byte, "000102...FF": a record's bytes are written
+// two characters at a time.
+constexpr std::array<char, 512> kHexPairs = [] {
+    constexpr char digits[] = "0123456789ABCDEF";
+    std::array<char, 512> pairs{};
+    for (int value = 0; value < 256; ++value) {
+        pairs[2 * value] = digits[value >> 4];
+        pairs[2 * value + 1] = digits[value & 0x0F];
+    }
+    return pairs;
+}();
+
 void appendRecord(std::string& out, RecordType type, std::uint16_t offset,
                   std::span<const std::uint8_t> data) {
     // Made in a buffer and appended once: a large image has hundreds of
     // thousands of records, and a string grown a character at a time was a
     // tenth of `compile` (docs/performance.md).
-    constexpr char digits[] = "0123456789ABCDEF";
     char record[1 + 2 * (4 + 255 + 1) + 1];
     std::size_t length = 0;
     auto put = [&](std::uint8_t value) {
-        record[length++] = digits[value >> 4];
-        record[length++] = digits[value & 0x0F];
+        std::memcpy(record + length, kHexPairs.data() + 2 * value, 2);
+        length += 2;
     };
     const auto count = static_cast<std::uint8_t>(data.size());
     const auto offsetHigh = static_cast<std::uint8_t>(offset >> 8);
