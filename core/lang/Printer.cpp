@@ -9,7 +9,7 @@ namespace rs::lang {
 
 namespace {
 
-int characterCount(const std::string& text) {
+int characterCount(std::string_view text) {
     int count = 0;
     for (unsigned char c : text)
         if ((c & 0xC0) != 0x80)
@@ -53,10 +53,13 @@ struct DeclarationPrinter {
     }
 };
 
-void appendWithComment(std::string& out, const std::string& code,
-                       const std::optional<std::string>& comment) {
-    out += code;
+void appendStatement(std::string& out, const Statement& statement);
+
+// Ends the line whose code began at `codeStart` in `out`: its comment at the
+// comment column, or a space after longer code.
+void endLine(std::string& out, std::size_t codeStart, const std::optional<std::string>& comment) {
     if (comment) {
+        const std::string_view code(out.data() + codeStart, out.size() - codeStart);
         int width = characterCount(code);
         if (code.empty())
             width = 0;
@@ -83,16 +86,24 @@ struct LinePrinter {
         out += '\n';
     }
     void operator()(const Directive& directive) const {
-        std::string code = "$" + directive.keyword;
-        if (!directive.text.empty())
-            code += " " + directive.text;
-        appendWithComment(out, code, comment);
+        const std::size_t start = out.size();
+        out += '$';
+        out += directive.keyword;
+        if (!directive.text.empty()) {
+            out += ' ';
+            out += directive.text;
+        }
+        endLine(out, start, comment);
     }
     void operator()(const Declaration& declaration) const {
-        appendWithComment(out, printDeclaration(declaration), comment);
+        const std::size_t start = out.size();
+        out += printDeclaration(declaration);
+        endLine(out, start, comment);
     }
     void operator()(const Statement& statement) const {
-        appendWithComment(out, printStatement(statement), comment);
+        const std::size_t start = out.size();
+        appendStatement(out, statement);
+        endLine(out, start, comment);
     }
 };
 
@@ -109,14 +120,127 @@ std::string formatTime(int hundredths) {
     return buffer;
 }
 
+namespace {
+
+// The printers append to one text: a large project's canonical text is
+// printed at each compile, and a string made for every node and operand was
+// most of the time it took (issue 23).
+
+void appendOperand(std::string& out, const Operand& operand) {
+    if (operand.isName())
+        out += operand.name.str();
+    else
+        out += toString(operand.address);
+}
+
+void appendValue(std::string& out, const Value& value) {
+    if (value.operand)
+        appendOperand(out, *value.operand);
+    else
+        out += std::to_string(value.constant);
+}
+
+void appendExpression(std::string& out, const Expr& expr) {
+    if (expr.negated)
+        out += '/';
+    switch (expr.kind) {
+    case ExprKind::Or:
+        for (std::size_t i = 0; i < expr.children.size(); ++i) {
+            if (i)
+                out += " + ";
+            appendExpression(out, expr.children[i]);
+        }
+        return;
+    case ExprKind::And:
+        for (std::size_t i = 0; i < expr.children.size(); ++i) {
+            if (i)
+                out += " * ";
+            const Expr& child = expr.children[i];
+            if (child.kind == ExprKind::Or) {
+                out += '(';
+                appendExpression(out, child);
+                out += ')';
+            } else {
+                appendExpression(out, child);
+            }
+        }
+        return;
+    case ExprKind::Contact:
+        appendOperand(out, expr.operand);
+        return;
+    case ExprKind::Edge:
+        out += expr.risingEdge ? kRisingEdgeWord : kFallingEdgeWord;
+        out += '(';
+        if (expr.operandNegated)
+            out += '/';
+        appendOperand(out, expr.operand);
+        out += ')';
+        return;
+    case ExprKind::Timer:
+        out += timerWord(expr.timer);
+        out += '(';
+        if (expr.preset.registerOperand)
+            appendOperand(out, *expr.preset.registerOperand);
+        else
+            out += formatTime(expr.preset.hundredths);
+        out += ')';
+        return;
+    case ExprKind::Compare:
+        out += '(';
+        appendOperand(out, expr.operand);
+        out += compareWord(expr.compare);
+        appendValue(out, expr.right);
+        out += ')';
+        return;
+    }
+}
+
+void appendStatement(std::string& out, const Statement& statement) {
+    switch (statement.kind) {
+    case StatementKind::Coil:
+        appendOperand(out, statement.target);
+        break;
+    case StatementKind::Set:
+    case StatementKind::Reset:
+    case StatementKind::SequenceReset:
+    case StatementKind::Toggle:
+        out += statementWord(statement.kind);
+        out += '(';
+        appendOperand(out, statement.target);
+        out += ')';
+        break;
+    case StatementKind::Jump:
+        out += kJumpWord;
+        out += '(';
+        if (statement.relativeJump)
+            out += statement.jumpStep < 0 ? '-' : '+';
+        out += std::to_string(statement.jumpStep < 0 ? -statement.jumpStep : statement.jumpStep);
+        out += ')';
+        break;
+    case StatementKind::Assign:
+        out += '(';
+        out += printAssignment(*statement.assignment);
+        out += ')';
+        break;
+    }
+    if (statement.condition) {
+        out += " = ";
+        appendExpression(out, *statement.condition);
+    }
+}
+
+} // namespace
+
 std::string printOperand(const Operand& operand) {
-    return operand.isName() ? operand.name.str() : toString(operand.address);
+    std::string text;
+    appendOperand(text, operand);
+    return text;
 }
 
 std::string printValue(const Value& value) {
-    if (value.operand)
-        return printOperand(*value.operand);
-    return std::to_string(value.constant);
+    std::string text;
+    appendValue(text, value);
+    return text;
 }
 
 std::string printAssignmentOperation(const Assignment& a) {
@@ -134,70 +258,14 @@ std::string printAssignmentOperation(const Assignment& a) {
 }
 
 std::string printExpression(const Expr& expr) {
-    std::string text = expr.negated ? "/" : "";
-    switch (expr.kind) {
-    case ExprKind::Or:
-        for (std::size_t i = 0; i < expr.children.size(); ++i) {
-            if (i)
-                text += " + ";
-            text += printExpression(expr.children[i]);
-        }
-        return text;
-    case ExprKind::And:
-        for (std::size_t i = 0; i < expr.children.size(); ++i) {
-            if (i)
-                text += " * ";
-            const Expr& child = expr.children[i];
-            if (child.kind == ExprKind::Or)
-                text += "(" + printExpression(child) + ")";
-            else
-                text += printExpression(child);
-        }
-        return text;
-    case ExprKind::Contact:
-        return text + printOperand(expr.operand);
-    case ExprKind::Edge:
-        return text + std::string(expr.risingEdge ? kRisingEdgeWord : kFallingEdgeWord) + "(" +
-               (expr.operandNegated ? "/" : "") + printOperand(expr.operand) + ")";
-    case ExprKind::Timer:
-        text += timerWord(expr.timer);
-        text += '(';
-        text += expr.preset.registerOperand ? printOperand(*expr.preset.registerOperand)
-                                            : formatTime(expr.preset.hundredths);
-        return text + ")";
-    case ExprKind::Compare:
-        return text + "(" + printOperand(expr.operand) + std::string(compareWord(expr.compare)) +
-               printValue(expr.right) + ")";
-    }
+    std::string text;
+    appendExpression(text, expr);
     return text;
 }
 
 std::string printStatement(const Statement& statement) {
     std::string text;
-    switch (statement.kind) {
-    case StatementKind::Coil:
-        text = printOperand(statement.target);
-        break;
-    case StatementKind::Set:
-    case StatementKind::Reset:
-    case StatementKind::SequenceReset:
-    case StatementKind::Toggle:
-        text =
-            std::string(statementWord(statement.kind)) + "(" + printOperand(statement.target) + ")";
-        break;
-    case StatementKind::Jump:
-        text = std::string(kJumpWord) + "(";
-        if (statement.relativeJump)
-            text += statement.jumpStep < 0 ? "-" : "+";
-        text += std::to_string(statement.jumpStep < 0 ? -statement.jumpStep : statement.jumpStep);
-        text += ")";
-        break;
-    case StatementKind::Assign:
-        text = "(" + printAssignment(*statement.assignment) + ")";
-        break;
-    }
-    if (statement.condition)
-        text += " = " + printExpression(*statement.condition);
+    appendStatement(text, statement);
     return text;
 }
 
@@ -217,7 +285,9 @@ std::string printDocument(const std::vector<Line>& preamble, const std::vector<U
         std::visit(LinePrinter{out, unit.header.comment}, unit.header.body);
         printLines(out, declarations ? (*declarations)[i] : unit.declarations);
         for (const auto& step : unit.steps) {
-            appendWithComment(out, toString(step.address), step.comment);
+            const std::size_t start = out.size();
+            out += toString(step.address);
+            endLine(out, start, step.comment);
             printLines(out, step.lines);
         }
     }
