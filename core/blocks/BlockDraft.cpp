@@ -30,8 +30,8 @@ public:
         auto found = std::find_if(m_uses.begin(), m_uses.end(),
                                   [&](const Use& use) { return use.address == operand.address; });
         if (found == m_uses.end()) {
-            m_uses.push_back({operand.address,
-                              operand.isName() ? operand.name.str() : lang::toString(operand.address)});
+            m_uses.push_back({operand.address, operand.isName() ? operand.name.str()
+                                                                : lang::toString(operand.address)});
             found = m_uses.end() - 1;
         }
         (writes ? found->writes : found->read) = true;

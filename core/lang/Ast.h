@@ -21,8 +21,8 @@ namespace rs::lang {
 
 // A variable reference: an address, or a symbolic name that resolves to one.
 struct Operand {
-    Name name;        // as written, when the program uses a symbolic name
-    Address address;  // written, or filled in by name resolution
+    Name name;       // as written, when the program uses a symbolic name
+    Address address; // written, or filled in by name resolution
     SourceLocation location;
 
     bool isName() const { return !name.empty(); }
