@@ -77,15 +77,16 @@ struct Instruction {
     // Edge/Timer: occurrence number; Jump: step; SequenceReset: sequence;
     // System: how many Arguments follow
     std::uint16_t slot = 0;
-    lang::Address operand;
-    std::int32_t constant = 0;
     // Where it came from: the statement's line and column, the statement's
     // number in the unit (from 0, in file order) and the element within it
-    // (0 the output, then the expression's nodes in pre-order from 1).
-    std::uint32_t line = 0;
+    // (0 the output, then the expression's nodes in pre-order from 1). The
+    // two-byte fields lie together: 40 bytes an instruction, not 44.
     std::uint16_t column = 0;
-    std::uint32_t statement = 0;
     std::uint16_t element = 0;
+    lang::Address operand;
+    std::int32_t constant = 0;
+    std::uint32_t line = 0;
+    std::uint32_t statement = 0;
 
     friend bool operator==(const Instruction&, const Instruction&) = default;
 };
