@@ -80,7 +80,7 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
         lang::sortByPlace(result.diagnostics);
         return result;
     }
-    const std::string canonical = project::writeProject(project);
+    std::string canonical = project::writeProject(project);
     const std::uint32_t sourceCrc = crc32(canonical);
     // The code is generated from the canonical text read back, so the line
     // and column each instruction keeps are places in that text: formatting
@@ -91,6 +91,8 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     const project::ProjectReadResult reread =
         canonicalAlready ? project::ProjectReadResult{} : project::readProject(canonical);
     const project::Project& source = canonicalAlready || !reread.ok() ? project : reread.project;
+    if (!project.includeSource) // the images do not carry it: its memory goes to the code
+        std::string().swap(canonical);
     lang::Diagnostics again; // the same as above: the checks passed
     UnitSetups sourceUnits = setUpUnits(source, again);
     for (const auto& [station, unit] : sourceUnits) {
