@@ -229,18 +229,22 @@ void appendStatement(std::string& out, const Statement& statement) {
     }
 }
 
-} // namespace
-
-std::string printOperand(const Operand& operand) {
+// What an appender above writes, alone.
+template <typename Node>
+std::string printed(void (*append)(std::string&, const Node&), const Node& node) {
     std::string text;
-    appendOperand(text, operand);
+    append(text, node);
     return text;
 }
 
+} // namespace
+
+std::string printOperand(const Operand& operand) {
+    return printed(appendOperand, operand);
+}
+
 std::string printValue(const Value& value) {
-    std::string text;
-    appendValue(text, value);
-    return text;
+    return printed(appendValue, value);
 }
 
 std::string printAssignmentOperation(const Assignment& a) {
@@ -258,15 +262,11 @@ std::string printAssignmentOperation(const Assignment& a) {
 }
 
 std::string printExpression(const Expr& expr) {
-    std::string text;
-    appendExpression(text, expr);
-    return text;
+    return printed(appendExpression, expr);
 }
 
 std::string printStatement(const Statement& statement) {
-    std::string text;
-    appendStatement(text, statement);
-    return text;
+    return printed(appendStatement, statement);
 }
 
 std::string printDeclaration(const Declaration& declaration) {
