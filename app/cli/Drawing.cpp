@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace rs::cli {
 
@@ -68,6 +70,8 @@ std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
 }
 
 const DrawingModule& drawing() {
+    if (!loadedModule) // a verb that draws, not named to makeApplication: a bug, said as one
+        throw std::logic_error("the drawing module was not loaded for this verb");
     return *loadedModule;
 }
 
