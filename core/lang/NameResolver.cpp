@@ -5,6 +5,7 @@
 
 #include <array>
 #include <map>
+#include <unordered_map>
 
 namespace rs::lang {
 
@@ -46,6 +47,7 @@ public:
         for (auto& unit : document.units) {
             Scope local;
             declare(unit.declarations, local, unit.station());
+            m_answers.clear();
             for (auto& step : unit.steps)
                 for (auto& line : step.lines)
                     if (auto* statement = std::get_if<Statement>(&line.body))
@@ -61,6 +63,7 @@ public:
             if (unit.station() == station)
                 declare(unit.declarations, local, station);
         m_diagnostics.clear(); // the declarations' problems are resolveNames' to report
+        m_answers.clear();
         for (Operand* operand : operands)
             resolve(*operand, local, station);
         return std::move(m_diagnostics);
@@ -114,6 +117,16 @@ private:
         }
     }
 
+    // What a name as written is declared as in `local`, asked of the scopes
+    // once for each spelling: a name is written many times in a unit, and
+    // folding it and finding it was most of resolving it.
+    const Symbol* declaredAs(const Name& name, const Scope& local) {
+        auto [answer, asked] = m_answers.try_emplace(name.c_str(), nullptr);
+        if (asked)
+            answer->second = lookupDeclared(foldName(name), local);
+        return answer->second;
+    }
+
     const Symbol* lookupDeclared(const std::string& key, const Scope& local) const {
         if (auto it = local.find(key); it != local.end())
             return &it->second;
@@ -126,7 +139,7 @@ private:
     void resolve(Operand& operand, const Scope& local, int station) {
         if (!operand.isName())
             return;
-        if (const Symbol* symbol = lookupDeclared(foldName(operand.name), local)) {
+        if (const Symbol* symbol = declaredAs(operand.name, local)) {
             operand.address = symbol->address;
             operand.name = symbol->spelling;
             return;
@@ -234,6 +247,9 @@ private:
     std::array<int, 32> m_instructionSets{};
     Scope m_global;
     Diagnostics m_diagnostics;
+    // declaredAs's answers in the unit being resolved (cleared for each
+    // scope), by the spelling's place: one place a spelling (lang::Name).
+    std::unordered_map<const char*, const Symbol*> m_answers;
 };
 
 } // namespace

@@ -129,3 +129,13 @@ TEST(NameResolution, LocalNamesStayInTheirUnit) {
     EXPECT_EQ(r.diagnostics, std::vector<std::string>{
                                  "7:8: unknown name 'Local': declare it with '! <address>=Local'"});
 }
+
+// A name each unit declares for itself is each unit's own, however often
+// it is written.
+TEST(NameResolution, OneNameInTwoUnitsIsEachUnitsOwn) {
+    Resolved r = resolve("! pgm_pluto:00\n! M0.1=Lamp\nS0.0_0\nQ0.1 = Lamp\nQ0.2 = Lamp\n"
+                         "! pgm_pluto:01\n! M1.7=lamp\nS1.0_0\nQ1.1 = LAMP\nQ1.2 = Lamp\n");
+    EXPECT_TRUE(r.diagnostics.empty());
+    EXPECT_EQ(r.text, "! pgm_pluto:00\n! M0.1=Lamp\nS0.0_0\nQ0.1 = Lamp\nQ0.2 = Lamp\n"
+                      "! pgm_pluto:01\n! M1.7=lamp\nS1.0_0\nQ1.1 = lamp\nQ1.2 = lamp\n");
+}
