@@ -299,11 +299,20 @@ std::uint32_t crc32(std::string_view bytes) {
         ::crc32(0L, reinterpret_cast<const Bytef*>(bytes.data()), static_cast<uInt>(bytes.size())));
 }
 
-std::size_t encodedSizeBound(const UnitImage& image) {
+namespace {
+
+// At least the encoded image without its included source.
+std::size_t boundWithoutSource(const UnitImage& image) {
     constexpr std::size_t kFixed = 4 + 2 + 4 * 1 + 4 + 4 + 2 + 3 * 2 + 4 + 4; // header, counts, crc
     constexpr std::size_t kStepSize = 1 + 1 + 4 + 4;
-    std::size_t size = kFixed + image.projectName.size() + image.steps.size() * kStepSize +
-                       image.code.size() * kInstructionSize + setupSize(image);
+    return kFixed + image.projectName.size() + image.steps.size() * kStepSize +
+           image.code.size() * kInstructionSize + setupSize(image);
+}
+
+} // namespace
+
+std::size_t encodedSizeBound(const UnitImage& image) {
+    std::size_t size = boundWithoutSource(image);
     if (!image.source.empty())
         size += 4 + 4 + ::compressBound(static_cast<uLong>(image.source.size()));
     return size;
@@ -501,7 +510,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
 }
 
 std::string behaviourBytes(const UnitImage& image) {
-    Writer w(encodedSizeBound(image)); // the image without places and source
+    Writer w(boundWithoutSource(image)); // more than enough: no places either
     w.u8(image.station);
     w.u8(image.unitType);
     w.u8(image.instructionSet);

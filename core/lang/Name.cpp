@@ -2,8 +2,8 @@
 #include "Name.h"
 
 #include <array>
+#include <functional>
 #include <mutex>
-#include <ostream>
 #include <unordered_set>
 
 namespace rs::lang {
@@ -55,10 +55,6 @@ Name::Name(std::string_view text)
 const std::string& Name::emptyText() {
     static const std::string empty;
     return empty;
-}
-
-std::ostream& operator<<(std::ostream& out, const Name& name) {
-    return out << name.str();
 }
 
 } // namespace rs::lang

@@ -3,10 +3,9 @@
 
 #include <compare>
 #include <cstddef>
-#include <functional>
-#include <iosfwd>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace rs::lang {
 
@@ -44,11 +43,7 @@ public:
 
     friend std::string operator+(const std::string& a, const Name& b) { return a + b.str(); }
     friend std::string operator+(std::string&& a, const Name& b) { return std::move(a) + b.str(); }
-    friend std::string operator+(const Name& a, const std::string& b) { return a.str() + b; }
     friend std::string operator+(const char* a, const Name& b) { return a + b.str(); }
-    friend std::string operator+(const Name& a, const char* b) { return a.str() + b; }
-    friend std::string operator+(char a, const Name& b) { return a + b.str(); }
-    friend std::string operator+(const Name& a, char b) { return a.str() + b; }
 
 private:
     static const std::string& emptyText();
@@ -56,12 +51,4 @@ private:
     const std::string* m_text = nullptr; // none: the empty name
 };
 
-std::ostream& operator<<(std::ostream& out, const Name& name);
-
 } // namespace rs::lang
-
-template <> struct std::hash<rs::lang::Name> {
-    std::size_t operator()(const rs::lang::Name& name) const {
-        return std::hash<std::string_view>{}(name.str());
-    }
-};
