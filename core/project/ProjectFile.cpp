@@ -9,6 +9,7 @@
 #include "RecordWords.h"
 #include "RemanentVariables.h"
 #include "SaveFileCommit.h"
+#include "WriteBehind.h"
 #include "lang/NameResolver.h"
 #include "lang/Parser.h"
 #include "lang/Printer.h"
@@ -434,23 +435,34 @@ FileText readTextFile(const QString& path, qint64 maxBytes) {
 }
 
 QString writeTextFile(const QString& path, std::string_view text) {
-    return writeTextFile(path, [text](const TextSink& sink) { sink(text); });
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    if (file.write(text.data(), static_cast<qint64>(text.size())) !=
+        static_cast<qint64>(text.size())) {
+        const QString reason = file.errorString();
+        file.cancelWriting();
+        return QStringLiteral("cannot write %1: %2").arg(path, reason);
+    }
+    const QString reason = commitSaveFile(file);
+    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
 }
 
 QString writeTextFile(const QString& path, const std::function<void(const TextSink&)>& write) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    // After a failed write the rest is not tried; the first reason is kept.
     QString error;
-    write([&](std::string_view piece) {
-        if (error.isEmpty() && file.write(piece.data(), static_cast<qint64>(piece.size())) !=
-                                   static_cast<qint64>(piece.size()))
-            error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    });
+    {
+        // Should `write` throw, the pieces still queued are dropped here and
+        // QSaveFile removes its temporary copy.
+        WriteBehind writer(file);
+        write([&writer](std::string_view piece) { writer.add(piece); });
+        error = writer.finish();
+    }
     if (!error.isEmpty()) {
         file.cancelWriting();
-        return error;
+        return QStringLiteral("cannot write %1: %2").arg(path, error);
     }
     const QString reason = commitSaveFile(file);
     return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);

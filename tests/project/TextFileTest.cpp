@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "FullFileSystem.h"
 #include "project/ProjectFile.h"
+#include "project/WriteBehind.h"
 
 #include <QDir>
 #include <QFile>
@@ -8,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 using rs::project::readTextFile;
 using rs::project::writeTextFile;
@@ -104,6 +108,31 @@ TEST(TextFile, SavingPiecesWritesThemInOrder) {
     EXPECT_EQ(readAll(path), "one two");
 }
 
+// The pieces are written on another thread while the next ones are made:
+// thousands of them, of every size, some empty, cross the queue and the
+// write-back steps and arrive whole and in order.
+TEST(TextFile, SavingManyPiecesOfEverySizeKeepsTheirOrder) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("p.hps");
+    std::mt19937 random(23);
+    std::string expected;
+    EXPECT_TRUE(writeTextFile(path, [&](const rs::project::TextSink& sink) {
+                    std::string piece;
+                    for (int i = 0; i < 600; ++i) {
+                        const std::size_t size = random() % 3 == 0 ? 0 : random() % 70000;
+                        piece.assign(size, static_cast<char>('a' + i % 26));
+                        if (!piece.empty())
+                            piece.front() = static_cast<char>('0' + i % 10);
+                        expected += piece;
+                        sink(piece); // the same buffer again at once: the sink keeps a copy
+                    }
+                }).isEmpty());
+    ASSERT_GT(expected.size(), 2 * rs::project::WriteBehind::kWriteBackStep);
+    const QByteArray written = readAll(path);
+    ASSERT_EQ(static_cast<std::size_t>(written.size()), expected.size());
+    EXPECT_TRUE(std::string_view(written.constData(), expected.size()) == expected);
+}
+
 // An image the writer refuses part way (issue 13) leaves the old file and no
 // temporary copy beside it.
 TEST(TextFile, AWriterThatThrowsLeavesTheOldFile) {
@@ -112,6 +141,22 @@ TEST(TextFile, AWriterThatThrowsLeavesTheOldFile) {
     EXPECT_THROW(writeTextFile(path,
                                [](const rs::project::TextSink& sink) {
                                    sink("new");
+                                   throw std::invalid_argument("refused");
+                               }),
+                 std::invalid_argument);
+    EXPECT_EQ(readAll(path), "old");
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1);
+}
+
+// Refused after more pieces than wait in the queue: those still waiting are
+// dropped, and the old file stays.
+TEST(TextFile, AWriterThatThrowsLateLeavesTheOldFile) {
+    QTemporaryDir dir;
+    const QString path = write(dir, "image.hps", "old");
+    EXPECT_THROW(writeTextFile(path,
+                               [](const rs::project::TextSink& sink) {
+                                   for (int i = 0; i < 100; ++i)
+                                       sink(std::string(64 * 1024, 'x'));
                                    throw std::invalid_argument("refused");
                                }),
                  std::invalid_argument);
