@@ -14,14 +14,6 @@ namespace rs::ladder {
 
 namespace {
 
-std::string trimmed(std::string_view text) {
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string_view::npos)
-        return {};
-    const auto last = text.find_last_not_of(" \t");
-    return std::string(text.substr(first, last - first + 1));
-}
-
 // A word as typed, printed back as it is.
 lang::Operand typed(const std::string& word) {
     lang::Operand operand;
@@ -40,7 +32,7 @@ splitOperator(const std::string& value, std::optional<Op> (*read)(std::string_vi
     for (std::size_t length = 2; length > 0; --length)
         if (value.size() >= length)
             if (std::optional<Op> op = read(std::string_view(value).substr(0, length)))
-                return std::pair{*op, trimmed(std::string_view(value).substr(length))};
+                return std::pair{*op, trimmedField(std::string_view(value).substr(length))};
     return std::nullopt;
 }
 
@@ -101,14 +93,14 @@ ElementFields fieldsOf(const Element& element) {
 ElementFields fieldsOf(const Output& output) {
     ElementFields fields = fieldsOfNode(toStatement(output));
     if (output.comment)
-        fields.comment = trimmed(*output.comment);
+        fields.comment = trimmedField(*output.comment);
     return fields;
 }
 
 FieldsText textOf(const ElementFields& fields) {
     const ElementKindInfo& info = infoOf(fields.kind);
-    const std::string operand = trimmed(fields.operand);
-    const std::string value = trimmed(fields.value);
+    const std::string operand = trimmedField(fields.operand);
+    const std::string value = trimmedField(fields.value);
     if (operand.empty())
         return {{}, info.output ? "the output is empty" : "the element is empty"};
     ElementParts parts;
@@ -144,6 +136,14 @@ FieldsText textOf(const ElementFields& fields) {
         parts.assignment.left = typedValue(split->second);
     }
     return {printed(makeNode(fields.kind, parts)), {}};
+}
+
+std::string trimmedField(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos)
+        return {};
+    const auto last = text.find_last_not_of(" \t");
+    return std::string(text.substr(first, last - first + 1));
 }
 
 } // namespace rs::ladder

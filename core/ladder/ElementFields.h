@@ -6,6 +6,7 @@
 #include "Output.h"
 
 #include <string>
+#include <string_view>
 
 // An element or output as the ladder editor's properties dialog edits it:
 // its kind and the words typed for it. The kind makes the syntax-tree node;
@@ -31,5 +32,8 @@ struct FieldsText {
 
 // The typed words stand in the node as written, so the language reads them as typed.
 FieldsText textOf(const ElementFields& fields);
+
+// A typed word without the spaces and tabs around it.
+std::string trimmedField(std::string_view text);
 
 } // namespace rs::ladder

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ElementText.h"
 
+#include "ElementFields.h"
 #include "LadderToText.h"
 #include "SymbolTable.h"
 #include "TextToLadder.h"
@@ -65,18 +66,10 @@ StatementReading readStatement(const lang::Document& document, int station,
     return {std::nullopt, "nothing to read"};
 }
 
-std::string trimmed(std::string_view text) {
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string_view::npos)
-        return {};
-    const auto last = text.find_last_not_of(" \t");
-    return std::string(text.substr(first, last - first + 1));
-}
-
 } // namespace
 
 ElementReading readElement(const lang::Document& document, int station, std::string_view text) {
-    const std::string element = trimmed(text);
+    const std::string element = trimmedField(text);
     if (element.empty())
         return {std::nullopt, "the element is empty"};
     const std::string coil = lang::toString(lang::Address{lang::AddressKind::Memory, station, 0});
@@ -92,7 +85,7 @@ ElementReading readElement(const lang::Document& document, int station, std::str
 }
 
 OutputReading readOutput(const lang::Document& document, int station, std::string_view text) {
-    const std::string output = trimmed(text);
+    const std::string output = trimmedField(text);
     if (output.empty())
         return {std::nullopt, "the output is empty"};
     StatementReading read = readStatement(document, station, output);
