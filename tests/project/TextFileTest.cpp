@@ -109,7 +109,7 @@ TEST(TextFile, SavingPiecesWritesThemInOrder) {
 }
 
 // The pieces are written on another thread while the next ones are made:
-// thousands of them, of every size, some empty, cross the queue and the
+// hundreds of them, of every size, some empty, cross the queue and the
 // write-back steps and arrive whole and in order.
 TEST(TextFile, SavingManyPiecesOfEverySizeKeepsTheirOrder) {
     QTemporaryDir dir;
