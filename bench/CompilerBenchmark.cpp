@@ -62,4 +62,20 @@ void BM_CompileTextToHps(benchmark::State& state) {
 }
 BENCHMARK(BM_CompileTextToHps)->Unit(benchmark::kMillisecond);
 
+// Encoding a compiled project's images as Intel HEX, piece by piece, as
+// `rungsmith-cli compile` writes them (the file itself left out).
+void BM_EncodeHps(benchmark::State& state) {
+    static const rs::compiler::CompileResult compiled = rs::compiler::compile(project());
+    std::size_t bytes = 0;
+    for (auto _ : state) {
+        bytes = 0;
+        rs::compiler::writeHps(compiled.images, [&bytes](std::string_view piece) {
+            bytes += piece.size();
+            benchmark::DoNotOptimize(piece.data());
+        });
+    }
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(bytes));
+}
+BENCHMARK(BM_EncodeHps)->Unit(benchmark::kMillisecond);
+
 } // namespace

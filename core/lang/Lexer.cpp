@@ -3,6 +3,8 @@
 
 #include <QChar>
 
+#include <array>
+
 namespace rs::lang {
 
 namespace {
@@ -35,9 +37,17 @@ std::size_t decodeUtf8(std::string_view s, std::size_t at, char32_t& out) {
     return length;
 }
 
+// Looked up, not compared: every byte of every word passes here.
+constexpr std::array<bool, 256> kAsciiWordChars = [] {
+    std::array<bool, 256> table{};
+    for (int c = 0; c < 256; ++c)
+        table[static_cast<std::size_t>(c)] = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                                             (c >= '0' && c <= '9') || c == '_' || c == '.';
+    return table;
+}();
+
 bool isAsciiWordChar(unsigned char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '.';
+    return kAsciiWordChars[c];
 }
 
 bool isAsciiDigit(char c) {
@@ -73,14 +83,22 @@ void Lexer::advance() {
         ++m_column;
 }
 
+// Steps over the ASCII characters up to `end` at once: each counts one column,
+// except that a stray continuation byte after the last is no new character.
+void Lexer::advanceAsciiTo(std::size_t end) {
+    m_column += static_cast<int>(end - m_pos);
+    m_pos = end;
+    if (m_pos < m_source.size() && isContinuationByte(static_cast<unsigned char>(m_source[m_pos])))
+        --m_column;
+}
+
 void Lexer::skipSpaces() {
-    while (m_pos < m_source.size()) {
-        char c = m_source[m_pos];
-        if (c == ' ' || c == '\t' || c == '\f' || c == '\v')
-            advance();
-        else
-            break;
-    }
+    std::size_t end = m_pos;
+    while (end < m_source.size() && (m_source[end] == ' ' || m_source[end] == '\t' ||
+                                     m_source[end] == '\f' || m_source[end] == '\v'))
+        ++end;
+    if (end != m_pos)
+        advanceAsciiTo(end);
 }
 
 // Length in bytes of the word character at `at`, 0 when it is none.
@@ -186,9 +204,11 @@ Token Lexer::next() {
     }
     for (;;) {
         // Most words are ASCII: no character to decode.
-        while (m_pos < m_source.size() &&
-               isAsciiWordChar(static_cast<unsigned char>(m_source[m_pos])))
-            advance();
+        std::size_t end = m_pos;
+        while (end < m_source.size() && isAsciiWordChar(static_cast<unsigned char>(m_source[end])))
+            ++end;
+        if (end != m_pos)
+            advanceAsciiTo(end);
         if (m_pos >= m_source.size() || static_cast<unsigned char>(m_source[m_pos]) < 0x80 ||
             (length = wordCharLength(m_pos)) == 0)
             break;

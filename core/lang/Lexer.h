@@ -48,6 +48,7 @@ public:
 private:
     void skipSpaces();
     void advance();
+    void advanceAsciiTo(std::size_t end);
     std::size_t wordCharLength(std::size_t at) const;
 
     std::string_view m_source;

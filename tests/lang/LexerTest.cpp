@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+#include <string>
 #include <vector>
 
 using namespace rs::lang;
@@ -72,4 +74,43 @@ TEST(Lexer, ByteOrderMarkIsSkipped) {
     ASSERT_EQ(tokens.size(), 1u);
     EXPECT_EQ(tokens[0].text, "Q0.1");
     EXPECT_EQ(tokens[0].column, 1);
+}
+
+// Random bytes (words, spaces, line ends, letters of two and three bytes,
+// stray continuation bytes and other bad UTF-8): every token's column counts
+// the characters before it on its line, a byte that continues none being no
+// new character, and its line the line ends before it.
+TEST(Lexer, EveryTokensPlaceCountsTheCharactersBeforeIt) {
+    const std::vector<std::string> pieces = {
+        "a",    "Q0.1", "_x",   "7",    " ",    "\t", "\f",       "\n",           "\r\n",
+        "\r",   ";c",   "(",    ")",    "=",    "!",  "\xC3\xA5", "\xE2\x80\x93", "\xE2\x82\xAC",
+        "\x80", "\xBF", "\xC3", "\xFF", "5s10", "..", "$",
+    };
+    std::mt19937 random(5);
+    for (int round = 0; round < 3000; ++round) {
+        std::string source;
+        const int count = 1 + static_cast<int>(random() % 40);
+        for (int i = 0; i < count; ++i)
+            source += pieces[random() % pieces.size()];
+        Lexer lexer(source);
+        for (Token token = lexer.next(); token.kind != TokenKind::EndOfFile; token = lexer.next()) {
+            const auto at = static_cast<std::size_t>(token.text.data() - source.data());
+            int line = 1;
+            std::size_t lineStart = 0;
+            for (std::size_t i = 0; i < at; ++i)
+                if (source[i] == '\n' ||
+                    (source[i] == '\r' && (i + 1 >= source.size() || source[i + 1] != '\n'))) {
+                    ++line;
+                    lineStart = i + 1;
+                }
+            // A comment's text starts after its ';'.
+            const std::size_t start = token.kind == TokenKind::Comment ? at - 1 : at;
+            int column = 1;
+            for (std::size_t i = lineStart + 1; i <= start; ++i)
+                if ((static_cast<unsigned char>(source[i]) & 0xC0) != 0x80)
+                    ++column;
+            ASSERT_EQ(token.line, line) << "round " << round << " at byte " << at;
+            ASSERT_EQ(token.column, column) << "round " << round << " at byte " << at;
+        }
+    }
 }
