@@ -61,8 +61,11 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     // nothing (issue 23: 12 of a large project's 60 ms of checking and printing).
     std::future<std::string> printing;
     if (output == Output::Images)
-        printing =
-            std::async(std::launch::async, [&project] { return project::writeProject(project); });
+        printing = std::async(std::launch::async, [&project, readFrom] {
+            // Read from its canonical text, as a saved project is, the text is
+            // as long as that: a little room more, and it is never moved.
+            return project::writeProject(project, readFrom.size() + readFrom.size() / 64 + 4096);
+        });
     UnitSetups units = setUpUnits(project, result.diagnostics);
     checkAsiSlaves(project, units, result.diagnostics);
     checkGatewayBlocks(project, units, result.diagnostics);

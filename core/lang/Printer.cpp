@@ -277,8 +277,10 @@ namespace {
 
 // `declarations` of unit i, or its own when null.
 std::string printDocument(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
-                          const std::vector<std::vector<Line>>* declarations) {
+                          const std::vector<std::vector<Line>>* declarations,
+                          std::size_t expectedSize) {
     std::string out;
+    out.reserve(expectedSize);
     printLines(out, preamble);
     for (std::size_t i = 0; i < units.size(); ++i) {
         const UnitProgram& unit = units[i];
@@ -297,12 +299,12 @@ std::string printDocument(const std::vector<Line>& preamble, const std::vector<U
 } // namespace
 
 std::string print(const Document& document) {
-    return printDocument(document.preamble, document.units, nullptr);
+    return printDocument(document.preamble, document.units, nullptr, 0);
 }
 
 std::string print(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
-                  const std::vector<std::vector<Line>>& declarations) {
-    return printDocument(preamble, units, &declarations);
+                  const std::vector<std::vector<Line>>& declarations, std::size_t expectedSize) {
+    return printDocument(preamble, units, &declarations, expectedSize);
 }
 
 } // namespace rs::lang

@@ -17,8 +17,10 @@ inline constexpr int kCommentColumn = 32;
 std::string print(const Document& document);
 // The same with the preamble and each unit's declarations given apart, for a
 // writer that adds lines to them without copying the units' code.
+// `expectedSize`: room kept for the text at once (a large project's text
+// grown by doubling touched twice its size).
 std::string print(const std::vector<Line>& preamble, const std::vector<UnitProgram>& units,
-                  const std::vector<std::vector<Line>>& declarations);
+                  const std::vector<std::vector<Line>>& declarations, std::size_t expectedSize = 0);
 
 std::string printStatement(const Statement& statement);
 std::string printExpression(const Expr& expr);

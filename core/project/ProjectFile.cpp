@@ -294,7 +294,7 @@ ProjectReadResult readProject(std::string_view text) {
     return result;
 }
 
-std::string writeProject(const Project& project) {
+std::string writeProject(const Project& project, std::size_t expectedSize) {
     // The records go into copies of the preamble and the units' declarations;
     // the units' code, nearly all of a large project, is printed where it is.
     std::vector<Line> preamble = project.program.preamble;
@@ -368,7 +368,7 @@ std::string writeProject(const Project& project) {
             preamble.insert(preamble.end(), records.begin(), records.end());
         }
     }
-    return lang::print(preamble, project.program.units, declarations);
+    return lang::print(preamble, project.program.units, declarations, expectedSize);
 }
 
 namespace {

@@ -27,7 +27,9 @@ ProjectReadResult readProject(std::string_view text);
 
 // The canonical project text; readProject(writeProject(p)) gives p back and
 // writing that again gives the same bytes.
-std::string writeProject(const Project& project);
+// `expectedSize`: the size the text is likely to have (that of the file the
+// project was read from), kept for it at once.
+std::string writeProject(const Project& project, std::size_t expectedSize = 0);
 
 struct FileText {
     std::string text;
