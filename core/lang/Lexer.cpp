@@ -181,8 +181,8 @@ Token Lexer::next() {
         break;
     }
     // En dash (U+2013) and minus sign (U+2212) as printed in the manuals' tables.
-    if (m_source.compare(m_pos, 3, "\xE2\x80\x93") == 0 ||
-        m_source.compare(m_pos, 3, "\xE2\x88\x92") == 0) {
+    if (m_source[m_pos] == '\xE2' && (m_source.compare(m_pos, 3, "\xE2\x80\x93") == 0 ||
+                                      m_source.compare(m_pos, 3, "\xE2\x88\x92") == 0)) {
         advance();
         advance();
         advance();
