@@ -70,8 +70,12 @@ CompileResult compile(const project::Project& project, const CheckOptions& optio
     checkAsiSlaves(project, units, result.diagnostics);
     checkGatewayBlocks(project, units, result.diagnostics);
     lang::Diagnostics checks = checkProgram(project.program, units, options);
-    result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(checks.begin()),
-                              std::make_move_iterator(checks.end()));
+    // A large project's thousands of warnings are taken over, not copied.
+    if (result.diagnostics.empty())
+        result.diagnostics = std::move(checks);
+    else
+        result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(checks.begin()),
+                                  std::make_move_iterator(checks.end()));
     lang::sortByPlace(result.diagnostics);
     if (result.errors())
         return result;

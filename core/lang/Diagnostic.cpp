@@ -65,9 +65,13 @@ std::string formatDiagnostic(const std::string& fileName, const Diagnostic& diag
 }
 
 void sortByPlace(Diagnostics& diagnostics) {
-    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const auto& a, const auto& b) {
+    const auto before = [](const Diagnostic& a, const Diagnostic& b) {
         return std::tie(a.line, a.column) < std::tie(b.line, b.column);
-    });
+    };
+    // Sorted already, as they often are, they are not copied into a buffer of
+    // their size and back (a large project's warnings: megabytes).
+    if (!std::is_sorted(diagnostics.begin(), diagnostics.end(), before))
+        std::stable_sort(diagnostics.begin(), diagnostics.end(), before);
 }
 
 } // namespace rs::lang
