@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 namespace rs::blocks {
 
@@ -23,6 +24,10 @@ QString userLibraryPath(const LibraryPlaces& places, const std::string& entry) {
     return QDir(folder).absoluteFilePath(QString::fromStdString(entry));
 }
 
+QString projectFolderOf(const LibraryPlaces& places) {
+    return places.projectPath.isEmpty() ? QString() : QFileInfo(places.projectPath).absolutePath();
+}
+
 struct Pending {
     lang::Step* step;
     BlockInstance instance;
@@ -32,6 +37,11 @@ struct Pending {
 } // namespace
 
 InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& libraries) {
+    return expandInstances(document, [&libraries]() -> const LibrarySet& { return libraries; });
+}
+
+InstanceExpansion expandInstances(lang::Document& document,
+                                  const std::function<const LibrarySet&()>& librariesWhenNeeded) {
     InstanceExpansion result;
     lang::Diagnostics& diagnostics = result.diagnostics;
     for (auto& unit : document.units) {
@@ -46,6 +56,7 @@ InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& li
         }
         if (instances.empty())
             continue;
+        const LibrarySet& libraries = librariesWhenNeeded();
         std::vector<const BlockInstance*> recorded;
         for (const auto& found : instances)
             recorded.push_back(&found.second);
@@ -172,8 +183,7 @@ const LoadedLibrary* libraryOfEntry(const LibrarySet& set, const LibraryPlaces& 
 
 LibrarySet librariesFor(const LibraryPlaces& places,
                         const std::vector<std::string>& projectLibraries) {
-    const QString projectFolder =
-        places.projectPath.isEmpty() ? QString() : QFileInfo(places.projectPath).absolutePath();
+    const QString projectFolder = projectFolderOf(places);
     const QStringList standardFolders = standardLibraryFolders(places.executableDir);
     if (projectLibraries.empty())
         return loadLibraries(standardFolders, projectFolder, places.userFiles);
@@ -204,13 +214,24 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
     project::ProjectReadResult& read = result.read;
     if (!read.ok())
         return result;
-    LibrarySet libraries = librariesFor(places, read.project.libraries);
-    const InstanceExpansion expansion = expandInstances(read.project.program, libraries);
+    std::optional<LibrarySet> libraries;
+    const auto all = [&]() -> const LibrarySet& {
+        if (!libraries)
+            libraries = librariesFor(places, read.project.libraries);
+        return *libraries;
+    };
+    if (!read.project.libraries.empty())
+        all(); // a library it names and that is missing is a warning
+    // Else the user's libraries are read in any case; the whole set, should
+    // an instance need it, reads them again with the standard ones, in order.
+    LibrarySet user =
+        libraries ? LibrarySet{} : loadLibraries({}, projectFolderOf(places), places.userFiles);
+    const InstanceExpansion expansion = expandInstances(read.project.program, all);
     read.diagnostics.insert(read.diagnostics.end(), expansion.diagnostics.begin(),
                             expansion.diagnostics.end());
     lang::sortByPlace(read.diagnostics);
     result.expanded = expansion.expanded > 0;
-    result.libraryProblems = std::move(libraries.problems);
+    result.libraryProblems = libraries ? std::move(libraries->problems) : std::move(user.problems);
     return result;
 }
 

@@ -7,6 +7,7 @@
 #include "lang/Diagnostic.h"
 #include "project/ProjectFile.h"
 
+#include <functional>
 #include <string_view>
 
 // The block instances of a whole program (blocks.md).
@@ -25,6 +26,10 @@ struct InstanceExpansion {
     int expanded = 0; // instances whose statements were written in
 };
 InstanceExpansion expandInstances(lang::Document& document, const LibrarySet& libraries);
+// The same with the libraries asked for when the first instance is found: a
+// program without any reads none.
+InstanceExpansion expandInstances(lang::Document& document,
+                                  const std::function<const LibrarySet&()>& libraries);
 
 // Reads project text (project::readProject) and, when it reads without
 // errors, expands its instances; every diagnostic in the order of its place.
@@ -61,6 +66,10 @@ const LoadedLibrary* libraryOfEntry(const LibrarySet& set, const LibraryPlaces& 
                                     const std::string& entry);
 
 // Reads the project, then expands its instances from the libraries it uses.
+// The standard libraries are read only when the project names its libraries
+// or has an instance (they were a third of a small project's check); the
+// user's (`places.userFiles`, the project's folder) always are, so that their
+// problems are reported.
 ProjectWithInstances readProjectWithInstances(std::string_view text, const LibraryPlaces& places);
 
 // Compiles a project read with its instances: the reading's diagnostics

@@ -91,4 +91,37 @@ TEST_F(ProjectLibraries, TheRecordKeepsTheListAndReadingUsesIt) {
         << written;
 }
 
+// A broken standard library holds up only a project that uses a block: one
+// without instances is read without reading the standard libraries, while
+// its own libraries are still read and their problems reported.
+TEST_F(ProjectLibraries, OnlyAProjectWithInstancesReadsTheStandardLibraries) {
+    QFile broken(root.filePath("bin/libraries/broken.rslib"));
+    ASSERT_TRUE(broken.open(QIODevice::WriteOnly));
+    broken.write("rungsmith-library 1\nlibrary Broken\nnonsense\n");
+    broken.close();
+    const auto problemPaths = [](const blocks::ProjectWithInstances& read) {
+        std::vector<std::string> paths;
+        for (const auto& problem : read.libraryProblems)
+            paths.push_back(QFileInfo(problem.path).fileName().toStdString());
+        return paths;
+    };
+    const std::string plain = "! pgm_pluto:00\nS0.0_0\nQ0.2 = I0.0\n";
+    const auto withoutInstances = blocks::readProjectWithInstances(plain, places());
+    EXPECT_TRUE(withoutInstances.read.ok());
+    EXPECT_TRUE(problemPaths(withoutInstances).empty());
+
+    const std::string withInstance = plain + ";@block A In=\"I0.1\" Out=\"Q0.3\"\n;@end\n";
+    const auto read = blocks::readProjectWithInstances(withInstance, places());
+    EXPECT_EQ(problemPaths(read), std::vector<std::string>{"broken.rslib"});
+    EXPECT_TRUE(read.expanded) << "Alpha's A is expanded";
+
+    // The user's own broken library is reported either way.
+    QFile mine(root.filePath("project/mine.rslib"));
+    ASSERT_TRUE(mine.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    mine.write("rungsmith-library 1\nlibrary Mine\nnonsense\n");
+    mine.close();
+    EXPECT_EQ(problemPaths(blocks::readProjectWithInstances(plain, places())),
+              std::vector<std::string>{"mine.rslib"});
+}
+
 } // namespace
