@@ -108,7 +108,10 @@ AddressWord readAddressWord(std::string_view word) {
     while (pos < word.size() && isAsciiLetter(word[pos]))
         ++pos;
     std::string_view letters = word.substr(0, pos);
-    if (letters.empty() || pos >= word.size() || !isDigit(word[pos]))
+    // Letters and digits with no dot ("M10", "Stop2") are names, not
+    // addresses; the prefixes have at most three letters.
+    if (letters.empty() || letters.size() > 3 || pos >= word.size() || !isDigit(word[pos]) ||
+        word.find('.', pos) == std::string_view::npos)
         return result;
     const PrefixEntry* prefix = nullptr;
     for (const auto& entry : kPrefixes)
@@ -117,9 +120,6 @@ AddressWord readAddressWord(std::string_view word) {
             break;
         }
     if (!prefix)
-        return result;
-    // Letters and digits with no dot ("M10", "Stop2") are names, not addresses.
-    if (word.find('.') == std::string_view::npos)
         return result;
 
     auto malformed = [&](std::string message) {
