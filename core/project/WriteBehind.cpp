@@ -75,13 +75,19 @@ void WriteBehind::write(const std::string& piece) {
     }
     m_written += piece.size();
 #ifdef SYNC_FILE_RANGE_WRITE
+    if (m_written - m_writtenBack < kWriteBackStep)
+        return;
+    // What Qt still holds goes to the file first; a failure there is the
+    // first failure, as a write's would be.
+    if (!m_file.flush()) {
+        m_error = m_file.errorString();
+        return;
+    }
     // A hint: the commit's fdatasync still waits for whatever is not on the
     // disk, so a file system that cannot start write-back early loses nothing.
-    if (m_written - m_writtenBack >= kWriteBackStep && m_file.flush()) {
-        sync_file_range(m_file.handle(), static_cast<off_t>(m_writtenBack),
-                        static_cast<off_t>(m_written - m_writtenBack), SYNC_FILE_RANGE_WRITE);
-        m_writtenBack = m_written;
-    }
+    sync_file_range(m_file.handle(), static_cast<off_t>(m_writtenBack),
+                    static_cast<off_t>(m_written - m_writtenBack), SYNC_FILE_RANGE_WRITE);
+    m_writtenBack = m_written;
 #endif
 }
 

@@ -97,6 +97,26 @@ TEST(TextFile, SavingPiecesToAFullDiskKeepsTheOldFile) {
     EXPECT_EQ(readAll(disk.filePath("image.hps")), "old");
 }
 
+// Room for a megabyte and a half: the first megabyte is written and put on
+// its way to the disk, then the disk fills; the old file stays.
+TEST(TextFile, SavingPiecesToADiskThatFillsPartWayKeepsTheOldFile) {
+    FullFileSystem disk(4096);
+    REQUIRE_FULL_DISK(disk);
+    ASSERT_TRUE(disk.put("image.hps", "old"));
+    ASSERT_TRUE(disk.put("room", QByteArray(1536 * 1024, 'r')));
+    ASSERT_TRUE(disk.fill());
+    ASSERT_TRUE(QFile::remove(disk.filePath("room")));
+    const QString path = disk.filePath("image.hps");
+    const QString error = writeTextFile(path, [](const rs::project::TextSink& sink) {
+        for (int i = 0; i < 64; ++i)
+            sink(std::string(64 * 1024, 'x'));
+    });
+    EXPECT_TRUE(error.startsWith("cannot write " + path + ": ")) << error.toStdString();
+    EXPECT_EQ(readAll(path), "old");
+    EXPECT_EQ(QDir(disk.filePath(".")).entryList(QDir::Files | QDir::Hidden).size(), 2)
+        << "the temporary copy is removed";
+}
+
 TEST(TextFile, SavingPiecesWritesThemInOrder) {
     QTemporaryDir dir;
     const QString path = dir.filePath("p.hps");

@@ -11,21 +11,15 @@
 
 namespace rs::test {
 
-namespace {
-
-// Room for a few small files; the filler takes the rest.
-constexpr const char* kMountOptions = "size=256k,mode=0777";
-
-} // namespace
-
-FullFileSystem::FullFileSystem() {
+FullFileSystem::FullFileSystem(int kilobytes) {
     if (!m_folder.isValid()) {
         m_reason = QStringLiteral("no temporary folder");
         return;
     }
     const QByteArray target = QFile::encodeName(m_folder.path());
+    const QByteArray options = "size=" + QByteArray::number(kilobytes) + "k,mode=0777";
     if (::mount("rungsmith-test", target.constData(), "tmpfs", MS_NOSUID | MS_NODEV,
-                kMountOptions) != 0) {
+                options.constData()) != 0) {
         m_reason = QStringLiteral("cannot mount a tmpfs (needs root): %1")
                        .arg(QString::fromLocal8Bit(std::strerror(errno)));
         return;

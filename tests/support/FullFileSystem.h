@@ -12,7 +12,8 @@ namespace rs::test {
 // mount succeeded and reason() why not.
 class FullFileSystem {
 public:
-    FullFileSystem();
+    // Room for a few small files by default; the filler takes the rest.
+    explicit FullFileSystem(int kilobytes = 256);
     ~FullFileSystem();
     FullFileSystem(const FullFileSystem&) = delete;
     FullFileSystem& operator=(const FullFileSystem&) = delete;
