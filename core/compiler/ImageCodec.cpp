@@ -50,6 +50,7 @@ public:
         m_bytes.insert(m_bytes.end(), data, data + size);
     }
     std::vector<std::uint8_t>& data() { return m_bytes; }
+    std::vector<std::uint8_t> take() { return std::move(m_bytes); }
 
 private:
     std::vector<std::uint8_t> m_bytes;
@@ -509,7 +510,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
     return image;
 }
 
-std::string behaviourBytes(const UnitImage& image) {
+std::vector<std::uint8_t> behaviourBytes(const UnitImage& image) {
     Writer w(boundWithoutSource(image)); // more than enough: no places either
     w.u8(image.station);
     w.u8(image.unitType);
@@ -527,8 +528,7 @@ std::string behaviourBytes(const UnitImage& image) {
         w.u16(image.canCycleMs);
     if (!image.externalComm.empty())
         writeExternalComm(w, image.externalComm);
-    const auto& bytes = w.data();
-    return std::string(bytes.begin(), bytes.end());
+    return w.take(); // not copied: a large project's units are 10 MB of them
 }
 
 namespace {

@@ -22,7 +22,7 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image);
 // without where it came from, and the I/O setup, exported and remanent
 // variables. Names, the project CRC, the included source and each
 // instruction's line, column, statement and element are left out.
-std::string behaviourBytes(const UnitImage& image);
+std::vector<std::uint8_t> behaviourBytes(const UnitImage& image);
 
 struct ImageError {
     int line = 0; // in the .hps text; 0 when the bytes themselves are wrong
