@@ -222,16 +222,16 @@ ProjectWithInstances readProjectWithInstances(std::string_view text, const Libra
     };
     if (!read.project.libraries.empty())
         all(); // a library it names and that is missing is a warning
-    // Else the user's libraries are read in any case; the whole set, should
-    // an instance need it, reads them again with the standard ones, in order.
-    LibrarySet user =
-        libraries ? LibrarySet{} : loadLibraries({}, projectFolderOf(places), places.userFiles);
     const InstanceExpansion expansion = expandInstances(read.project.program, all);
     read.diagnostics.insert(read.diagnostics.end(), expansion.diagnostics.begin(),
                             expansion.diagnostics.end());
     lang::sortByPlace(read.diagnostics);
     result.expanded = expansion.expanded > 0;
-    result.libraryProblems = libraries ? std::move(libraries->problems) : std::move(user.problems);
+    // Without an instance the standard libraries stay unread; the user's are
+    // read for their problems.
+    result.libraryProblems =
+        libraries ? std::move(libraries->problems)
+                  : loadLibraries({}, projectFolderOf(places), places.userFiles).problems;
     return result;
 }
 

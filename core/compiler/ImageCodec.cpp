@@ -300,6 +300,10 @@ std::uint32_t crc32(std::string_view bytes) {
         ::crc32(0L, reinterpret_cast<const Bytef*>(bytes.data()), static_cast<uInt>(bytes.size())));
 }
 
+std::uint32_t crc32(std::span<const std::uint8_t> bytes) {
+    return crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
 namespace {
 
 // At least the encoded image without its included source.
@@ -351,9 +355,7 @@ std::vector<std::uint8_t> encodeImage(const UnitImage& image) {
         w.bytes(packed);
     }
     auto& bytes = w.data();
-    const std::uint32_t crc =
-        crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    w.u32(crc);
+    w.u32(crc32(bytes));
     return std::move(bytes);
 }
 
@@ -365,7 +367,7 @@ ImageResult decodeImage(const std::vector<std::uint8_t>& bytes) {
                                  static_cast<std::uint32_t>(bytes[end + 1]) << 8 |
                                  static_cast<std::uint32_t>(bytes[end + 2]) << 16 |
                                  static_cast<std::uint32_t>(bytes[end + 3]) << 24;
-    if (stored != crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), end)))
+    if (stored != crc32(std::span(bytes).first(end)))
         return ImageError{0, 0, "the image is damaged (its checksum does not match)"};
     Reader r(bytes, end);
     UnitImage image;

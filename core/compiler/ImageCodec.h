@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -57,5 +58,6 @@ HpsResult readHps(std::string_view text);
 
 // CRC-32 (IEEE 802.3, zlib's crc32).
 std::uint32_t crc32(std::string_view bytes);
+std::uint32_t crc32(std::span<const std::uint8_t> bytes);
 
 } // namespace rs::compiler

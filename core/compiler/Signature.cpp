@@ -3,16 +3,12 @@
 
 #include "ImageCodec.h"
 
-#include <cstdint>
 #include <cstdio>
-#include <string_view>
-#include <vector>
 
 namespace rs::compiler {
 
 std::uint32_t unitSignature(const UnitImage& image) {
-    const std::vector<std::uint8_t> bytes = behaviourBytes(image);
-    return crc32(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    return crc32(behaviourBytes(image));
 }
 
 std::uint32_t projectSignature(const std::vector<UnitSignature>& units) {

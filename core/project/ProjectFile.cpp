@@ -434,18 +434,28 @@ FileText readTextFile(const QString& path, qint64 maxBytes) {
     return {std::move(text), {}};
 }
 
+namespace {
+
+// After the writing: a failure cancels the file, else it is committed; the
+// reason of either, as writeTextFile says it.
+QString settleSaveFile(QSaveFile& file, const QString& path, const QString& writeError) {
+    QString reason = writeError;
+    if (reason.isEmpty())
+        reason = commitSaveFile(file);
+    else
+        file.cancelWriting();
+    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
+}
+
+} // namespace
+
 QString writeTextFile(const QString& path, std::string_view text) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    if (file.write(text.data(), static_cast<qint64>(text.size())) !=
-        static_cast<qint64>(text.size())) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return QStringLiteral("cannot write %1: %2").arg(path, reason);
-    }
-    const QString reason = commitSaveFile(file);
-    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
+    const bool whole = file.write(text.data(), static_cast<qint64>(text.size())) ==
+                       static_cast<qint64>(text.size());
+    return settleSaveFile(file, path, whole ? QString() : file.errorString());
 }
 
 QString writeTextFile(const QString& path, const std::function<void(const TextSink&)>& write) {
@@ -460,12 +470,7 @@ QString writeTextFile(const QString& path, const std::function<void(const TextSi
         write([&writer](std::string_view piece) { writer.add(piece); });
         error = writer.finish();
     }
-    if (!error.isEmpty()) {
-        file.cancelWriting();
-        return QStringLiteral("cannot write %1: %2").arg(path, error);
-    }
-    const QString reason = commitSaveFile(file);
-    return reason.isEmpty() ? QString() : QStringLiteral("cannot write %1: %2").arg(path, reason);
+    return settleSaveFile(file, path, error);
 }
 
 } // namespace rs::project
